@@ -1,0 +1,28 @@
+# Compile options shared by every target built in this tree (never exported:
+# consumers choose their own flags, but the headers must compile cleanly
+# under these).
+#
+#  - warnings on: -Wall -Wextra (plus -Wpedantic for C++), clean in Release;
+#  - no fast-math and no floating-point contraction, so that a*b+c is rounded
+#    twice everywhere and results are bit-identical across builds;
+#  - the check build defines nothing extra here: KARMA_CHECK lives in the
+#    generated MeConfig.h so installed headers agree with the library.
+add_library(karma_build_flags INTERFACE)
+target_compile_options(karma_build_flags INTERFACE
+  $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-Wall -Wextra -ffp-contract=off -fno-fast-math>
+  $<$<AND:$<COMPILE_LANGUAGE:CXX>,$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>>:-Wpedantic>)
+
+# karma_library(<target> <export-name>): a library exported as Karma::<export-name>.
+function(karma_library target export_name)
+  add_library(Karma::${export_name} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${export_name})
+  get_target_property(type ${target} TYPE)
+  if(NOT type STREQUAL "INTERFACE_LIBRARY")
+    target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:karma_build_flags>)
+    set_target_properties(${target} PROPERTIES
+      OUTPUT_NAME "karma_${export_name}"
+      CXX_VISIBILITY_PRESET hidden
+      VISIBILITY_INLINES_HIDDEN ON)
+  endif()
+  set_property(GLOBAL APPEND PROPERTY KARMA_EXPORTED_TARGETS ${target})
+endfunction()
