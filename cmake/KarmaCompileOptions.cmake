@@ -12,6 +12,11 @@ target_compile_options(karma_build_flags INTERFACE
   $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-Wall -Wextra -ffp-contract=off -fno-fast-math>
   $<$<AND:$<COMPILE_LANGUAGE:CXX>,$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>>:-Wpedantic>)
 
+if(KARMA_WARNINGS_AS_ERRORS)
+  target_compile_options(karma_build_flags INTERFACE
+    $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-Werror>)
+endif()
+
 # karma_library(<target> <export-name>): a library exported as Karma::<export-name>.
 function(karma_library target export_name)
   add_library(Karma::${export_name} ALIAS ${target})
