@@ -2,7 +2,7 @@
 # Command B: install what is missing, then build and run every test.
 #
 #   1. Release, single precision (the default MeReal): every test, warnings
-#      are errors.
+#      are errors; the benchmarks are compiled too.
 #   2. Release, double precision: every test, warnings are errors.
 #   3. ASan + UBSan with the check build's validation: every test.
 #
@@ -20,6 +20,8 @@ for preset in $configs; do
   t0=$SECONDS
   extra=()
   [ "$preset" = asan ] || extra=(-DKARMA_WARNINGS_AS_ERRORS=ON)
+  # The benchmarks are built (not run) once, so they cannot rot unnoticed.
+  [ "$preset" = release ] && extra+=(-DKARMA_BUILD_BENCH=ON)
   cmake --preset "$preset" "${extra[@]}" >/dev/null
   cmake --build --preset "$preset" -j "$jobs"
   echo "=== $preset: test"
