@@ -28,6 +28,8 @@ endforeach()
 set(build "${WORK_DIR}/build-cmake")
 run(${CMAKE_COMMAND} -S "${CONSUMER_SOURCE_DIR}" -B "${build}" -G "${GENERATOR}"
     -DCMAKE_C_COMPILER=${C_COMPILER} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
+    "-DCMAKE_C_FLAGS=${C_FLAGS}" "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}"
+    "-DCMAKE_EXE_LINKER_FLAGS=${EXE_LINKER_FLAGS}"
     -DCMAKE_PREFIX_PATH=${prefix} -DEXPECTED_PRECISION=${KARMA_PRECISION})
 run(${CMAKE_COMMAND} --build "${build}")
 foreach(app consumer_c consumer_cxx)
@@ -44,7 +46,8 @@ set(ENV{PKG_CONFIG_PATH} "${prefix}/lib/pkgconfig")
 run(${PKG_CONFIG} --cflags --libs --static karma)
 string(STRIP "${RUN_OUTPUT}" flags)
 separate_arguments(flags UNIX_COMMAND "${flags}")
-run(${C_COMPILER} -std=c11 -Wall -Wextra -Werror "${CONSUMER_SOURCE_DIR}/main.c"
+separate_arguments(build_flags UNIX_COMMAND "${C_FLAGS} ${EXE_LINKER_FLAGS}")
+run(${C_COMPILER} -std=c11 -Wall -Wextra -Werror ${build_flags} "${CONSUMER_SOURCE_DIR}/main.c"
     -o "${WORK_DIR}/consumer_pc" ${flags} -lstdc++)
 run("${WORK_DIR}/consumer_pc")
 if(NOT RUN_OUTPUT MATCHES "karma consumer ok")
