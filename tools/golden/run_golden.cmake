@@ -1,0 +1,113 @@
+# run_golden.cmake: the driver of one golden test (see KarmaGoldenTest.cmake).
+#
+#   cmake -DTEST_NAME=... -DPROGRAM=<exe> -DGOLDEN_TOOL=<karma-golden>
+#         -DGOLDEN_PROGRAM=<name> -DSTEP=<step> -DBACKEND=<backend>
+#         -DPRECISION=single|double -DGOLDEN_ROOT=<source>/golden
+#         -DSOURCE_ROOT=<source> -DOUTPUT_DIR=<fresh dir in the build tree>
+#         -DARG_COUNT=n -DARG_0=... -DCHECK_ARG_COUNT=m -DCHECK_ARG_0=...
+#         -P run_golden.cmake
+#
+# 1. Empties OUTPUT_DIR and runs the program there with its arguments plus
+#    -platform BACKEND -trajectory OUTPUT_DIR/trajectory.txt -out OUTPUT_DIR;
+#    the program must exit with 0 and write the trajectory. If it prints a
+#    "state hash: 0x..." line, that hash must equal the trajectory's final-hash.
+# 2. Normally: compares OUTPUT_DIR with the golden directory
+#    GOLDEN_ROOT/GOLDEN_PROGRAM/STEP/BACKEND-PRECISION through `karma-golden
+#    check`; a missing golden directory fails with instructions.
+# 3. With KARMA_GOLDEN_REGENERATE=1 in the environment (scripts/golden-regen
+#    sets it; nothing else should): replaces the golden's trajectory.txt and
+#    PNG frames with the outputs, then checks the new golden reads back.
+cmake_minimum_required(VERSION 3.22)
+
+foreach(var TEST_NAME PROGRAM GOLDEN_TOOL GOLDEN_PROGRAM STEP BACKEND PRECISION GOLDEN_ROOT OUTPUT_DIR)
+  if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
+    message(FATAL_ERROR "run_golden.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+
+set(key "${GOLDEN_PROGRAM}/${STEP}/${BACKEND}-${PRECISION}")
+set(golden_dir "${GOLDEN_ROOT}/${key}")
+file(RELATIVE_PATH golden_rel "${SOURCE_ROOT}" "${golden_dir}")
+
+# --- 1. run the program in a fresh output directory -----------------------
+file(REMOVE_RECURSE "${OUTPUT_DIR}")
+file(MAKE_DIRECTORY "${OUTPUT_DIR}")
+set(command "${PROGRAM}")
+if(ARG_COUNT GREATER 0)
+  math(EXPR last "${ARG_COUNT} - 1")
+  foreach(i RANGE ${last})
+    list(APPEND command "${ARG_${i}}")
+  endforeach()
+endif()
+list(APPEND command -platform "${BACKEND}" -trajectory "${OUTPUT_DIR}/trajectory.txt" -out "${OUTPUT_DIR}")
+list(JOIN command " " command_text)
+message(STATUS "golden ${key}: running ${command_text}")
+execute_process(COMMAND ${command}
+  WORKING_DIRECTORY "${OUTPUT_DIR}"
+  RESULT_VARIABLE result
+  OUTPUT_VARIABLE program_stdout
+  ERROR_VARIABLE program_stderr)
+file(WRITE "${OUTPUT_DIR}/stdout.txt" "${program_stdout}")
+message("${program_stdout}${program_stderr}")
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "golden ${key}: the program failed (${result})")
+endif()
+if(NOT EXISTS "${OUTPUT_DIR}/trajectory.txt")
+  message(FATAL_ERROR "golden ${key}: the program wrote no trajectory.txt")
+endif()
+
+file(STRINGS "${OUTPUT_DIR}/trajectory.txt" final_line REGEX "^final-hash ")
+string(REGEX MATCH "state hash: (0x[0-9a-fA-F]+)" printed "${program_stdout}")
+if(printed)
+  set(printed_hash "${CMAKE_MATCH_1}")
+  if(NOT final_line STREQUAL "final-hash ${printed_hash}")
+    message(FATAL_ERROR "golden ${key}: the program printed state hash ${printed_hash} "
+      "but its trajectory says '${final_line}'")
+  endif()
+endif()
+
+set(check_command "${GOLDEN_TOOL}" check --golden-dir "${golden_dir}" --actual-dir "${OUTPUT_DIR}")
+if(CHECK_ARG_COUNT GREATER 0)
+  math(EXPR last "${CHECK_ARG_COUNT} - 1")
+  foreach(i RANGE ${last})
+    list(APPEND check_command "${CHECK_ARG_${i}}")
+  endforeach()
+endif()
+
+# --- 3. regenerate ----------------------------------------------------------
+if("$ENV{KARMA_GOLDEN_REGENERATE}" STREQUAL "1")
+  file(MAKE_DIRECTORY "${golden_dir}")
+  file(GLOB stale "${golden_dir}/*.png" "${golden_dir}/trajectory.txt")
+  if(stale)
+    file(REMOVE ${stale})
+  endif()
+  file(GLOB frames "${OUTPUT_DIR}/*.png")
+  list(FILTER frames EXCLUDE REGEX "\\.diff\\.png$")
+  file(COPY "${OUTPUT_DIR}/trajectory.txt" ${frames} DESTINATION "${golden_dir}")
+  execute_process(COMMAND ${check_command} RESULT_VARIABLE check_result OUTPUT_VARIABLE check_output
+    ERROR_VARIABLE check_output)
+  if(NOT check_result EQUAL 0)
+    message(FATAL_ERROR "golden ${key}: the regenerated golden does not check against its own run:\n${check_output}")
+  endif()
+  list(LENGTH frames frame_count)
+  message(STATUS "golden ${key}: REGENERATED ${golden_rel} (trajectory.txt and ${frame_count} frame(s), ${final_line})")
+  return()
+endif()
+
+# --- 2. compare -----------------------------------------------------------
+if(NOT IS_DIRECTORY "${golden_dir}")
+  message(FATAL_ERROR
+    "golden ${key}: there is no golden directory ${golden_rel}.\n"
+    "If this is a new program or step, look at its output in ${OUTPUT_DIR} first; when it is right, create the "
+    "golden with\n    scripts/golden-regen <build-dir> '^${TEST_NAME}$'\n"
+    "and commit it saying what the program shows (docs/GOLDEN.md).")
+endif()
+execute_process(COMMAND ${check_command} RESULT_VARIABLE check_result)
+if(NOT check_result EQUAL 0)
+  message(FATAL_ERROR
+    "golden ${key}: output differs from ${golden_rel} (karma-golden exit ${check_result}).\n"
+    "Outputs and diff images: ${OUTPUT_DIR}\n"
+    "Review the difference (docs/GOLDEN.md, 'Reviewing a difference'); regenerate only if the change is "
+    "understood and intended.")
+endif()
+message(STATUS "golden ${key}: matches ${golden_rel}")
