@@ -59,3 +59,6 @@ file(RELATIVE_PATH KARMA_PC_TO_PREFIX "/prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig
 string(REGEX REPLACE "/$" "" KARMA_PC_TO_PREFIX "${KARMA_PC_TO_PREFIX}")
 configure_file("${PROJECT_SOURCE_DIR}/cmake/karma.pc.in" "${PROJECT_BINARY_DIR}/karma.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/karma.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+
+# The golden tool, for users who pin their own programs' outputs.
+install(TARGETS karma-golden RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
