@@ -1,0 +1,102 @@
+// body_lifecycle.cpp: creating, destroying, enabling and disabling bodies.
+#include "MeMessage.h"
+#include "mdt_internal.h"
+
+namespace karma::mdt {
+
+void updateTransform(MdtBody *b) { MeQuaternionToTM(b->tm, b->q, b->position); }
+
+void initBody(MdtBody *b, MdtWorldID world) {
+  const MdtWorldPrivate *p = world->priv;
+  const MeReal m = p->massScale;
+  const MeReal l = p->lengthScale;
+  const MeReal i = (MeReal)0.4 * m * l * l;
+  MdtBody zero{};
+  *b = zero;
+  b->world = world;
+  MeQuaternionMakeIdentity(b->q);
+  b->mass = m;
+  b->invMass = (MeReal)1 / m;
+  MeMatrix3MakeIdentity(b->inertia);
+  MeMatrix3MakeIdentity(b->invInertia);
+  for (int k = 0; k < 3; ++k) {
+    b->inertia[k][k] = i;
+    b->invInertia[k][k] = (MeReal)1 / i;
+  }
+  MeVector3Set(b->fastSpinAxis, 0, 1, 0);
+  b->fastSpinEnabled = FALSE;
+  b->enabled = FALSE;
+  b->userData = nullptr;
+  b->sortKey = 0;
+  updateTransform(b);
+}
+
+}  // namespace karma::mdt
+
+using namespace karma::mdt;
+
+extern "C" {
+
+MdtBodyID MEAPI MdtBodyCreate(const MdtWorldID world) {
+  ME_REQUIRE_ARG_RET(world != nullptr, nullptr, "MdtBodyCreate", "world is NULL");
+  MdtWorldPrivate *p = world->priv;
+  auto *b = static_cast<MdtBody *>(MePoolGetStruct(&p->bodies));
+  if (!b) return nullptr;  // the pool has warned once
+  initBody(b, world);
+  b->serial = p->nextSerial++;
+  return b;
+}
+
+void MEAPI MdtBodyDestroy(const MdtBodyID body) {
+  if (!body) return;
+  MdtWorldPrivate *p = body->world->priv;
+  if (body->enabled) --p->enabledCount;
+  body->enabled = FALSE;
+  MePoolPutStruct(&p->bodies, body);
+}
+
+void MEAPI MdtBodyEnable(const MdtBodyID body) {
+  ME_REQUIRE_ARG(body != nullptr, "MdtBodyEnable", "body is NULL");
+  if (body->enabled) return;
+  body->enabled = TRUE;
+  ++body->world->priv->enabledCount;
+}
+
+void MEAPI MdtBodyDisable(const MdtBodyID body) {
+  ME_REQUIRE_ARG(body != nullptr, "MdtBodyDisable", "body is NULL");
+  if (!body->enabled) return;
+  body->enabled = FALSE;
+  --body->world->priv->enabledCount;
+}
+
+MeBool MEAPI MdtBodyIsEnabled(const MdtBodyID body) {
+  ME_REQUIRE_ARG_RET(body != nullptr, FALSE, "MdtBodyIsEnabled", "body is NULL");
+  return body->enabled ? TRUE : FALSE;
+}
+
+MdtWorldID MEAPI MdtBodyGetWorld(const MdtBodyID body) {
+  ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetWorld", "body is NULL");
+  return body->world;
+}
+
+void MEAPI MdtBodySetUserData(const MdtBodyID body, void *data) {
+  ME_REQUIRE_ARG(body != nullptr, "MdtBodySetUserData", "body is NULL");
+  body->userData = data;
+}
+
+void *MEAPI MdtBodyGetUserData(const MdtBodyID body) {
+  ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetUserData", "body is NULL");
+  return body->userData;
+}
+
+void MEAPI MdtBodySetSortKey(const MdtBodyID body, const MeI32 key) {
+  ME_REQUIRE_ARG(body != nullptr, "MdtBodySetSortKey", "body is NULL");
+  body->sortKey = key;
+}
+
+MeI32 MEAPI MdtBodyGetSortKey(const MdtBodyID body) {
+  ME_REQUIRE_ARG_RET(body != nullptr, 0, "MdtBodyGetSortKey", "body is NULL");
+  return body->sortKey;
+}
+
+}  // extern "C"

@@ -1,0 +1,102 @@
+// integrate.cpp: advancing one unconstrained body by one step.
+//
+// Semi-implicit (symplectic) Euler: velocities first, from the forces at the
+// start of the step, then positions and orientation from the NEW velocities.
+//
+//   F   = accumulated force - cL v                 (linear damping as drag)
+//   v'  = v + h (g + F/m) + J/m                    (J: accumulated impulse)
+//   tau = accumulated torque - cA w - w x (Iw w)   (Iw = R^T Ib R, world frame)
+//   w'  = w + Iw^-1 (h tau + Ja)                   (Ja: angular impulse)
+//   x'  = x + h v'
+//   q'  = q turned by w' over h (MeQuaternionFiniteRotation; exact for
+//         constant w'). With a fast-spin axis a in use, w' is split into
+//         its part along a and the rest, and the body is turned by the rest
+//         first and then about a, so a large spin cannot swamp a small
+//         off-axis turn in one combined rotation.
+//
+// The gyroscopic term w x (Iw w) is explicit. TODO(dynamics): once Kea lands
+// the velocity update moves into the solver, which adds constraint forces.
+#include "MeMessage.h"
+#include "mdt_internal.h"
+
+namespace karma::mdt {
+
+void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor,
+                     const MeVector3 v) {
+  MeMatrix3 R;
+  MeMatrix4TMGetRotation(R, b->tm);
+  MeVector3 vb, lb;
+  MeMatrix3MultiplyVector(vb, R, v);        // world -> body
+  MeMatrix3MultiplyVector(lb, tensor, vb);  // tensor in the body frame
+  MeMatrix3TransposeMultiplyVector(out, R, lb);  // body -> world
+}
+
+void integrateBody(MdtBody *b, const MeVector3 gravity, MeReal h) {
+  MeVector3 v1, w1, tmp;
+
+  // Linear velocity.
+  MeVector3 f;
+  MeVector3Copy(f, b->force);
+  MeVector3MultiplyAdd(f, -b->linearDamping, b->velocity);
+  MeVector3 a;
+  MeVector3Copy(a, gravity);
+  MeVector3MultiplyAdd(a, b->invMass, f);
+  MeVector3Copy(v1, b->velocity);
+  MeVector3MultiplyAdd(v1, h, a);
+  MeVector3MultiplyAdd(v1, b->invMass, b->impulse);
+
+  // Angular velocity.
+  MeVector3 L, gyro, tau;
+  applyBodyTensor(L, b, b->inertia, b->angularVelocity);
+  MeVector3Cross(gyro, b->angularVelocity, L);
+  MeVector3Copy(tau, b->torque);
+  MeVector3MultiplyAdd(tau, -b->angularDamping, b->angularVelocity);
+  MeVector3Subtract(tau, tau, gyro);
+  MeVector3MultiplyScalar(tmp, tau, h);
+  MeVector3Add(tmp, tmp, b->angularImpulse);
+  MeVector3 dw;
+  applyBodyTensor(dw, b, b->invInertia, tmp);
+  MeVector3Add(w1, b->angularVelocity, dw);
+
+  // Position and orientation from the new velocities.
+  MeVector3 x1;
+  MeVector3Copy(x1, b->position);
+  MeVector3MultiplyAdd(x1, h, v1);
+  MeVector4 q1;
+  MeVector4Copy(q1, b->q);
+  if (b->fastSpinEnabled) {
+    MeVector3 par, perp;
+    MeVector3MultiplyScalar(par, b->fastSpinAxis, MeVector3Dot(w1, b->fastSpinAxis));
+    MeVector3Subtract(perp, w1, par);
+    MeQuaternionFiniteRotation(q1, perp, h);
+    MeQuaternionFiniteRotation(q1, par, h);
+  } else {
+    MeQuaternionFiniteRotation(q1, w1, h);
+  }
+
+  const bool ok = MeVector3AllFinite(v1) && MeVector3AllFinite(w1) && MeVector3AllFinite(x1) &&
+                  std::isfinite(q1[0]) && std::isfinite(q1[1]) && std::isfinite(q1[2]) &&
+                  std::isfinite(q1[3]);
+  if (ok) {
+    const MeReal invH = (MeReal)1 / h;
+    MeVector3Subtract(tmp, v1, b->velocity);
+    MeVector3MultiplyScalar(b->acceleration, tmp, invH);
+    MeVector3Subtract(tmp, w1, b->angularVelocity);
+    MeVector3MultiplyScalar(b->angularAcceleration, tmp, invH);
+    MeVector3Copy(b->velocity, v1);
+    MeVector3Copy(b->angularVelocity, w1);
+    MeVector3Copy(b->position, x1);
+    MeVector4Copy(b->q, q1);
+    updateTransform(b);
+  } else {
+    MeWarning(0, "MdtWorldStep: the state of body %p overflowed; it was left as it was", (void *)b);
+  }
+
+  // The accumulators hold what was applied over this step only.
+  MeVector3Set(b->force, 0, 0, 0);
+  MeVector3Set(b->torque, 0, 0, 0);
+  MeVector3Set(b->impulse, 0, 0, 0);
+  MeVector3Set(b->angularImpulse, 0, 0, 0);
+}
+
+}  // namespace karma::mdt
