@@ -1,0 +1,157 @@
+/* kea_lcp.cpp: the parts of the LCP contract shared by every solver:
+ * validation, bounds (including friction coupling), the residual, and the
+ * dispatching entry point. */
+#include "kea_internal.h"
+
+#include "MeMessage.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace karma::kea {
+namespace detail {
+
+void ComputeBounds(const LcpProblem &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo,
+                   std::vector<MeReal> &hi) {
+  const auto n = static_cast<std::size_t>(p.n);
+  lo.resize(n);
+  hi.resize(n);
+  const bool friction = !p.findex.empty();
+  for (std::size_t i = 0; i < n; ++i) {
+    const int j = friction ? p.findex[i] : -1;
+    if (j >= 0) {
+      const MeReal normal = std::max(lambda[static_cast<std::size_t>(j)], MeReal(0));
+      const MeReal limit = p.mu[i] * normal;
+      lo[i] = -limit;
+      hi[i] = limit;
+    } else {
+      lo[i] = NormaliseBound(p.lo[i]);
+      hi[i] = NormaliseBound(p.hi[i]);
+    }
+  }
+}
+
+namespace {
+
+bool AllFinite(std::span<const MeReal> v) {
+  return std::all_of(v.begin(), v.end(), [](MeReal x) { return std::isfinite(x); });
+}
+
+bool Reject(const char *function, const char *why) {
+  MeWarning(0, "%s: bad input: %s; returning lambda = 0", function, why);
+  return false;
+}
+
+}  // namespace
+
+bool Validate(const LcpProblem &p, const KeaOptions &o, const char *function) {
+  if (p.n < 0) return Reject(function, "negative row count");
+  const auto n = static_cast<std::size_t>(p.n);
+  if (p.A.size() != n * n) return Reject(function, "A does not hold n*n values");
+  if (p.b.size() != n || p.lo.size() != n || p.hi.size() != n)
+    return Reject(function, "b, lo or hi does not hold n values");
+  if (!p.findex.empty() && p.findex.size() != n) return Reject(function, "findex is neither empty nor n values");
+  if (!o.warmStart.empty() && o.warmStart.size() != n)
+    return Reject(function, "warm start is neither empty nor n values");
+  if (!AllFinite(p.A)) return Reject(function, "A contains NaN or infinity");
+  if (!AllFinite(p.b)) return Reject(function, "b contains NaN or infinity");
+  if (!AllFinite(o.warmStart)) return Reject(function, "warm start contains NaN or infinity");
+  if (!(o.epsilon >= 0) || !std::isfinite(o.epsilon)) return Reject(function, "epsilon is negative or NaN");
+  if (!(o.tolerance >= 0) || !std::isfinite(o.tolerance)) return Reject(function, "tolerance is negative or NaN");
+  if (o.maxIterations < 0) return Reject(function, "maxIterations is negative");
+  bool anyFriction = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int j = p.findex.empty() ? -1 : p.findex[i];
+    if (j >= 0) {
+      anyFriction = true;
+      if (j >= p.n || static_cast<std::size_t>(j) == i) return Reject(function, "findex out of range");
+      if (p.findex[static_cast<std::size_t>(j)] >= 0)
+        return Reject(function, "findex points at another friction row");
+      continue;
+    }
+    if (j < -1) return Reject(function, "findex out of range");
+    const MeReal lo = p.lo[i], hi = p.hi[i];
+    if (std::isnan(lo) || std::isnan(hi)) return Reject(function, "a bound is NaN");
+    if (lo > hi) return Reject(function, "lo > hi");
+    if (NormaliseBound(lo) == kInf || NormaliseBound(hi) == -kInf)
+      return Reject(function, "lo is +infinity or hi is -infinity");
+  }
+  if (anyFriction) {
+    if (p.mu.size() != n) return Reject(function, "friction rows need n values of mu");
+    for (std::size_t i = 0; i < n; ++i)
+      if (p.findex[i] >= 0 && !(p.mu[i] >= 0 && std::isfinite(p.mu[i])))
+        return Reject(function, "mu is negative, NaN or infinite");
+  }
+  return true;
+}
+
+KeaResult BadInputResult(int n) {
+  KeaResult r;
+  const auto size = static_cast<std::size_t>(std::max(n, 0));
+  r.lambda.assign(size, MeReal(0));
+  r.w.assign(size, MeReal(0));
+  r.status = KeaStatus::BadInput;
+  return r;
+}
+
+MeReal SolvedThreshold(const LcpProblem &p, const KeaOptions &o) {
+  MeReal bmax = 0;
+  for (MeReal v : p.b) bmax = std::max(bmax, std::fabs(v));
+  const MeReal tol = o.tolerance > 0 ? o.tolerance : KeaDefaultTolerance();
+  return tol * (MeReal(1) + bmax);
+}
+
+void WarnIterationLimit(const KeaOptions &o, const char *function, int iterations, MeReal residual) {
+  if (o.warnings)
+    MeWarning(0, "%s: maximum number of iterations exceeded (%d); residual %g, returning the best iterate",
+              function, iterations, static_cast<double>(residual));
+}
+
+void WarnCycle(const KeaOptions &o, const char *function, int iterations, MeReal residual) {
+  if (o.warnings)
+    MeWarning(0, "%s: cycle has been detected after %d iterations; residual %g, returning the best iterate",
+              function, iterations, static_cast<double>(residual));
+}
+
+}  // namespace detail
+
+MeReal KeaDefaultTolerance() {
+#if KARMA_DOUBLE
+  return MeReal(1e-10);
+#else
+  return MeReal(1e-4);
+#endif
+}
+
+const char *KeaStatusName(KeaStatus status) {
+  switch (status) {
+    case KeaStatus::Solved: return "Solved";
+    case KeaStatus::IterationLimit: return "IterationLimit";
+    case KeaStatus::CycleDetected: return "CycleDetected";
+    case KeaStatus::BadInput: return "BadInput";
+  }
+  return "?";
+}
+
+MeReal KeaResidual(const LcpProblem &p, MeReal epsilon, std::span<const MeReal> lambda, std::span<MeReal> w) {
+  const auto n = static_cast<std::size_t>(p.n);
+  std::vector<MeReal> lo, hi;
+  detail::ComputeBounds(p, lambda, lo, hi);
+  MeReal worst = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    MeReal wi = -p.b[i] + epsilon * lambda[i];
+    const MeReal *row = p.A.data() + i * n;
+    for (std::size_t j = 0; j < n; ++j) wi += row[j] * lambda[j];
+    if (w.size() == n) w[i] = wi;
+    const MeReal projected = std::clamp(lambda[i] - wi, lo[i], hi[i]);
+    worst = std::max(worst, std::fabs(lambda[i] - projected));
+  }
+  return worst;
+}
+
+KeaResult KeaSolve(const LcpProblem &problem, const KeaOptions &options) {
+  return options.method == KeaMethod::PGS ? KeaSolvePGS(problem, options)
+                                          : KeaSolveActiveSet(problem, options);
+}
+
+}  // namespace karma::kea

@@ -1,0 +1,176 @@
+/* kea_lcp.h: Kea's boxed linear complementarity problem (LCP) solvers.
+ *
+ * INTERNAL header (namespace karma::kea), not part of the public C API. It is
+ * standalone: it knows nothing of bodies or constraints. Mdt builds the
+ * problem from its constraints and hands it here.
+ *
+ * ===========================================================================
+ * THE CONTRACT
+ * ===========================================================================
+ *
+ * Unknowns. n constraint rows; lambda (n) is the vector of constraint
+ * impulses (forces times the time step), one per row.
+ *
+ * Matrix. A = J M^-1 J^T + eps*I, n x n, dense, row-major, symmetric. J is
+ * the constraint Jacobian (one row per constraint row), M the block-diagonal
+ * mass matrix of the bodies. J M^-1 J^T is symmetric positive SEMI-definite:
+ * it is singular whenever rows are redundant (two identical contacts, a
+ * hinge closing a loop) or the configuration is degenerate. The caller passes
+ * J M^-1 J^T in `A`; Options::epsilon adds eps on the diagonal (the solver
+ * never changes the caller's array). Only symmetry is assumed, not checked.
+ *
+ * Slack. w = A*lambda - b (A including eps*I). For a velocity-level
+ * time-stepper w is the constraint-space velocity after the step.
+ *
+ * Bounds. Row i has lo_i <= lambda_i <= hi_i. lo_i may be -infinity and hi_i
+ * +infinity; any value with magnitude >= MEINFINITY (or an IEEE infinity)
+ * means "unbounded on that side". Typical rows:
+ *     joint (bilateral) row:  (-inf, +inf)
+ *     contact normal row:     [0, +inf)
+ *     limited motor row:      [-Fmax*h, +Fmax*h]
+ *
+ * Complementarity. The solution satisfies, for every row i,
+ *     lambda_i = lo_i            =>  w_i >= 0
+ *     lambda_i = hi_i            =>  w_i <= 0
+ *     lo_i < lambda_i < hi_i     =>  w_i  = 0
+ * (a row with lo_i = hi_i is fixed at that value and w_i is free). With only
+ * infinite bounds this is the linear system A*lambda = b.
+ *
+ * Friction. A row i with findex[i] = j >= 0 is a friction row tied to the
+ * normal row j: its bounds are not lo_i/hi_i but
+ *     lo_i = -mu_i * max(lambda_j, 0),   hi_i = +mu_i * max(lambda_j, 0),
+ * recomputed from the current lambda_j as the solver proceeds (a box
+ * approximation of the Coulomb cone). findex[j] of a normal row must be -1.
+ * This makes the problem a nonlinear complementarity problem; both solvers
+ * handle it approximately, by iterating the bounds to a fixed point (see
+ * KeaSolveActiveSet). It converges in practice; if not, the iteration cap
+ * applies like any other.
+ *
+ * Epsilon (eps, Options::epsilon, >= 0). Regularisation and constraint
+ * softness: (J M^-1 J^T + eps*I) is positive definite for any eps > 0, so a
+ * solution always exists and is unique, even for redundant or singular
+ * constraint sets. The price is compliance: a row behaves like a stiff spring
+ * with 1/eps like a spring constant (eps has units time^2/mass for force-level
+ * rows). Karma's default is 0.01.
+ *
+ * Gamma (error reduction) lives in the right-hand side, which is the
+ * CALLER's job to build. For a velocity-level step of length h:
+ *     b = -(gamma / h) * error - J v - h * J M^-1 f_ext
+ * where error is the constraint's position error (penetration depth, joint
+ * separation), v the current body velocities and f_ext the external forces.
+ * gamma in [0, 1] is the fraction of the position error removed in one step
+ * (gamma*h should stay below 0.5). The solver never sees gamma or h.
+ *
+ * Solved. The residual of an iterate is the largest complementarity
+ * violation over the rows, measured with the natural map
+ *     r_i = | lambda_i - clamp(lambda_i - w_i, lo_i, hi_i) |
+ * which is zero exactly when row i satisfies its bounds and its
+ * complementarity condition (friction bounds taken from that same iterate).
+ * The problem is Solved when max_i r_i <= tolerance * (1 + max_i |b_i|).
+ *
+ * Iteration cap. If Options::maxIterations is reached before that, the
+ * solver returns the best iterate it saw (lowest residual), status
+ * IterationLimit, and, if Options::warnings is set, emits the MeWarning
+ * "Kea: maximum number of iterations exceeded ...".
+ *
+ * Cycles. The active-set method can revisit an active set it has already
+ * tried (only possible through rounding or a matrix that is not positive
+ * definite, e.g. eps = 0 with redundant rows). It detects the repeat, stops,
+ * returns the best iterate with status CycleDetected and (if warnings are
+ * on) the MeWarning "Kea: cycle has been detected ...".
+ *
+ * Bad input. Mismatched array sizes, NaN anywhere, lo_i > hi_i, lo_i = +inf,
+ * hi_i = -inf, negative or NaN mu or eps, a findex out of range or pointing
+ * at another friction row: status BadInput, lambda and w all zeros (n of
+ * them when n >= 0), one MeWarning naming the problem (always emitted), no
+ * crash.
+ *
+ * ===========================================================================
+ * TODO (sparsity): this is the dense reference implementation. A is formed
+ * and factorised densely (O(n^3) per factorisation). The production path
+ * should exploit the partition structure (J is block-sparse with one or two
+ * bodies per row; A's sparsity follows body sharing), assemble J M^-1 J^T
+ * through the platform kernels and factorise sparsely / incrementally. The
+ * dense solvers here are the specification those must agree with.
+ * ======================================================================== */
+#ifndef KARMA_KEA_LCP_H
+#define KARMA_KEA_LCP_H
+
+#include "MePrecision.h"
+
+#include <span>
+#include <vector>
+
+namespace karma::kea {
+
+/* One boxed LCP. Spans refer to caller-owned arrays that must stay alive
+ * during the solve. */
+struct LcpProblem {
+  int n = 0;
+  std::span<const MeReal> A;      /* n*n, row-major, symmetric: J M^-1 J^T */
+  std::span<const MeReal> b;      /* n */
+  std::span<const MeReal> lo;     /* n; ignored on friction rows */
+  std::span<const MeReal> hi;     /* n; ignored on friction rows */
+  std::span<const int> findex;    /* empty (no friction) or n; -1 = none */
+  std::span<const MeReal> mu;     /* n when any findex >= 0 (read on friction rows) */
+};
+
+enum class KeaMethod {
+  ActiveSet, /* exact: active-set guessing with a Cholesky (LDL^T) solve */
+  PGS        /* projected Gauss-Seidel: a fixed budget of cheap sweeps */
+};
+
+enum class KeaStatus { Solved, IterationLimit, CycleDetected, BadInput };
+
+/* A short name for a status ("Solved", ...), for messages and tests. */
+const char *KeaStatusName(KeaStatus status);
+
+struct KeaOptions {
+  KeaMethod method = KeaMethod::ActiveSet;
+  /* Active set: the number of linear solves (pivot steps) allowed over the
+   * whole solve. PGS: the number of sweeps over all rows. 0 = the method's
+   * default (active set: 10*n + 20, plus 20*n + 100 with friction rows; PGS: 50). */
+  int maxIterations = 0;
+  /* Relative tolerance of "Solved" (see the contract); 0 = default
+   * (1e-4 for float MeReal, 1e-10 for double). */
+  MeReal tolerance = 0;
+  /* eps added to the diagonal of A; must be >= 0. */
+  MeReal epsilon = 0;
+  /* Optional initial lambda (empty or n values), e.g. last step's impulses.
+   * The active-set method derives its initial active set from it; PGS starts
+   * its sweeps from it. Without it both start from lambda = 0 clamped into
+   * the bounds. */
+  std::span<const MeReal> warmStart;
+  /* Emit MeWarning on IterationLimit / CycleDetected. BadInput always warns. */
+  bool warnings = true;
+};
+
+struct KeaResult {
+  std::vector<MeReal> lambda;  /* n */
+  std::vector<MeReal> w;       /* n: A*lambda - b, eps included */
+  KeaStatus status = KeaStatus::BadInput;
+  int iterations = 0;          /* linear solves (active set) or sweeps (PGS) */
+  MeReal residual = 0;         /* max complementarity violation (absolute) */
+};
+
+/* The exact method (see kea_activeset.cpp). */
+KeaResult KeaSolveActiveSet(const LcpProblem &problem, const KeaOptions &options);
+
+/* Projected Gauss-Seidel (see kea_pgs.cpp). */
+KeaResult KeaSolvePGS(const LcpProblem &problem, const KeaOptions &options);
+
+/* Dispatches on options.method. */
+KeaResult KeaSolve(const LcpProblem &problem, const KeaOptions &options);
+
+/* The contract's residual of a given lambda: max_i r_i, with w = (A + eps I)
+ * lambda - b written to `w` when it is not empty (n values). Assumes a valid
+ * problem. */
+MeReal KeaResidual(const LcpProblem &problem, MeReal epsilon, std::span<const MeReal> lambda,
+                   std::span<MeReal> w = {});
+
+/* The tolerance a given options value resolves to (its default when 0). */
+MeReal KeaDefaultTolerance();
+
+}  // namespace karma::kea
+
+#endif
