@@ -461,3 +461,22 @@ TEST(KeaLcp, BadInputIsReportedWithoutCrashing) {
   EXPECT_EQ(KeaSolveActiveSet(empty.problem(), {}).status, KeaStatus::Solved);
   EXPECT_EQ(KeaSolvePGS(empty.problem(), {}).status, KeaStatus::Solved);
 }
+
+TEST(KeaLcp, CycleInTheActiveSetIsDetected) {
+  // A negative "mass" row breaks the contract's semi-definiteness (as
+  // rounding can in near-singular systems): at lo, w < 0 asks to free the
+  // row; free, lambda < lo sends it back. The method notices the repeat.
+  Owned o;
+  o.n = 1;
+  o.A = {-1};
+  o.b = {1};
+  o.lo = {0};
+  o.hi = {kInf};
+  WarningCapture capture;
+  const KeaResult r = KeaSolveActiveSet(o.problem(), KeaOptions{});
+  EXPECT_EQ(r.status, KeaStatus::CycleDetected) << KeaStatusName(r.status);
+  EXPECT_LT(r.iterations, 20);
+  EXPECT_TRUE(capture.saw("cycle has been detected"));
+  ASSERT_EQ(r.lambda.size(), 1u);
+  EXPECT_TRUE(std::isfinite(r.lambda[0]));
+}
