@@ -153,6 +153,23 @@ struct KeaResult {
   MeReal residual = 0;         /* max complementarity violation (absolute) */
 };
 
+/* The same problem with A in compressed sparse rows: both triangles stored,
+ * columns ascending within a row, every diagonal entry present. This is what
+ * Mdt hands over: A's sparsity follows which rows share a body. */
+struct SparseLcpProblem {
+  int n = 0;
+  std::span<const int> rowStart;  /* n + 1 */
+  std::span<const int> col;       /* rowStart[n] */
+  std::span<const MeReal> val;    /* rowStart[n] */
+  std::span<const MeReal> b, lo, hi;
+  std::span<const int> findex;
+  std::span<const MeReal> mu;
+};
+
+/* Solves a sparse problem with the same contract and options as KeaSolve
+ * (see kea_sparse.cpp for how the sparsity is used). */
+KeaResult KeaSolveSparse(const SparseLcpProblem &problem, const KeaOptions &options);
+
 /* The exact method (see kea_activeset.cpp). */
 KeaResult KeaSolveActiveSet(const LcpProblem &problem, const KeaOptions &options);
 

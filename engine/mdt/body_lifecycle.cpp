@@ -1,6 +1,6 @@
 // body_lifecycle.cpp: creating, destroying, enabling and disabling bodies.
 #include "MeMessage.h"
-#include "mdt_internal.h"
+#include "constraint.h"
 
 namespace karma::mdt {
 
@@ -50,6 +50,18 @@ MdtBodyID MEAPI MdtBodyCreate(const MdtWorldID world) {
 void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   if (!body) return;
   MdtWorldPrivate *p = body->world->priv;
+  // Constraints still attached would point at a dead body: disable them and
+  // leave them without bodies (the program may set new ones or destroy them).
+  for (void *s = MePoolGetNextUsed(&p->constraints, nullptr); s;
+       s = MePoolGetNextUsed(&p->constraints, s)) {
+    auto *c = static_cast<MdtConstraint *>(s);
+    if (c->body[0] != body && c->body[1] != body) continue;
+    if (c->enabled)
+      MeWarning(0, "MdtBodyDestroy: an enabled %s still used this body; it was disabled",
+                c->type->name);
+    c->enabled = FALSE;
+    c->body[0] = c->body[1] = nullptr;
+  }
   if (body->enabled) --p->enabledCount;
   body->enabled = FALSE;
   MePoolPutStruct(&p->bodies, body);
@@ -59,6 +71,7 @@ void MEAPI MdtBodyEnable(const MdtBodyID body) {
   ME_REQUIRE_ARG(body != nullptr, "MdtBodyEnable", "body is NULL");
   if (body->enabled) return;
   body->enabled = TRUE;
+  body->idleTime = 0;
   ++body->world->priv->enabledCount;
 }
 

@@ -14,8 +14,9 @@
 //         first and then about a, so a large spin cannot swamp a small
 //         off-axis turn in one combined rotation.
 //
-// The gyroscopic term w x (Iw w) is explicit. TODO(dynamics): once Kea lands
-// the velocity update moves into the solver, which adds constraint forces.
+// The gyroscopic term w x (Iw w) is explicit. Constraint impulses are added
+// between the velocity prediction and the position update (step.cpp):
+//   v' = vPred + M^-1 J^T lambda.
 #include "MeMessage.h"
 #include "mdt_internal.h"
 
@@ -31,8 +32,8 @@ void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 te
   MeMatrix3TransposeMultiplyVector(out, R, lb);  // body -> world
 }
 
-void integrateBody(MdtBody *b, const MeVector3 gravity, MeReal h) {
-  MeVector3 v1, w1, tmp;
+void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
+  MeVector3 tmp;
 
   // Linear velocity.
   MeVector3 f;
@@ -41,9 +42,9 @@ void integrateBody(MdtBody *b, const MeVector3 gravity, MeReal h) {
   MeVector3 a;
   MeVector3Copy(a, gravity);
   MeVector3MultiplyAdd(a, b->invMass, f);
-  MeVector3Copy(v1, b->velocity);
-  MeVector3MultiplyAdd(v1, h, a);
-  MeVector3MultiplyAdd(v1, b->invMass, b->impulse);
+  MeVector3Copy(b->vPred, b->velocity);
+  MeVector3MultiplyAdd(b->vPred, h, a);
+  MeVector3MultiplyAdd(b->vPred, b->invMass, b->impulse);
 
   // Angular velocity.
   MeVector3 L, gyro, tau;
@@ -56,7 +57,29 @@ void integrateBody(MdtBody *b, const MeVector3 gravity, MeReal h) {
   MeVector3Add(tmp, tmp, b->angularImpulse);
   MeVector3 dw;
   applyBodyTensor(dw, b, b->invInertia, tmp);
-  MeVector3Add(w1, b->angularVelocity, dw);
+  MeVector3Add(b->wPred, b->angularVelocity, dw);
+
+  // World-frame inverse inertia R^T Ib^-1 R, column by column.
+  for (int k = 0; k < 3; ++k) {
+    MeVector3 e = {0, 0, 0}, col;
+    e[k] = 1;
+    applyBodyTensor(col, b, b->invInertia, e);
+    for (int r = 0; r < 3; ++r) b->invInertiaWorld[r][k] = col[r];
+  }
+}
+
+void applyImpulse(MdtBody *b, const MeVector3 linear, const MeVector3 angular) {
+  MeVector3MultiplyAdd(b->vPred, b->invMass, linear);
+  MeVector3 dw;
+  MeMatrix3MultiplyVector(dw, b->invInertiaWorld, angular);
+  MeVector3Add(b->wPred, b->wPred, dw);
+}
+
+void advanceBody(MdtBody *b, MeReal h) {
+  MeVector3 tmp;
+  MeVector3 v1, w1;
+  MeVector3Copy(v1, b->vPred);
+  MeVector3Copy(w1, b->wPred);
 
   // Position and orientation from the new velocities.
   MeVector3 x1;

@@ -38,11 +38,27 @@ struct MdtBody {
   void *userData;
   MeI32 sortKey;
   std::uint64_t serial;  // creation order within the world, for tie-breaks
+  MeReal idleTime;       // seconds spent below every auto-disable threshold
+  // Scratch of the step: velocities after forces but before constraints,
+  // the world-frame inverse inertia, and the body's index in its partition.
+  MeVector3 vPred;
+  MeVector3 wPred;
+  MeMatrix3 invInertiaWorld;
+  int index;
+  int mark;
 };
+
+namespace karma::mdt {
+struct StepScratch;
+}
 
 struct MdtWorldPrivate {
   MePool bodies;
-  MdtBody **order;  // scratch for the step order, maxBodies entries
+  MePool constraints;          // every constraint type, slots of the largest size
+  unsigned constraintSlotSize;
+  std::uint64_t nextConstraintSerial;
+  karma::mdt::StepScratch *scratch;  // step work arrays, reused across steps
+  MdtContactImportanceCBPtr importance;
   unsigned int maxBodies;
   unsigned int maxConstraints;
   unsigned int enabledCount;
@@ -62,8 +78,15 @@ inline bool realFinite3(MeReal a, MeReal b, MeReal c) {
 void updateTransform(MdtBody *b);
 // Sets the default state of a freshly handed-out body.
 void initBody(MdtBody *b, MdtWorldID world);
-// Integrates one enabled body over h seconds and clears its accumulators.
-void integrateBody(MdtBody *b, const MeVector3 gravity, MeReal h);
+// The step of one body, in three stages:
+//   predictVelocities: vPred, wPred from the forces and impulses (and the
+//                      world-frame inverse inertia for the solver);
+//   (the solver adds constraint impulses with applyImpulse)
+//   advanceBody:       position and orientation from vPred, wPred; clears
+//                      the accumulators.
+void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h);
+void applyImpulse(MdtBody *b, const MeVector3 linear, const MeVector3 angular);
+void advanceBody(MdtBody *b, MeReal h);
 // w = R^T (Ib (R v)): a world vector through a body-frame tensor.
 void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor,
                      const MeVector3 v);

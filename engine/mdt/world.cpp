@@ -1,11 +1,12 @@
 // world.cpp: creating and destroying worlds, counting bodies, and the step.
 #include <algorithm>
 #include <climits>
+#include <cstddef>
 #include <new>
 
 #include "MeMemory.h"
 #include "MeMessage.h"
-#include "mdt_internal.h"
+#include "step.h"
 
 using namespace karma::mdt;
 
@@ -23,12 +24,9 @@ void setDefaultParams(MdtWorldParams &p, MeReal l, MeReal m) {
   p.aliveWindow = (MeReal)0.2;
   p.minSafeTime = (MeReal)0.001;
   p.maxMatrixSize = 0;
-}
-
-// Strict total order: sort key, then creation order (serials are unique).
-bool stepsBefore(const MdtBody *a, const MdtBody *b) {
-  if (a->sortKey != b->sortKey) return a->sortKey < b->sortKey;
-  return a->serial < b->serial;
+  p.keaMethod = MdtKeaMethodActiveSet;
+  p.keaMaxIterations = 0;
+  p.keaTolerance = 0;
 }
 
 }  // namespace
@@ -40,6 +38,8 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
   static const char *fn = "MdtWorldCreate";
   ME_REQUIRE_ARG_RET(maxBodies <= (unsigned int)(INT_MAX / 2), nullptr, fn,
                      "maxBodies %u is too large", maxBodies);
+  ME_REQUIRE_ARG_RET(maxConstraints <= (unsigned int)(INT_MAX / 2), nullptr, fn,
+                     "maxConstraints %u is too large", maxConstraints);
   ME_REQUIRE_ARG_RET(realFinite(lengthScale) && lengthScale > 0, nullptr, fn,
                      "lengthScale must be positive and finite, got %g", (double)lengthScale);
   ME_REQUIRE_ARG_RET(realFinite(massScale) && massScale > 0, nullptr, fn,
@@ -47,22 +47,32 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
 
   auto *w = static_cast<MdtWorld *>(MeMemoryAPI.createZeroed(sizeof(MdtWorld)));
   auto *p = static_cast<MdtWorldPrivate *>(MeMemoryAPI.createZeroed(sizeof(MdtWorldPrivate)));
-  MdtBody **order = maxBodies > 0 ? static_cast<MdtBody **>(
-                                        MeMemoryAPI.createZeroed(maxBodies * sizeof(MdtBody *)))
-                                  : nullptr;
-  bool ok = w && p && (maxBodies == 0 || order);
+  bool ok = w && p;
+  const unsigned slot = largestConstraintSize();
+  bool bodiesOk = false, constraintsOk = false;
   if (ok) {
-    ok = MePoolInit(&p->bodies, (int)maxBodies, (int)sizeof(MdtBody), (int)alignof(MdtBody));
+    ok = bodiesOk =
+        MePoolInit(&p->bodies, (int)maxBodies, (int)sizeof(MdtBody), (int)alignof(MdtBody));
+  }
+  if (ok) {
+    ok = constraintsOk = MePoolInit(&p->constraints, (int)maxConstraints, (int)slot,
+                                    (int)alignof(std::max_align_t));
+  }
+  if (ok) {
+    p->scratch = new (std::nothrow) StepScratch();
+    ok = p->scratch != nullptr;
   }
   if (!ok) {
-    if (order) MeMemoryAPI.destroy(order);
+    if (constraintsOk) MePoolDestroy(&p->constraints);
+    if (bodiesOk) MePoolDestroy(&p->bodies);
     if (p) MeMemoryAPI.destroy(p);
     if (w) MeMemoryAPI.destroy(w);
     MeWarning(0, "MdtWorldCreate: out of memory for a world of %u bodies", maxBodies);
     return nullptr;
   }
   MePoolSetName(&p->bodies, "MdtWorld bodies");
-  p->order = order;
+  MePoolSetName(&p->constraints, "MdtWorld constraints");
+  p->constraintSlotSize = slot;
   p->maxBodies = maxBodies;
   p->maxConstraints = maxConstraints;
   p->lengthScale = lengthScale;
@@ -75,8 +85,9 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
 void MEAPI MdtWorldDestroy(const MdtWorldID world) {
   if (!world) return;
   MdtWorldPrivate *p = world->priv;
+  MePoolDestroy(&p->constraints);  // constraints own nothing outside their slot
   MePoolDestroy(&p->bodies);  // every body goes with the pool
-  if (p->order) MeMemoryAPI.destroy(p->order);
+  delete p->scratch;
   MeMemoryAPI.destroy(p);
   MeMemoryAPI.destroy(world);
 }
@@ -96,25 +107,76 @@ unsigned int MEAPI MdtWorldGetMaxBodies(const MdtWorldID world) {
   return world->priv->maxBodies;
 }
 
-// The step as it stands (no constraints yet): gather the enabled bodies,
-// order them by (sort key, creation order), integrate each one.
-// TODO(dynamics): partitions, Kea constraint forces and auto-disable slot in
-// between the gathering and the integration.
+// The step: see step.h for the stages.
 void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   static const char *fn = "MdtWorldStep";
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
   ME_REQUIRE_ARG(realFinite(stepSize) && stepSize > 0, fn,
                  "stepSize must be positive and finite, got %g", (double)stepSize);
   ME_REQUIRE_ARG(MeVector3AllFinite(world->params.gravity), fn, "gravity is not finite");
-  MdtWorldPrivate *p = world->priv;
-  unsigned int n = 0;
-  for (void *s = MePoolGetNextUsed(&p->bodies, nullptr); s;
-       s = MePoolGetNextUsed(&p->bodies, s)) {
-    auto *b = static_cast<MdtBody *>(s);
-    if (b->enabled) p->order[n++] = b;
+  StepScratch &s = *world->priv->scratch;
+  s.stats = MdtWorldStepStats{};
+  s.partitionRows.clear();
+  buildPartitions(world, s);
+  StepContext ctx;
+  ctx.h = stepSize;
+  ctx.invH = (MeReal)1 / stepSize;
+  ctx.epsilon = world->params.epsilon;
+  ctx.gamma = world->params.gamma;
+  for (const Partition &part : s.partitions) {
+    s.stats.bodies += part.bodyCount;
+    s.stats.constraints += part.constraintCount;
+    solvePartition(world, s, part, ctx);
+    if (autoDisablePartition(world, s, part, stepSize)) ++s.stats.sleeping;
   }
-  std::sort(p->order, p->order + n, stepsBefore);
-  for (unsigned int i = 0; i < n; ++i) integrateBody(p->order[i], world->params.gravity, stepSize);
+  s.stats.partitions = (int)s.partitions.size();
+}
+
+void MEAPI MdtWorldGetStepStats(const MdtWorldID world, MdtWorldStepStats *stats) {
+  ME_REQUIRE_ARG(world != nullptr && stats != nullptr, "MdtWorldGetStepStats", "NULL argument");
+  *stats = world->priv->scratch->stats;
+}
+
+int MEAPI MdtWorldGetPartitionCount(const MdtWorldID world) {
+  ME_REQUIRE_ARG_RET(world != nullptr, 0, "MdtWorldGetPartitionCount", "world is NULL");
+  return (int)world->priv->scratch->partitions.size();
+}
+
+namespace {
+const Partition *partitionAt(MdtWorldID world, int i, const char *fn) {
+  if (!world) {
+    MeWarning(0, "%s: world is NULL", fn);
+    return nullptr;
+  }
+  const StepScratch &s = *world->priv->scratch;
+  if (i < 0 || i >= (int)s.partitions.size()) {
+    MeWarning(0, "%s: partition %d does not exist (last step had %d)", fn, i,
+              (int)s.partitions.size());
+    return nullptr;
+  }
+  return &s.partitions[(size_t)i];
+}
+}  // namespace
+
+int MEAPI MdtWorldGetPartitionBodyCount(const MdtWorldID world, const int partition) {
+  const Partition *p = partitionAt(world, partition, "MdtWorldGetPartitionBodyCount");
+  return p ? p->bodyCount : 0;
+}
+
+MdtBodyID MEAPI MdtWorldGetPartitionBody(const MdtWorldID world, const int partition,
+                                         const int i) {
+  const Partition *p = partitionAt(world, partition, "MdtWorldGetPartitionBody");
+  if (!p) return nullptr;
+  if (i < 0 || i >= p->bodyCount) {
+    MeWarning(0, "MdtWorldGetPartitionBody: body %d of %d does not exist", i, p->bodyCount);
+    return nullptr;
+  }
+  return world->priv->scratch->partBodies[(size_t)(p->bodyStart + i)];
+}
+
+int MEAPI MdtWorldGetPartitionRowCount(const MdtWorldID world, const int partition) {
+  if (!partitionAt(world, partition, "MdtWorldGetPartitionRowCount")) return 0;
+  return world->priv->scratch->partitionRows[(size_t)partition];
 }
 
 }  // extern "C"

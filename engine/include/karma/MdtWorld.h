@@ -13,6 +13,7 @@
 #define KARMA_MDTWORLD_H
 #include "MeCall.h"
 #include "MePrecision.h"
+#include <stddef.h>
 
 ME_EXTERN_C_BEGIN
 
@@ -32,8 +33,21 @@ typedef struct MdtBody *MdtBodyID;
  *   aliveWindow                      0.2
  *   minSafeTime                      0.001
  *   maxMatrixSize                    0 = unlimited
- * Only gravity is used by the current step; epsilon, gamma and the
- * auto-disable fields are stored for the solver and auto-disable to come. */
+ *   keaMethod                        MdtKeaMethodActiveSet
+ *   keaMaxIterations                 0 = Kea's default
+ *   keaTolerance                     0 = Kea's default
+ *
+ * epsilon is added to the diagonal of the constraint matrix: every rigid
+ * constraint row gives way by epsilon times its impulse. gamma is the
+ * fraction of a constraint's position error corrected in one step. The
+ * auto-disable thresholds are magnitudes of linear/angular velocity and
+ * acceleration below which a body counts as resting; a partition whose
+ * bodies have all rested for aliveWindow seconds is disabled. */
+typedef enum MdtKeaMethod {
+    MdtKeaMethodActiveSet, /* exact: Cholesky factorisation, candidate active sets */
+    MdtKeaMethodPGS        /* projected Gauss-Seidel, keaMaxIterations sweeps */
+} MdtKeaMethod;
+
 typedef struct MdtWorldParams {
     MeVector3 gravity;
     MeReal epsilon;
@@ -46,7 +60,23 @@ typedef struct MdtWorldParams {
     MeReal aliveWindow;
     MeReal minSafeTime;
     int maxMatrixSize;
+    MdtKeaMethod keaMethod;
+    int keaMaxIterations;
+    MeReal keaTolerance;
 } MdtWorldParams;
+
+/* What the last MdtWorldStep did. */
+typedef struct MdtWorldStepStats {
+    int partitions;       /* partitions solved */
+    int sleeping;         /* of those, put to sleep at the end of the step */
+    int bodies;           /* enabled bodies stepped */
+    int constraints;      /* constraints simulated */
+    int rows;             /* constraint rows solved (after capping) */
+    int rowsRemoved;      /* rows removed by matrix capping */
+    int keaIterations;    /* Kea iterations summed over partitions */
+    int keaUnsolved;      /* partitions Kea did not solve to tolerance */
+    MeReal keaResidual;   /* largest Kea residual (impulse units) */
+} MdtWorldStepStats;
 
 /* The world's private state (body pool, step order, counters). */
 struct MdtWorldPrivate;
@@ -77,6 +107,56 @@ MEPUBLIC void MEAPI MdtWorldSetEpsilon(const MdtWorldID world, const MeReal epsi
 MEPUBLIC MeReal MEAPI MdtWorldGetEpsilon(const MdtWorldID world);
 MEPUBLIC void MEAPI MdtWorldSetGamma(const MdtWorldID world, const MeReal gamma);
 MEPUBLIC MeReal MEAPI MdtWorldGetGamma(const MdtWorldID world);
+
+/* Statistics of the last step. */
+MEPUBLIC void MEAPI MdtWorldGetStepStats(const MdtWorldID world, MdtWorldStepStats *stats);
+
+/* The partitions of the last step, in solve order: how many, and the bodies
+ * and solved row count of partition i. Bodies are listed in breadth-first
+ * order from the first body in (sort key, creation) order. */
+MEPUBLIC int MEAPI MdtWorldGetPartitionCount(const MdtWorldID world);
+MEPUBLIC int MEAPI MdtWorldGetPartitionBodyCount(const MdtWorldID world, const int partition);
+MEPUBLIC MdtBodyID MEAPI MdtWorldGetPartitionBody(const MdtWorldID world, const int partition,
+                                                  const int i);
+MEPUBLIC int MEAPI MdtWorldGetPartitionRowCount(const MdtWorldID world, const int partition);
+
+/* Auto-disable on or off (on by default). */
+MEPUBLIC void MEAPI MdtWorldSetAutoDisable(const MdtWorldID world, const MeBool on);
+MEPUBLIC MeBool MEAPI MdtWorldGetAutoDisable(const MdtWorldID world);
+/* The four thresholds (>= 0) and the alive window (>= 0, seconds). */
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableVelocityThreshold(const MdtWorldID world,
+                                                            const MeReal v);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAngularVelocityThreshold(const MdtWorldID world,
+                                                                   const MeReal w);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAccelerationThreshold(const MdtWorldID world,
+                                                                const MeReal a);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAngularAccelerationThreshold(const MdtWorldID world,
+                                                                       const MeReal a);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAliveWindow(const MdtWorldID world, const MeReal t);
+
+/* Matrix capping: at most `size` rows per partition (0 = no cap). Rows are
+ * removed in this order: friction rows, then contacts between two bodies,
+ * then contacts with the world, shallowest first (or least important first
+ * when an importance callback is set); joint rows never, and every contact
+ * group keeps at least one contact. */
+MEPUBLIC void MEAPI MdtWorldSetMaxMatrixSize(const MdtWorldID world, const int size);
+/* Importance of a contact for capping: higher is kept longer. NULL restores
+ * the penetration depth order. */
+struct MdtContact;
+typedef MeReal(MEAPI *MdtContactImportanceCBPtr)(struct MdtContact *contact);
+MEPUBLIC void MEAPI MdtWorldSetContactImportanceCB(const MdtWorldID world,
+                                                   MdtContactImportanceCBPtr cb);
+
+/* Solver knobs (see kea_lcp.h's contract): the method, its iteration cap
+ * (0 = default) and relative tolerance (0 = default). */
+MEPUBLIC void MEAPI MdtWorldSetKeaMethod(const MdtWorldID world, const MdtKeaMethod method);
+MEPUBLIC void MEAPI MdtWorldSetKeaMaxIterations(const MdtWorldID world, const int n);
+MEPUBLIC void MEAPI MdtWorldSetKeaTolerance(const MdtWorldID world, const MeReal tol);
+
+/* Bytes of solver workspace a partition of `rows` rows and `bodies` bodies
+ * needs at most (dense worst case: the matrix, its factor and the row
+ * vectors). */
+MEPUBLIC size_t MEAPI MdtKeaMemoryRequired(const int rows, const int bodies);
 
 /* Bodies in the world: enabled ones / all / the capacity. */
 MEPUBLIC unsigned int MEAPI MdtWorldGetEnabledBodyCount(const MdtWorldID world);

@@ -1,0 +1,188 @@
+/* MdtContact.h: contacts, their parameters, and contact groups.
+ *
+ * A contact is a constraint at a point between body 0 and body 1 (or the
+ * world). Its normal points from body 1 into body 0: the contact pushes body
+ * 0 along +normal and body 1 along -normal, never pulls (unless adhesive),
+ * and removes a fraction gamma of the penetration depth per step. Contacts
+ * can be made by hand (MdtContactCreate, SetBodies, SetPosition, SetNormal,
+ * SetPenetration, Enable) or by collision through contact groups.
+ *
+ * Friction acts in the contact plane along a primary direction (set with
+ * MdtContactSetDirection, else chosen from the normal) and the secondary
+ * direction normal x primary.
+ *
+ * Parameters (MdtContactParams, defaults from Appendix A):
+ *   type            FrictionZero | Friction1D (primary only) | Friction2D
+ *   model1, model2  Box: |friction force| <= friction1 / friction2 (N);
+ *                   NormalForce: <= frictionCoefficient1/2 * normal force
+ *   friction1/2     MEINFINITY          frictionCoefficient1/2   0
+ *   restitution     0: separating speed after impact = restitution * impact
+ *                   speed, for impacts faster than velThreshold (0.001)
+ *   softness        0: added to the normal row's diagonal; > 0 lets the
+ *                   contact give way (penetrate) like a spring
+ *   maxAdhesiveForce 0: the normal force may pull up to this much
+ *   slip1/2         0: tangential velocity = slip * friction force
+ *                   (force-proportional sliding, for tyres)
+ *   slide1/2        0: the velocity of body 0 relative to body 1 that
+ *                   friction drives towards (a conveyor belt)
+ *   options         bits of MdtContactOption: set by the setters to record
+ *                   which features are in use; informational. */
+#ifndef KARMA_MDTCONTACT_H
+#define KARMA_MDTCONTACT_H
+#include "MdtConstraint.h"
+
+ME_EXTERN_C_BEGIN
+
+typedef enum MdtContactType {
+    MdtContactTypeFrictionZero = 0,
+    MdtContactTypeFriction1D = 1,
+    MdtContactTypeFriction2D = 2
+} MdtContactType;
+
+typedef enum MdtFrictionModel {
+    MdtFrictionModelBox = 0,
+    MdtFrictionModelNormalForce = 1
+} MdtFrictionModel;
+
+typedef enum MdtContactOption {
+    MdtContactOptionBounce = 1,
+    MdtContactOptionSoft = 2,
+    MdtContactOptionAdhesive = 4,
+    MdtContactOptionSlip1 = 8,
+    MdtContactOptionSlip2 = 16,
+    MdtContactOptionSlide1 = 32,
+    MdtContactOptionSlide2 = 64
+} MdtContactOption;
+
+typedef struct MdtContactParams {
+    MdtContactType type;
+    MdtFrictionModel model1;
+    MdtFrictionModel model2;
+    int options;
+    MeReal frictionCoefficient1;
+    MeReal frictionCoefficient2;
+    MeReal restitution;
+    MeReal velThreshold;
+    MeReal softness;
+    MeReal max_adhesive_force;
+    MeReal friction1;
+    MeReal friction2;
+    MeReal slip1;
+    MeReal slip2;
+    MeReal slide1;
+    MeReal slide2;
+} MdtContactParams;
+typedef MdtContactParams *MdtContactParamsID;
+
+MEPUBLIC void MEAPI MdtContactParamsReset(const MdtContactParamsID p);
+MEPUBLIC void MEAPI MdtContactParamsSetType(const MdtContactParamsID p, const MdtContactType t);
+MEPUBLIC MdtContactType MEAPI MdtContactParamsGetType(const MdtContactParamsID p);
+MEPUBLIC void MEAPI MdtContactParamsSetPrimaryFrictionModel(const MdtContactParamsID p,
+                                                            const MdtFrictionModel m);
+MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFrictionModel(const MdtContactParamsID p,
+                                                              const MdtFrictionModel m);
+MEPUBLIC MdtFrictionModel MEAPI MdtContactParamsGetPrimaryFrictionModel(const MdtContactParamsID p);
+MEPUBLIC MdtFrictionModel MEAPI MdtContactParamsGetSecondaryFrictionModel(
+    const MdtContactParamsID p);
+/* Box friction limits (>= 0), both / primary / secondary. */
+MEPUBLIC void MEAPI MdtContactParamsSetFriction(const MdtContactParamsID p, const MeReal f);
+MEPUBLIC void MEAPI MdtContactParamsSetPrimaryFriction(const MdtContactParamsID p, const MeReal f);
+MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFriction(const MdtContactParamsID p,
+                                                         const MeReal f);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetPrimaryFriction(const MdtContactParamsID p);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetSecondaryFriction(const MdtContactParamsID p);
+/* Normal-force friction coefficients (>= 0), both / primary / secondary. */
+MEPUBLIC void MEAPI MdtContactParamsSetFrictionCoefficient(const MdtContactParamsID p,
+                                                          const MeReal mu);
+MEPUBLIC void MEAPI MdtContactParamsSetPrimaryFrictionCoefficient(const MdtContactParamsID p,
+                                                                 const MeReal mu);
+MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFrictionCoefficient(const MdtContactParamsID p,
+                                                                   const MeReal mu);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetPrimaryFrictionCoefficient(const MdtContactParamsID p);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetSecondaryFrictionCoefficient(const MdtContactParamsID p);
+/* Restitution in [0, 1]; its velocity threshold >= 0. */
+MEPUBLIC void MEAPI MdtContactParamsSetRestitution(const MdtContactParamsID p, const MeReal e);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetRestitution(const MdtContactParamsID p);
+MEPUBLIC void MEAPI MdtContactParamsSetRestitutionThreshold(const MdtContactParamsID p,
+                                                           const MeReal v);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetRestitutionThreshold(const MdtContactParamsID p);
+MEPUBLIC void MEAPI MdtContactParamsSetSoftness(const MdtContactParamsID p, const MeReal s);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetSoftness(const MdtContactParamsID p);
+MEPUBLIC void MEAPI MdtContactParamsSetMaxAdhesiveForce(const MdtContactParamsID p,
+                                                       const MeReal f);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetMaxAdhesiveForce(const MdtContactParamsID p);
+/* Slip (>= 0), both / primary / secondary. */
+MEPUBLIC void MEAPI MdtContactParamsSetSlip(const MdtContactParamsID p, const MeReal s);
+MEPUBLIC void MEAPI MdtContactParamsSetPrimarySlip(const MdtContactParamsID p, const MeReal s);
+MEPUBLIC void MEAPI MdtContactParamsSetSecondarySlip(const MdtContactParamsID p, const MeReal s);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetPrimarySlip(const MdtContactParamsID p);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetSecondarySlip(const MdtContactParamsID p);
+/* Slide (surface velocity), primary / secondary. */
+MEPUBLIC void MEAPI MdtContactParamsSetPrimarySlide(const MdtContactParamsID p, const MeReal v);
+MEPUBLIC void MEAPI MdtContactParamsSetSecondarySlide(const MdtContactParamsID p, const MeReal v);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetPrimarySlide(const MdtContactParamsID p);
+MEPUBLIC MeReal MEAPI MdtContactParamsGetSecondarySlide(const MdtContactParamsID p);
+MEPUBLIC int MEAPI MdtContactParamsGetOptions(const MdtContactParamsID p);
+
+/* ---- contacts --------------------------------------------------------------
+ * Reset: position at body 0's origin, normal (0,1,0), no direction set,
+ * penetration 0, parameters reset. */
+MDT_CONSTRAINT_TYPE_DECL(Contact, MdtContactID)
+MDT_CONSTRAINT_COMMON_API(Contact, MdtContactID)
+MDT_CONSTRAINT_POSITION_API(Contact, MdtContactID)
+#define MdtContactInvalidID ((MdtContactID)0)
+
+/* Normalised; a zero or non-finite normal is rejected. */
+MEPUBLIC void MEAPI MdtContactSetNormal(const MdtContactID c, const MeReal x, const MeReal y,
+                                        const MeReal z);
+MEPUBLIC void MEAPI MdtContactGetNormal(const MdtContactID c, MeVector3 normal);
+/* The primary friction direction, made orthogonal to the normal. */
+MEPUBLIC void MEAPI MdtContactSetDirection(const MdtContactID c, const MeReal x, const MeReal y,
+                                           const MeReal z);
+/* The primary direction in use: the one set, or the automatic one. */
+MEPUBLIC void MEAPI MdtContactGetDirection(const MdtContactID c, MeVector3 direction);
+MEPUBLIC void MEAPI MdtContactSetPenetration(const MdtContactID c, const MeReal penetration);
+MEPUBLIC MeReal MEAPI MdtContactGetPenetration(const MdtContactID c);
+MEPUBLIC MdtContactParamsID MEAPI MdtContactGetParams(const MdtContactID c);
+/* Copies all parameters at once. */
+MEPUBLIC void MEAPI MdtContactSetParams(const MdtContactID c, const MdtContactParamsID p);
+/* The chain of contacts of one body pair (used by collision and groups). */
+MEPUBLIC MdtContactID MEAPI MdtContactGetNext(const MdtContactID c);
+MEPUBLIC void MEAPI MdtContactSetNext(const MdtContactID c, const MdtContactID next);
+/* Normal force of the last step (>= 0 unless adhesive). */
+MEPUBLIC MeReal MEAPI MdtContactGetNormalForce(const MdtContactID c);
+
+/* Enabled contacts touching a body (stand-alone or in enabled groups), in a
+ * fixed order; NULL at the end. */
+MEPUBLIC MdtContactID MEAPI MdtBodyGetFirstContact(const MdtBodyID body);
+MEPUBLIC MdtContactID MEAPI MdtBodyGetNextContact(const MdtBodyID body, const MdtContactID c);
+
+/* ---- contact groups ----------------------------------------------------------
+ * All the contacts between one pair of bodies (or a body and the world),
+ * simulated together when the group is enabled. Contacts created through a
+ * group share its bodies and are enabled and disabled with it. */
+MDT_CONSTRAINT_TYPE_DECL(ContactGroup, MdtContactGroupID)
+MDT_CONSTRAINT_COMMON_API(ContactGroup, MdtContactGroupID)
+
+/* A new contact (default parameters) at the end of the group; NULL with a
+ * warning when the world's constraint pool is full. */
+MEPUBLIC MdtContactID MEAPI MdtContactGroupCreateContact(const MdtContactGroupID g);
+/* Removes a contact from the group and destroys it. */
+MEPUBLIC void MEAPI MdtContactGroupDestroyContact(const MdtContactGroupID g, const MdtContactID c);
+/* Adds a stand-alone (disabled) contact to the end of the group. */
+MEPUBLIC void MEAPI MdtContactGroupAppendContact(const MdtContactGroupID g, const MdtContactID c);
+/* Takes a contact out of the group without destroying it (it becomes a
+ * disabled stand-alone contact). */
+MEPUBLIC void MEAPI MdtContactGroupRemoveContact(const MdtContactGroupID g, const MdtContactID c);
+MEPUBLIC MdtContactID MEAPI MdtContactGroupGetFirstContact(const MdtContactGroupID g);
+MEPUBLIC MdtContactID MEAPI MdtContactGroupGetNextContact(const MdtContactGroupID g,
+                                                          const MdtContactID c);
+MEPUBLIC int MEAPI MdtContactGroupGetCount(const MdtContactGroupID g);
+/* The guide's spelling. */
+#define MdtContactGrouptGetCount MdtContactGroupGetCount
+/* Sum of the normal forces of the group's contacts in the last step. */
+MEPUBLIC MeReal MEAPI MdtContactGroupGetNormalForce(const MdtContactGroupID g);
+
+ME_EXTERN_C_END
+
+#endif

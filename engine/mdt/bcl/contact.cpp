@@ -1,0 +1,238 @@
+// contact.cpp: the contact constraint.
+//
+// Rows, at the contact point p (body 0's attachment point) with normal n
+// (from body 1 into body 0), in this order:
+//   normal     n . (v0 + w0 x r0 - v1 - w1 x r1) >= speed, force in
+//              [-maxAdhesive, inf), speed = max(gamma * depth / h,
+//              restitution * impact speed when the bodies approach faster
+//              than velThreshold); softness = params.softness or epsilon;
+//   primary    along d1 (Friction1D and 2D), target speed slide1, softness
+//              slip1 / h (velocity = slip * force) or epsilon; force bound
+//              friction1 (Box) or frictionCoefficient1 * normal force
+//              (NormalForce, tied to the normal row);
+//   secondary  along d2 = n x d1 (Friction2D), likewise.
+#include <cmath>
+
+#include "contact_internal.h"
+
+using namespace karma::mdt;
+
+namespace karma::mdt {
+
+void resetContact(MdtContact *c) {
+  MdtContactParamsReset(&c->params);
+  MeVector3Set(c->normal, 0, 1, 0);
+  MeVector3Set(c->direction, 0, 0, 0);
+  c->directionSet = FALSE;
+  c->penetration = 0;
+  c->next = nullptr;
+  c->normalForce = 0;
+}
+
+void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2) {
+  bool ok = false;
+  if (c->directionSet) {
+    MeVector3Copy(d1, c->direction);
+    MeVector3MultiplyAdd(d1, -MeVector3Dot(d1, c->normal), c->normal);
+    ok = MeVector3Magnitude(d1) > (MeReal)1e-6;
+    if (ok) MeVector3Normalize(d1);
+  }
+  if (!ok) anyOrthogonal(c->normal, d1);
+  MeVector3Cross(d2, c->normal, d1);
+}
+
+namespace {
+
+void frictionRow(MdtContact *c, RowSink &sink, const StepContext &ctx, const Anchors &a,
+                 const MeVector3 d, int normalRow, MdtFrictionModel model, MeReal limit,
+                 MeReal coefficient, MeReal slip, MeReal slide) {
+  Row &row = addLinearRow(sink, ctx, a, d);
+  row.role = RowRole::ContactFriction;
+  row.contact = c;
+  row.depth = c->penetration;
+  row.speed = slide;
+  if (slip > 0) row.softness = slip * ctx.invH;
+  if (model == MdtFrictionModelNormalForce) {
+    row.friction = normalRow;
+    row.mu = coefficient;
+  } else {
+    row.lo = -limit;
+    row.hi = limit;
+  }
+}
+
+}  // namespace
+
+void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
+  Anchors a;
+  attachmentPoint(c, 0, a.p[0]);
+  MeVector3Copy(a.p[1], a.p[0]);
+  for (int i = 0; i < 2; ++i) {
+    MeVector3 x;
+    bodyOrigin(c, i, x);
+    MeVector3Subtract(a.r[i], a.p[i], x);
+  }
+  const MdtContactParams &prm = c->params;
+  const int normalRow = sink.count();
+  Row &n = addLinearRow(sink, ctx, a, c->normal);
+  n.role = RowRole::ContactNormal;
+  n.contact = c;
+  n.depth = c->penetration;
+  n.lo = prm.max_adhesive_force > 0 ? -prm.max_adhesive_force : 0;
+  n.hi = MEINFINITY;
+  if (prm.softness > 0) n.softness = prm.softness;
+  const MeReal vrel = rowVelocity(c, n);  // > 0: separating
+  const MeReal correct = ctx.gamma * ctx.invH * c->penetration;
+  const MeReal bounce =
+      (prm.restitution > 0 && vrel < -prm.velThreshold) ? -prm.restitution * vrel : 0;
+  n.speed = bounce > correct ? bounce : correct;
+  if (prm.type == MdtContactTypeFrictionZero) return;
+  MeVector3 d1, d2;
+  contactDirections(c, d1, d2);
+  frictionRow(c, sink, ctx, a, d1, normalRow, prm.model1, prm.friction1, prm.frictionCoefficient1,
+              prm.slip1, prm.slide1);
+  if (prm.type == MdtContactTypeFriction2D)
+    frictionRow(c, sink, ctx, a, d2, normalRow, prm.model2, prm.friction2,
+                prm.frictionCoefficient2, prm.slip2, prm.slide2);
+}
+
+}  // namespace karma::mdt
+
+namespace {
+
+void reset(MdtConstraint *c) { resetContact(as<MdtContact>(c)); }
+
+void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
+  addContactRows(as<MdtContact>(c), sink, ctx);
+}
+
+void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContext &ctx) {
+  as<MdtContact>(c)->normalForce = n > 0 ? impulse[0] * ctx.invH : 0;
+}
+
+void destroy(MdtConstraint *c) {
+  auto *contact = as<MdtContact>(c);
+  if (contact->owner) MdtContactGroupRemoveContact(static_cast<MdtContactGroup *>(contact->owner), contact);
+}
+
+}  // namespace
+
+namespace karma::mdt {
+extern const ConstraintType kContactType = {
+    MdtConstraintTypeContact, "Contact", sizeof(MdtContact), 3, nullptr, reset, addRows,
+    afterSolve, destroy};
+}
+
+MDT_DEFINE_CONSTRAINT_TYPE(Contact, kContactType)
+
+extern "C" {
+
+void MEAPI MdtContactSetNormal(const MdtContactID c, const MeReal x, const MeReal y,
+                               const MeReal z) {
+  static const char *fn = "MdtContactSetNormal";
+  if (!checkType(c, kContactType, fn)) return;
+  ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "normal is not finite; ignored");
+  MeVector3 n = {x, y, z};
+  const MeReal len = MeVector3Magnitude(n);
+  ME_REQUIRE_ARG(len > (MeReal)1e-6, fn, "normal has zero length; ignored");
+  MeVector3MultiplyScalar(c->normal, n, 1 / len);
+}
+
+void MEAPI MdtContactGetNormal(const MdtContactID c, MeVector3 normal) {
+  if (!checkType(c, kContactType, "MdtContactGetNormal")) return;
+  MeVector3Copy(normal, c->normal);
+}
+
+void MEAPI MdtContactSetDirection(const MdtContactID c, const MeReal x, const MeReal y,
+                                  const MeReal z) {
+  static const char *fn = "MdtContactSetDirection";
+  if (!checkType(c, kContactType, fn)) return;
+  ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "direction is not finite; ignored");
+  MeVector3 d = {x, y, z};
+  ME_REQUIRE_ARG(MeVector3Magnitude(d) > (MeReal)1e-6, fn, "direction has zero length; ignored");
+  MeVector3Normalize(d);
+  MeVector3Copy(c->direction, d);
+  c->directionSet = TRUE;
+}
+
+void MEAPI MdtContactGetDirection(const MdtContactID c, MeVector3 direction) {
+  if (!checkType(c, kContactType, "MdtContactGetDirection")) return;
+  MeVector3 d2;
+  contactDirections(c, direction, d2);
+}
+
+void MEAPI MdtContactSetPenetration(const MdtContactID c, const MeReal penetration) {
+  static const char *fn = "MdtContactSetPenetration";
+  if (!checkType(c, kContactType, fn)) return;
+  ME_REQUIRE_ARG(realFinite(penetration), fn, "penetration is not finite; ignored");
+  c->penetration = penetration;
+}
+
+MeReal MEAPI MdtContactGetPenetration(const MdtContactID c) {
+  if (!checkType(c, kContactType, "MdtContactGetPenetration")) return 0;
+  return c->penetration;
+}
+
+MdtContactParamsID MEAPI MdtContactGetParams(const MdtContactID c) {
+  if (!checkType(c, kContactType, "MdtContactGetParams")) return nullptr;
+  return &c->params;
+}
+
+void MEAPI MdtContactSetParams(const MdtContactID c, const MdtContactParamsID p) {
+  if (!checkType(c, kContactType, "MdtContactSetParams")) return;
+  ME_REQUIRE_ARG(p != nullptr, "MdtContactSetParams", "params is NULL");
+  c->params = *p;
+}
+
+MdtContactID MEAPI MdtContactGetNext(const MdtContactID c) {
+  if (!checkType(c, kContactType, "MdtContactGetNext")) return nullptr;
+  return c->next;
+}
+
+void MEAPI MdtContactSetNext(const MdtContactID c, const MdtContactID next) {
+  if (!checkType(c, kContactType, "MdtContactSetNext")) return;
+  c->next = next;
+}
+
+MeReal MEAPI MdtContactGetNormalForce(const MdtContactID c) {
+  if (!checkType(c, kContactType, "MdtContactGetNormalForce")) return 0;
+  return c->normalForce;
+}
+
+}  // extern "C"
+
+namespace {
+
+// Contacts touching `body` that are simulated: stand-alone and enabled, or
+// in an enabled group.
+bool touching(const MdtConstraint *con, const MdtBody *body) {
+  if (con->type != &kContactType) return false;
+  const bool live = con->owner ? con->owner->enabled : con->enabled;
+  return live && (con->body[0] == body || con->body[1] == body);
+}
+
+MdtContactID scanFrom(const MdtBodyID body, void *slot) {
+  MePool *pool = &body->world->priv->constraints;
+  for (void *s = MePoolGetNextUsed(pool, slot); s; s = MePoolGetNextUsed(pool, s)) {
+    auto *con = static_cast<MdtConstraint *>(s);
+    if (touching(con, body)) return static_cast<MdtContact *>(con);
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+extern "C" {
+
+MdtContactID MEAPI MdtBodyGetFirstContact(const MdtBodyID body) {
+  ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetFirstContact", "body is NULL");
+  return scanFrom(body, nullptr);
+}
+
+MdtContactID MEAPI MdtBodyGetNextContact(const MdtBodyID body, const MdtContactID c) {
+  ME_REQUIRE_ARG_RET(body != nullptr && c != nullptr, nullptr, "MdtBodyGetNextContact",
+                     "NULL argument");
+  return scanFrom(body, static_cast<MdtConstraint *>(c));
+}
+
+}  // extern "C"

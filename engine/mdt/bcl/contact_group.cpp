@@ -1,0 +1,147 @@
+// contact_group.cpp: contact groups -- every contact between one pair of
+// bodies, stepped as one constraint. The group's rows are its contacts'
+// rows in list order (contact.cpp); its contacts follow its bodies.
+#include "contact_internal.h"
+
+using namespace karma::mdt;
+
+namespace {
+
+void reset(MdtConstraint *c) {
+  auto *g = as<MdtContactGroup>(c);
+  g->normalForce = 0;
+  // Contacts stay in the group; their parameters are reset.
+  for (MdtContact *k = g->first; k; k = k->next) resetContact(k);
+}
+
+void syncBodies(MdtContactGroup *g, MdtContact *k) {
+  k->body[0] = g->body[0];
+  k->body[1] = g->body[1];
+}
+
+void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
+  auto *g = as<MdtContactGroup>(c);
+  for (MdtContact *k = g->first; k; k = k->next) {
+    syncBodies(g, k);
+    addContactRows(k, sink, ctx);
+  }
+}
+
+int rowCapacity(const MdtConstraint *c) { return 3 * as<MdtContactGroup>(c)->count; }
+
+void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContext &ctx) {
+  auto *g = as<MdtContactGroup>(c);
+  g->normalForce = 0;
+  // Walk the rows as addContactRows wrote them: a normal row, then 0-2
+  // friction rows (roles are not kept here, so recount from the params).
+  int r = 0;
+  for (MdtContact *k = g->first; k && r < n; k = k->next) {
+    k->normalForce = impulse[r] * ctx.invH;
+    g->normalForce += k->normalForce;
+    r += 1 + (int)k->params.type;  // FrictionZero 0, 1D 1, 2D 2 extra rows
+  }
+}
+
+void destroy(MdtConstraint *c) {
+  auto *g = as<MdtContactGroup>(c);
+  MdtContact *k = g->first;
+  g->first = nullptr;
+  g->count = 0;
+  while (k) {
+    MdtContact *next = k->next;
+    k->owner = nullptr;
+    MePoolPutStruct(&c->world->priv->constraints, k);
+    k = next;
+  }
+}
+
+}  // namespace
+
+namespace karma::mdt {
+extern const ConstraintType kContactGroupType = {
+    MdtConstraintTypeContactGroup, "ContactGroup", sizeof(MdtContactGroup), 0, rowCapacity,
+    reset, addRows, afterSolve, destroy};
+}
+
+MDT_DEFINE_CONSTRAINT_TYPE(ContactGroup, kContactGroupType)
+
+extern "C" {
+
+void MEAPI MdtContactGroupAppendContact(const MdtContactGroupID g, const MdtContactID c) {
+  static const char *fn = "MdtContactGroupAppendContact";
+  if (!checkType(g, kContactGroupType, fn) || !checkType(c, kContactType, fn)) return;
+  ME_REQUIRE_ARG(c->owner == nullptr, fn, "the contact already belongs to a group; ignored");
+  ME_REQUIRE_ARG(c->world == g->world, fn, "the contact belongs to another world; ignored");
+  c->enabled = FALSE;
+  c->owner = g;
+  c->next = nullptr;
+  syncBodies(g, c);
+  MdtContact **tail = &g->first;
+  while (*tail) tail = &(*tail)->next;
+  *tail = c;
+  ++g->count;
+  g->warmRows = 0;
+}
+
+MdtContactID MEAPI MdtContactGroupCreateContact(const MdtContactGroupID g) {
+  if (!checkType(g, kContactGroupType, "MdtContactGroupCreateContact")) return nullptr;
+  MdtContactID c = MdtContactCreate(g->world);
+  if (!c) return nullptr;
+  if (g->body[0]) {
+    c->body[0] = g->body[0];
+    c->body[1] = g->body[1];
+    attachDefault(c);
+  }
+  MdtContactGroupAppendContact(g, c);
+  return c;
+}
+
+void MEAPI MdtContactGroupRemoveContact(const MdtContactGroupID g, const MdtContactID c) {
+  static const char *fn = "MdtContactGroupRemoveContact";
+  if (!checkType(g, kContactGroupType, fn) || !checkType(c, kContactType, fn)) return;
+  ME_REQUIRE_ARG(c->owner == g, fn, "the contact is not in this group; ignored");
+  for (MdtContact **link = &g->first; *link; link = &(*link)->next) {
+    if (*link == c) {
+      *link = c->next;
+      break;
+    }
+  }
+  c->next = nullptr;
+  c->owner = nullptr;
+  c->enabled = FALSE;
+  --g->count;
+  g->warmRows = 0;
+}
+
+void MEAPI MdtContactGroupDestroyContact(const MdtContactGroupID g, const MdtContactID c) {
+  static const char *fn = "MdtContactGroupDestroyContact";
+  if (!checkType(g, kContactGroupType, fn) || !checkType(c, kContactType, fn)) return;
+  ME_REQUIRE_ARG(c->owner == g, fn, "the contact is not in this group; ignored");
+  MdtContactGroupRemoveContact(g, c);
+  MdtConstraintDestroy(c);
+}
+
+MdtContactID MEAPI MdtContactGroupGetFirstContact(const MdtContactGroupID g) {
+  if (!checkType(g, kContactGroupType, "MdtContactGroupGetFirstContact")) return nullptr;
+  return g->first;
+}
+
+MdtContactID MEAPI MdtContactGroupGetNextContact(const MdtContactGroupID g,
+                                                 const MdtContactID c) {
+  static const char *fn = "MdtContactGroupGetNextContact";
+  if (!checkType(g, kContactGroupType, fn) || !checkType(c, kContactType, fn)) return nullptr;
+  ME_REQUIRE_ARG_RET(c->owner == g, nullptr, fn, "the contact is not in this group");
+  return c->next;
+}
+
+int MEAPI MdtContactGroupGetCount(const MdtContactGroupID g) {
+  if (!checkType(g, kContactGroupType, "MdtContactGroupGetCount")) return 0;
+  return g->count;
+}
+
+MeReal MEAPI MdtContactGroupGetNormalForce(const MdtContactGroupID g) {
+  if (!checkType(g, kContactGroupType, "MdtContactGroupGetNormalForce")) return 0;
+  return g->normalForce;
+}
+
+}  // extern "C"

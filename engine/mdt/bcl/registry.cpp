@@ -1,0 +1,25 @@
+// registry.cpp: the list of every constraint type, for names and for the
+// size of the world's constraint slots (the largest type).
+#include "constraint.h"
+
+namespace karma::mdt {
+
+extern const ConstraintType kBSJointType;
+extern const ConstraintType kHingeType;
+extern const ConstraintType kContactType;
+extern const ConstraintType kContactGroupType;
+
+const ConstraintType *const *allConstraintTypes() {
+  static const ConstraintType *const all[] = {
+      &kBSJointType, &kHingeType, &kContactType, &kContactGroupType, nullptr};
+  return all;
+}
+
+unsigned largestConstraintSize() {
+  unsigned size = 0;
+  for (const ConstraintType *const *t = allConstraintTypes(); *t; ++t)
+    if ((*t)->size > size) size = (*t)->size;
+  return size;
+}
+
+}  // namespace karma::mdt

@@ -1,0 +1,207 @@
+// constraint.cpp: allocation, life cycle and type checks of constraints, and
+// the row sink.
+#include <algorithm>
+#include <cstring>
+#include <new>
+
+#include "MeMessage.h"
+#include "constraint.h"
+
+namespace karma::mdt {
+
+Row &RowSink::add(const StepContext &ctx) {
+  Row *r = &spare_;
+  if (count_ < capacity_) {
+    r = &rows_[count_++];
+  } else {
+    overflow_ = true;  // a type wrote more rows than it declared: a bug
+  }
+  *r = Row{};
+  r->softness = ctx.epsilon;
+  r->lo = -MEINFINITY;
+  r->hi = MEINFINITY;
+  r->friction = -1;
+  r->role = RowRole::Joint;
+  return *r;
+}
+
+void resetBase(MdtConstraint *c) {
+  c->body[0] = c->body[1] = nullptr;
+  for (int i = 0; i < 2; ++i) {
+    MeVector3Set(c->localPos[i], 0, 0, 0);
+    MeVector3Set(c->localAxis[i], 1, 0, 0);
+    MeVector3Set(c->localOrtho[i], 0, 1, 0);
+    MeVector3Set(c->force[i], 0, 0, 0);
+    MeVector3Set(c->torque[i], 0, 0, 0);
+  }
+  c->warmRows = 0;
+}
+
+MdtConstraint *createConstraint(MdtWorldID world, const ConstraintType &type) {
+  MdtWorldPrivate *p = world->priv;
+  void *slot = MePoolGetStruct(&p->constraints);
+  if (!slot) return nullptr;  // the pool has warned once
+  std::memset(slot, 0, p->constraintSlotSize);
+  auto *c = static_cast<MdtConstraint *>(slot);
+  c->type = &type;
+  c->world = world;
+  c->serial = p->nextConstraintSerial++;
+  resetBase(c);
+  type.reset(c);
+  return c;
+}
+
+void attachDefault(MdtConstraint *c) {
+  // Both points at body 0's origin, the world's x and y as the axes.
+  const MeVector3 x = {1, 0, 0}, y = {0, 1, 0};
+  MeVector3 p = {0, 0, 0};
+  if (c->body[0]) MeVector3Copy(p, c->body[0]->position);
+  for (int i = 0; i < 2; ++i) pointToBodyFrame(c, i, p, c->localPos[i]);
+  setWorldAxes(c, x, y);
+}
+
+MdtConstraint *castTo(MdtConstraint *c, const ConstraintType &type) {
+  return (c && c->type == &type) ? c : nullptr;
+}
+
+bool checkType(const MdtConstraint *c, const ConstraintType &type, const char *fn) {
+  if (!c) {
+    MeWarning(0, "%s: constraint is NULL; ignored", fn);
+    return false;
+  }
+  if (c->type != &type) {
+    MeWarning(0, "%s: constraint is a %s, not a %s; ignored", fn, c->type->name, type.name);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace karma::mdt
+
+using namespace karma::mdt;
+
+namespace {
+
+bool bodyValid(unsigned i, const char *fn) {
+  if (i > 1) {
+    MeWarning(0, "%s: body index %u is not 0 or 1; ignored", fn, i);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+extern "C" {
+
+MdtConstraintType MEAPI MdtConstraintGetType(const MdtConstraintID c) {
+  ME_REQUIRE_ARG_RET(c != nullptr, MdtConstraintTypeCount, "MdtConstraintGetType",
+                     "constraint is NULL");
+  return c->type->id;
+}
+
+const char *MEAPI MdtConstraintTypeName(const MdtConstraintType t) {
+  const ConstraintType *const *all = allConstraintTypes();
+  for (int i = 0; all[i]; ++i)
+    if (all[i]->id == t) return all[i]->name;
+  return "unknown";
+}
+
+void MEAPI MdtConstraintDestroy(const MdtConstraintID c) {
+  if (!c) return;
+  if (c->type->destroy) c->type->destroy(c);
+  MePoolPutStruct(&c->world->priv->constraints, c);
+}
+
+void MEAPI MdtConstraintEnable(const MdtConstraintID c) {
+  static const char *fn = "MdtConstraintEnable";
+  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  ME_REQUIRE_ARG(c->owner == nullptr, fn,
+                 "this contact belongs to a contact group, which is enabled instead; ignored");
+  if (c->type->id != MdtConstraintTypeContactGroup) {
+    ME_REQUIRE_ARG(c->body[0] != nullptr, fn, "%s has no bodies; set them before enabling",
+                   c->type->name);
+  }
+  c->enabled = TRUE;
+}
+
+void MEAPI MdtConstraintDisable(const MdtConstraintID c) {
+  ME_REQUIRE_ARG(c != nullptr, "MdtConstraintDisable", "constraint is NULL");
+  c->enabled = FALSE;
+}
+
+MeBool MEAPI MdtConstraintIsEnabled(const MdtConstraintID c) {
+  ME_REQUIRE_ARG_RET(c != nullptr, FALSE, "MdtConstraintIsEnabled", "constraint is NULL");
+  return c->enabled ? TRUE : FALSE;
+}
+
+void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0,
+                                  const MdtBodyID body1) {
+  static const char *fn = "MdtConstraintSetBodies";
+  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  ME_REQUIRE_ARG(!c->enabled, fn, "the %s is enabled; disable it before changing its bodies",
+                 c->type->name);
+  ME_REQUIRE_ARG(body0 != nullptr, fn, "body0 is NULL (only body1 may be the world)");
+  ME_REQUIRE_ARG(body0 != body1, fn, "body0 and body1 are the same body");
+  ME_REQUIRE_ARG(body0->world == c->world && (!body1 || body1->world == c->world), fn,
+                 "a body belongs to another world");
+  c->body[0] = body0;
+  c->body[1] = body1;
+  attachDefault(c);
+  c->warmRows = 0;
+}
+
+MdtBodyID MEAPI MdtConstraintGetBody(const MdtConstraintID c, const unsigned int i) {
+  ME_REQUIRE_ARG_RET(c != nullptr, nullptr, "MdtConstraintGetBody", "constraint is NULL");
+  if (!bodyValid(i, "MdtConstraintGetBody")) return nullptr;
+  return c->body[i];
+}
+
+void MEAPI MdtConstraintGetForce(const MdtConstraintID c, const unsigned int i, MeVector3 f) {
+  ME_REQUIRE_ARG(c != nullptr && f != nullptr, "MdtConstraintGetForce", "NULL argument");
+  if (!bodyValid(i, "MdtConstraintGetForce")) return;
+  MeVector3Copy(f, c->force[i]);
+}
+
+void MEAPI MdtConstraintGetTorque(const MdtConstraintID c, const unsigned int i, MeVector3 t) {
+  ME_REQUIRE_ARG(c != nullptr && t != nullptr, "MdtConstraintGetTorque", "NULL argument");
+  if (!bodyValid(i, "MdtConstraintGetTorque")) return;
+  MeVector3Copy(t, c->torque[i]);
+}
+
+MdtWorldID MEAPI MdtConstraintGetWorld(const MdtConstraintID c) {
+  ME_REQUIRE_ARG_RET(c != nullptr, nullptr, "MdtConstraintGetWorld", "constraint is NULL");
+  return c->world;
+}
+
+void MEAPI MdtConstraintSetUserData(const MdtConstraintID c, void *data) {
+  ME_REQUIRE_ARG(c != nullptr, "MdtConstraintSetUserData", "constraint is NULL");
+  c->userData = data;
+}
+
+void *MEAPI MdtConstraintGetUserData(const MdtConstraintID c) {
+  ME_REQUIRE_ARG_RET(c != nullptr, nullptr, "MdtConstraintGetUserData", "constraint is NULL");
+  return c->userData;
+}
+
+void MEAPI MdtConstraintSetSortKey(const MdtConstraintID c, const MeI32 key) {
+  ME_REQUIRE_ARG(c != nullptr, "MdtConstraintSetSortKey", "constraint is NULL");
+  c->sortKey = key;
+}
+
+MeI32 MEAPI MdtConstraintGetSortKey(const MdtConstraintID c) {
+  ME_REQUIRE_ARG_RET(c != nullptr, 0, "MdtConstraintGetSortKey", "constraint is NULL");
+  return c->sortKey;
+}
+
+unsigned int MEAPI MdtWorldGetConstraintCount(const MdtWorldID world) {
+  ME_REQUIRE_ARG_RET(world != nullptr, 0u, "MdtWorldGetConstraintCount", "world is NULL");
+  return (unsigned int)MePoolGetUsed(&world->priv->constraints);
+}
+
+unsigned int MEAPI MdtWorldGetMaxConstraints(const MdtWorldID world) {
+  ME_REQUIRE_ARG_RET(world != nullptr, 0u, "MdtWorldGetMaxConstraints", "world is NULL");
+  return world->priv->maxConstraints;
+}
+
+}  // extern "C"
