@@ -20,12 +20,14 @@ bool accumulate(MeVector3 acc, const MeVector3 v) {
   return true;
 }
 
-// Linear and angular part of v applied at world point p: r = p - position.
+// Linear and angular part of v applied at world point p: r = p - centre of mass.
 bool accumulateAt(MdtBody *b, MeVector3 lin, MeVector3 ang, const MeVector3 v,
                   const MeVector3 p) {
   if (!MeVector3AllFinite(v) || !MeVector3AllFinite(p)) return false;
   MeVector3 r, m, newLin, newAng;
-  MeVector3Subtract(r, p, b->position);
+  MeVector3 com;
+  bodyCom(b, com);
+  MeVector3Subtract(r, p, com);
   MeVector3Cross(m, r, v);
   MeVector3Add(newLin, lin, v);
   MeVector3Add(newAng, ang, m);

@@ -17,12 +17,10 @@ void initBody(MdtBody *b, MdtWorldID world) {
   MeQuaternionMakeIdentity(b->q);
   b->mass = m;
   b->invMass = (MeReal)1 / m;
-  MeMatrix3MakeIdentity(b->inertia);
-  MeMatrix3MakeIdentity(b->invInertia);
-  for (int k = 0; k < 3; ++k) {
-    b->inertia[k][k] = i;
-    b->invInertia[k][k] = (MeReal)1 / i;
-  }
+  MeMatrix3MakeIdentity(b->inertiaCom);
+  for (int k = 0; k < 3; ++k) b->inertiaCom[k][k] = i;
+  MeMatrix4TMMakeIdentity(b->comTM);
+  updateInertia(b);
   MeVector3Set(b->fastSpinAxis, 0, 1, 0);
   b->fastSpinEnabled = FALSE;
   b->enabled = FALSE;

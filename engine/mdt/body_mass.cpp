@@ -51,13 +51,13 @@ void MEAPI MdtBodySetInertiaTensor(const MdtBodyID body, MECONSTMATRIX MeMatrix3
                  (double)S[0][0], (double)minor2, (double)det);
   MeMatrix3 inv;
   ME_REQUIRE_ARG(MeMatrix3Inverse(inv, S), fn, "tensor is singular; ignored");
-  MeMatrix3Copy(body->inertia, S);
-  MeMatrix3Copy(body->invInertia, inv);
+  MeMatrix3Copy(body->inertiaCom, S);
+  updateInertia(body);
 }
 
 void MEAPI MdtBodyGetInertiaTensor(const MdtBodyID body, MeMatrix3 I) {
   ME_REQUIRE_ARG(body != nullptr && I != nullptr, "MdtBodyGetInertiaTensor", "NULL argument");
-  MeMatrix3Copy(I, body->inertia);
+  MeMatrix3Copy(I, body->inertiaCom);
 }
 
 void MEAPI MdtBodySetLinearVelocityDamping(const MdtBodyID body, const MeReal d) {

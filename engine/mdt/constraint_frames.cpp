@@ -66,7 +66,7 @@ void anyOrthogonal(const MeVector3 n, MeVector3 out) {
 
 void bodyOrigin(const MdtConstraint *c, int i, MeVector3 out) {
   if (c->body[i])
-    MeVector3Copy(out, c->body[i]->position);
+    bodyCom(c->body[i], out);
   else
     MeVector3Set(out, 0, 0, 0);
 }
@@ -77,8 +77,9 @@ void pointVelocity(const MdtConstraint *c, int i, const MeVector3 p, MeVector3 o
     MeVector3Set(out, 0, 0, 0);
     return;
   }
-  MeVector3 r, wr;
-  MeVector3Subtract(r, p, b->position);
+  MeVector3 r, wr, com;
+  bodyCom(b, com);
+  MeVector3Subtract(r, p, com);
   MeVector3Cross(wr, b->angularVelocity, r);
   MeVector3Add(out, b->velocity, wr);
 }

@@ -81,9 +81,10 @@ void advanceBody(MdtBody *b, MeReal h) {
   MeVector3Copy(v1, b->vPred);
   MeVector3Copy(w1, b->wPred);
 
-  // Position and orientation from the new velocities.
+  // Centre of mass and orientation from the new velocities; the body
+  // origin follows the centre of mass: x = com - R c.
   MeVector3 x1;
-  MeVector3Copy(x1, b->position);
+  bodyCom(b, x1);
   MeVector3MultiplyAdd(x1, h, v1);
   MeVector4 q1;
   MeVector4Copy(q1, b->q);
@@ -97,6 +98,12 @@ void advanceBody(MdtBody *b, MeReal h) {
     MeQuaternionFiniteRotation(q1, w1, h);
   }
 
+  {
+    MeVector3 c, rc;
+    MeMatrix4TMGetPosition(c, b->comTM);
+    MeQuaternionRotateVector(rc, q1, c);
+    MeVector3Subtract(x1, x1, rc);
+  }
   const bool ok = MeVector3AllFinite(v1) && MeVector3AllFinite(w1) && MeVector3AllFinite(x1) &&
                   std::isfinite(q1[0]) && std::isfinite(q1[1]) && std::isfinite(q1[2]) &&
                   std::isfinite(q1[3]);

@@ -28,8 +28,10 @@ struct MdtBody {
   MeVector3 angularImpulse;
   MeReal mass;
   MeReal invMass;
-  MeMatrix3 inertia;     // body frame, symmetric positive definite
-  MeMatrix3 invInertia;  // body frame
+  MeMatrix3 inertia;     // about the centre of mass, body axes, symmetric positive definite
+  MeMatrix3 invInertia;  // body axes
+  MeMatrix3 inertiaCom;  // as the user gave it: about the centre of mass, COM frame axes
+  MeMatrix4 comTM;       // centre-of-mass frame relative to the body frame
   MeReal linearDamping;
   MeReal angularDamping;
   MeVector3 fastSpinAxis;
@@ -76,6 +78,10 @@ inline bool realFinite3(MeReal a, MeReal b, MeReal c) {
 
 // Rebuilds b->tm from b->q and b->position.
 void updateTransform(MdtBody *b);
+// World position of the centre of mass (the body origin when not offset).
+void bodyCom(const MdtBody *b, MeVector3 out);
+// Recomputes inertia / invInertia (body axes) from inertiaCom and comTM.
+void updateInertia(MdtBody *b);
 // Sets the default state of a freshly handed-out body.
 void initBody(MdtBody *b, MdtWorldID world);
 // The step of one body, in three stages:

@@ -75,10 +75,27 @@ MEPUBLIC void MEAPI MdtBodyGetAngularAcceleration(const MdtBodyID body, MeVector
 /* mass > 0 and finite. Does not change the inertia tensor. */
 MEPUBLIC void MEAPI MdtBodySetMass(const MdtBodyID body, const MeReal mass);
 MEPUBLIC MeReal MEAPI MdtBodyGetMass(const MdtBodyID body);
-/* Full 3x3 tensor about the dynamics origin, in the body frame; must be
- * symmetric and positive definite. */
+/* Full 3x3 tensor about the centre of mass, in the centre-of-mass frame
+ * (the body frame unless a relative transform with a rotation is set); must
+ * be symmetric and positive definite. */
 MEPUBLIC void MEAPI MdtBodySetInertiaTensor(const MdtBodyID body, MECONSTMATRIX MeMatrix3 I);
 MEPUBLIC void MEAPI MdtBodyGetInertiaTensor(const MdtBodyID body, MeMatrix3 I);
+
+/* Centre of mass relative to the body frame (default: at the origin, same
+ * axes). The body's position and TM stay those of its body frame (what
+ * models and graphics follow); the dynamics turns the body about its centre
+ * of mass. The inertia tensor is about the centre of mass, in the axes of
+ * this transform. Linear velocity is the centre of mass's; MdtBodyAddForce
+ * acts through the centre of mass, and lever arms (AtPosition, joints,
+ * contacts) are measured from it. */
+MEPUBLIC void MEAPI MdtBodySetCenterOfMassRelativeTransform(const MdtBodyID body,
+                                                          MECONSTMATRIX MeMatrix4 tm);
+MEPUBLIC void MEAPI MdtBodyGetCenterOfMassRelativeTransform(const MdtBodyID body, MeMatrix4 tm);
+MEPUBLIC void MEAPI MdtBodySetCenterOfMassRelativePosition(const MdtBodyID body,
+                                                         const MeVector3 pos);
+MEPUBLIC void MEAPI MdtBodyGetCenterOfMassRelativePosition(const MdtBodyID body, MeVector3 pos);
+/* World position of the centre of mass. */
+MEPUBLIC void MEAPI MdtBodyGetCenterOfMassPosition(const MdtBodyID body, MeVector3 pos);
 
 /* Velocity damping: a drag force -d v (linear) and torque -d w (angular)
  * added in every step; d >= 0 and finite. */
