@@ -119,7 +119,17 @@ void advanceBody(MdtBody *b, MeReal h) {
     MeVector4Copy(b->q, q1);
     updateTransform(b);
   } else {
-    MeWarning(0, "MdtWorldStep: the state of body %p overflowed; it was left as it was", (void *)b);
+    // A defined outcome for a blow-up: the body keeps its last finite pose,
+    // comes to rest and is disabled; the world keeps stepping.
+    MeWarning(0,
+              "MdtWorldStep: the state of body %p overflowed (non-finite velocity or pose); "
+              "it was stopped and disabled at its last finite pose",
+              (void *)b);
+    MeVector3Set(b->velocity, 0, 0, 0);
+    MeVector3Set(b->angularVelocity, 0, 0, 0);
+    MeVector3Set(b->acceleration, 0, 0, 0);
+    MeVector3Set(b->angularAcceleration, 0, 0, 0);
+    MdtBodyDisable(b);
   }
 
   // The accumulators hold what was applied over this step only.
