@@ -22,6 +22,15 @@
 
 namespace karma::mdt {
 
+namespace {
+bool MeMatrix3IsZero3(MECONSTMATRIX MeMatrix3 m) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (m[i][j] != 0) return false;
+  return true;
+}
+}  // namespace
+
 void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor,
                      const MeVector3 v) {
   MeMatrix3 R;
@@ -59,12 +68,25 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
   applyBodyTensor(dw, b, b->invInertia, tmp);
   MeVector3Add(b->wPred, b->angularVelocity, dw);
 
-  // World-frame inverse inertia R^T Ib^-1 R, column by column.
+  // World-frame inverse inertia for the constraint response:
+  // (R^T Ib R + h^2 K)^-1, with K the body's geometric stiffness (zero
+  // unless the step's stabilisation filled it; see stabilize.cpp).
+  MeMatrix3 Iw;
   for (int k = 0; k < 3; ++k) {
     MeVector3 e = {0, 0, 0}, col;
     e[k] = 1;
-    applyBodyTensor(col, b, b->invInertia, e);
-    for (int r = 0; r < 3; ++r) b->invInertiaWorld[r][k] = col[r];
+    applyBodyTensor(col, b, b->inertia, e);
+    for (int r = 0; r < 3; ++r) Iw[r][k] = col[r] + h * h * b->geomStiffness[r][k];
+  }
+  if (MeMatrix3IsZero3(b->geomStiffness)) {
+    for (int k = 0; k < 3; ++k) {
+      MeVector3 e = {0, 0, 0}, col;
+      e[k] = 1;
+      applyBodyTensor(col, b, b->invInertia, e);
+      for (int r = 0; r < 3; ++r) b->invInertiaWorld[r][k] = col[r];
+    }
+  } else if (!MeMatrix3Inverse(b->invInertiaWorld, Iw)) {
+    MeMatrix3MakeIdentity(b->invInertiaWorld);  // unreachable: Iw is positive definite
   }
 }
 

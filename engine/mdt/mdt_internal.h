@@ -46,6 +46,7 @@ struct MdtBody {
   MeVector3 vPred;
   MeVector3 wPred;
   MeMatrix3 invInertiaWorld;
+  MeMatrix3 geomStiffness;  // world frame, from last step's constraint forces
   int index;
   int mark;
 };

@@ -34,6 +34,7 @@ void solvePartition(MdtWorldID world, StepScratch &s, const Partition &part,
                     const StepContext &ctx) {
   MdtWorldPrivate *p = world->priv;
   const MdtWorldParams &params = world->params;
+  accumulateGeometricStiffness(world, s, part);
   for (int i = 0; i < part.bodyCount; ++i) {
     MdtBody *b = s.partBodies[(size_t)(part.bodyStart + i)];
     b->index = i;

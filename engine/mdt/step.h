@@ -53,6 +53,9 @@ void buildPartitions(MdtWorldID world, StepScratch &s);
 // rest time from its new velocities and accelerations; true if the whole
 // partition has rested for the alive window and was put to sleep.
 bool autoDisablePartition(MdtWorldID world, StepScratch &s, const Partition &p, MeReal h);
+// Fills each body's geometric stiffness from last step's constraint forces
+// (stabilize.cpp); called before the velocities are predicted.
+void accumulateGeometricStiffness(MdtWorldID world, StepScratch &s, const Partition &p);
 // Stage 4 and 5 for one partition.
 void solvePartition(MdtWorldID world, StepScratch &s, const Partition &p, const StepContext &ctx);
 // Matrix capping: clears keep[] of the rows to drop so that at most

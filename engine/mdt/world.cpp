@@ -27,6 +27,7 @@ void setDefaultParams(MdtWorldParams &p, MeReal l, MeReal m) {
   p.keaMethod = MdtKeaMethodActiveSet;
   p.keaMaxIterations = 0;
   p.keaTolerance = 0;
+  p.geometricStiffness = 1;
 }
 
 }  // namespace

@@ -114,6 +114,11 @@ void MEAPI MdtWorldSetKeaMaxIterations(const MdtWorldID world, const int n) {
   world->params.keaMaxIterations = n;
 }
 
+void MEAPI MdtWorldSetGeometricStiffness(const MdtWorldID world, const MeReal factor) {
+  setNonNegative(world, factor, &MdtWorldParams::geometricStiffness,
+                 "MdtWorldSetGeometricStiffness");
+}
+
 void MEAPI MdtWorldSetKeaTolerance(const MdtWorldID world, const MeReal tol) {
   setNonNegative(world, tol, &MdtWorldParams::keaTolerance, "MdtWorldSetKeaTolerance");
 }

@@ -36,6 +36,7 @@ typedef struct MdtBody *MdtBodyID;
  *   keaMethod                        MdtKeaMethodActiveSet
  *   keaMaxIterations                 0 = Kea's default
  *   keaTolerance                     0 = Kea's default
+ *   geometricStiffness               1 (0 = off)
  *
  * epsilon is added to the diagonal of the constraint matrix: every rigid
  * constraint row gives way by epsilon times its impulse. gamma is the
@@ -63,6 +64,7 @@ typedef struct MdtWorldParams {
     MdtKeaMethod keaMethod;
     int keaMaxIterations;
     MeReal keaTolerance;
+    MeReal geometricStiffness;
 } MdtWorldParams;
 
 /* What the last MdtWorldStep did. */
@@ -146,6 +148,15 @@ struct MdtContact;
 typedef MeReal(MEAPI *MdtContactImportanceCBPtr)(struct MdtContact *contact);
 MEPUBLIC void MEAPI MdtWorldSetContactImportanceCB(const MdtWorldID world,
                                                    MdtContactImportanceCBPtr cb);
+
+/* Stabilisation of light bodies between large constraint forces (a light
+ * link holding a heavy load): the constraint response sees each body's
+ * inertia increased by h^2 times its geometric stiffness, factor times
+ * |force| |lever| from last step's constraint forces, for turns that move
+ * an attachment point. It damps the fast link modes that otherwise make
+ * large mass ratios unstable, and leaves bodies driven through their centre
+ * of mass (wheels on axles) untouched. factor >= 0; 0 switches it off. */
+MEPUBLIC void MEAPI MdtWorldSetGeometricStiffness(const MdtWorldID world, const MeReal factor);
 
 /* Solver knobs (see kea_lcp.h's contract): the method, its iteration cap
  * (0 = default) and relative tolerance (0 = default). */
