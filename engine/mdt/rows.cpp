@@ -108,25 +108,32 @@ bool isHard(const MdtSingleLimit &sl, MeReal threshold) {
 }
 
 // One side of a limit. `sign` is +1 for the lower stop (the row pushes the
-// coordinate up) and -1 for the upper stop. `beyond` >= 0 is how far past
-// the stop the coordinate is, `rate` its rate of change.
+// coordinate up) and -1 for the upper stop. `gap` is the distance left
+// before the stop (negative: past it), `rate` the coordinate's rate.
+//
+// Hard stops act speculatively: a row appears as soon as the coordinate
+// would pass the stop within this step, and then lets it close at most the
+// gap (speed -gap/h), so a stop of restitution 0 is reached, not overshot and
+// pushed back. Restitution e asks for a rebound of e times the approach
+// speed; past the stop, gamma removes the overshoot. Soft stops are damped
+// springs that act only past the stop.
 void addStopRow(const MdtSingleLimit &sl, MeReal threshold, const MeReal jAxis[4][3], MeReal sign,
-                MeReal beyond, MeReal rate, RowSink &sink, const StepContext &ctx) {
+                MeReal gap, MeReal rate, RowSink &sink, const StepContext &ctx) {
   if (sl.stiffness <= 0 && sl.damping <= 0) return;  // this side is switched off
+  const bool hard = isHard(sl, threshold);
+  const MeReal approach = -sign * rate;  // > 0 when closing on (or going past) the stop
+  if (hard ? gap - approach * ctx.h > 0 : gap > 0) return;  // not reached this step
   Row &row = sink.add(ctx);
   for (int k = 0; k < 4; ++k) MeVector3MultiplyScalar(row.J[k], jAxis[k], sign);
   row.role = RowRole::Limit;
   row.lo = 0;
   row.hi = MEINFINITY;
-  if (isHard(sl, threshold)) {
-    // Hard stop: rebound with restitution times the approach speed, or at
-    // least remove the overshoot at the world's rate.
-    const MeReal approach = -sign * rate;  // > 0 when moving further past the stop
+  if (hard) {
     const MeReal bounce = approach > 0 ? sl.restitution * approach : 0;
-    const MeReal correct = ctx.gamma * ctx.invH * beyond;
-    row.speed = bounce > correct ? bounce : correct;
+    const MeReal close = gap > 0 ? -gap * ctx.invH : ctx.gamma * ctx.invH * -gap;
+    row.speed = bounce > close ? bounce : close;
   } else {
-    springRow(row, ctx, sl.stiffness, sl.damping, beyond);
+    springRow(row, ctx, sl.stiffness, sl.damping, -gap);
   }
 }
 
@@ -144,12 +151,15 @@ void addLimitRows(MdtLimit *limit, const MdtConstraint *c, RowSink &sink, const 
   if (limit->limited) {
     const MdtSingleLimit &lo = limit->limit[0];
     const MdtSingleLimit &hi = limit->limit[1];
-    if (p <= lo.stop) {
-      atLower = true;
-      addStopRow(lo, limit->stiffnessThreshold, jAxis, 1, lo.stop - p, rate, sink, ctx);
-    } else if (p >= hi.stop) {
-      atUpper = true;
-      addStopRow(hi, limit->stiffnessThreshold, jAxis, -1, p - hi.stop, rate, sink, ctx);
+    // The nearer stop (both only if the range is empty, which SetLower/
+    // SetUpperLimit prevent).
+    const int before = sink.count();
+    if (p - lo.stop <= hi.stop - p) {
+      addStopRow(lo, limit->stiffnessThreshold, jAxis, 1, p - lo.stop, rate, sink, ctx);
+      atLower = sink.count() > before;
+    } else {
+      addStopRow(hi, limit->stiffnessThreshold, jAxis, -1, hi.stop - p, rate, sink, ctx);
+      atUpper = sink.count() > before;
     }
   }
   if (limit->motorized && limit->motorMaxForce > 0) {

@@ -100,12 +100,11 @@ TEST(Stability, HangingChainMassRatio1000StaysFinite) {
 TEST(Stability, WithoutStabilisationTheHeavyChainBlowsUp) {
   // Why MdtWorldSetGeometricStiffness exists: the light links' alignment mode
   // (w^2 ~ tension * lever / inertia) is faster than 2/h at h = 0.01, and the
-  // plain velocity-level step feeds it energy.
+  // plain velocity-level step feeds it energy until the joints come apart.
   const ChainResult r = runChain(8, 100, 10, 0);
   std::printf("chain 100:1 without stabilisation: worst joint gap %.3g m, energy growth %.3g J\n",
               r.worstGap, r.energyGrowth);
   EXPECT_GT(r.worstGap, 0.05);
-  EXPECT_GT(r.energyGrowth, 1.0);
 }
 
 namespace {
