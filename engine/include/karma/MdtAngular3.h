@@ -23,7 +23,8 @@ ME_EXTERN_C_BEGIN
 MDT_CONSTRAINT_TYPE_DECL(Angular3, MdtAngular3ID)
 MDT_CONSTRAINT_COMMON_API(Angular3, MdtAngular3ID)
 
-/* TRUE frees rotation about the axis (Angular2); FALSE locks it again. */
+/* TRUE frees rotation about the axis (Angular2); FALSE locks it again, at
+ * the turn about the axis the bodies have then (no snapping back). */
 MEPUBLIC void MEAPI MdtAngular3EnableRotation(const MdtAngular3ID j, const MeBool on);
 MEPUBLIC MeBool MEAPI MdtAngular3RotationIsEnabled(const MdtAngular3ID j);
 /* The axis of the free rotation, world coordinates (normalised; zero or

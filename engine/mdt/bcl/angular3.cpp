@@ -48,6 +48,19 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
   }
 }
 
+// Locking the axis again holds the present turn about it: body 1's secondary
+// axis is moved onto body 0's (projected normal to body 1's primary axis), so
+// the joint does not snap back through the turn made while it was free.
+void relockTwist(MdtConstraint *c) {
+  MeVector3 a1, o0;
+  attachmentAxis(c, 1, a1);
+  attachmentOrtho(c, 0, o0);
+  MeVector3MultiplyAdd(o0, -MeVector3Dot(o0, a1), a1);
+  if (MeVector3Magnitude(o0) < (MeReal)1e-3) return;
+  MeVector3Normalize(o0);
+  toBodyFrame(c, 1, o0, c->localOrtho[1]);
+}
+
 }  // namespace
 
 namespace karma::mdt {
@@ -62,6 +75,7 @@ extern "C" {
 
 void MEAPI MdtAngular3EnableRotation(const MdtAngular3ID j, const MeBool on) {
   if (!checkType(j, kAngular3Type, "MdtAngular3EnableRotation")) return;
+  if (j->rotationEnabled && !on) relockTwist(j);
   j->rotationEnabled = on ? TRUE : FALSE;
   j->warmRows = 0;
 }

@@ -4,7 +4,7 @@
 // theta = angle(a0, a1) in [0, pi], alpha the cone half-angle. With
 // n = (a1 x a0) / |a1 x a0|, d(theta)/dt = n . (w0 - w1).
 //
-// Rows: none while the cone is clear, else one angular row about -n
+// Rows: none while the cone is clear or alpha = pi, else one angular row about -n
 // (J v = -d(theta)/dt), force bounds [0, inf):
 //   hard (stiffness MEINFINITY): written when theta + h * d(theta)/dt >=
 //        alpha, i.e. when the axis reaches the cone within this step. Speed
@@ -38,7 +38,8 @@ void reset(MdtConstraint *c) {
 
 void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
   auto *j = as<MdtConeLimit>(c);
-  if (isInert(j->stiffness, j->damping)) return;
+  // A half-angle of pi is no limit (the angle never exceeds it).
+  if (isInert(j->stiffness, j->damping) || j->halfAngle >= (MeReal)ME_PI) return;
   MeVector3 a0, a1, n;
   attachmentAxis(c, 0, a0);
   attachmentAxis(c, 1, a1);
