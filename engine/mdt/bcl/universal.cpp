@@ -102,6 +102,11 @@ void MEAPI MdtUniversalSetAxes(const MdtUniversalID j, const unsigned int bodyin
   MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
   if (!unitDirection(p, fn, "the primary axis") || !unitDirection(o, fn, "the secondary axis"))
     return;
+  const MeReal cosine = MeVector3Dot(p, o);
+  if (std::fabs(cosine) > (MeReal)1e-3) {
+    MeWarning(0, "%s: the axes are not orthogonal (cosine %g); ignored", fn, (double)cosine);
+    return;
+  }
   MdtConstraintBodySetAxes(j, bodyindex, p[0], p[1], p[2], o[0], o[1], o[2]);
   j->warmRows = 0;
 }

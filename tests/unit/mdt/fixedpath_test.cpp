@@ -85,3 +85,23 @@ TEST(FixedPath, PointMovingWithinTheBody) {
   EXPECT_NEAR(x[0], -0.4, 2e-3);
   EXPECT_LT(anchorGap(MdtFixedPathQuaConstraint(j)), 1e-3);
 }
+
+TEST(FixedPath, FeedsBackTheWeightItCarries) {
+  // A 2 kg body hanging at rest from a stationary path point: the joint's
+  // force on it is m g upwards.
+  World w;
+  MdtWorldSetGravity(w, 0, -(MeReal)kG, 0);
+  MdtWorldSetAutoDisable(w, FALSE);
+  MdtBodyID b = makeBody(w, 0, -1, 0);
+  MdtBodySetMass(b, 2);
+  MdtFixedPathID j = MdtFixedPathCreate(w);
+  MdtFixedPathSetBodies(j, b, nullptr);
+  MdtFixedPathSetPosition(j, 0, 0, 0, 0);
+  MdtFixedPathSetPosition(j, 1, 0, 0, 0);
+  MdtFixedPathEnable(j);
+  for (int i = 0; i < 100; ++i) MdtWorldStep(w, (MeReal)0.01);
+  MeVector3 f;
+  MdtFixedPathGetForce(j, 0, f);
+  EXPECT_NEAR(f[1], 2 * kG, 2 * kG * 1e-3);
+  EXPECT_NEAR(f[0], 0, 1e-3);
+}

@@ -37,6 +37,7 @@ TEST(JointsAInput, ZeroAxesAreRejectedWithAWarning) {
   EXPECT_EQ(warnings.count(), 3u);
   MdtUniversalSetAxes(u, 0, 1, 0, 0, 1, 0, 0);  // not orthogonal
   EXPECT_EQ(warnings.count(), 4u);
+  EXPECT_NE(warnings.last().find("MdtUniversalSetAxes"), std::string::npos);
   MdtUniversalGetAxis(u, 1, a);
   EXPECT_EQ(a[1], 1);
 
