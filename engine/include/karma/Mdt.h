@@ -9,5 +9,12 @@
 #include "MdtLimit.h"
 #include "MdtBSJoint.h"
 #include "MdtHinge.h"
+#include "MdtPrismatic.h"
+#include "MdtUniversal.h"
+#include "MdtAngular3.h"
+#include "MdtConeLimit.h"
+#include "MdtLinear1.h"
+#include "MdtLinear2.h"
+#include "MdtFixedPath.h"
 #include "MdtContact.h"
 #endif

@@ -6,12 +6,21 @@ namespace karma::mdt {
 
 extern const ConstraintType kBSJointType;
 extern const ConstraintType kHingeType;
+extern const ConstraintType kPrismaticType;
+extern const ConstraintType kUniversalType;
+extern const ConstraintType kAngular3Type;
+extern const ConstraintType kConeLimitType;
+extern const ConstraintType kLinear1Type;
+extern const ConstraintType kLinear2Type;
+extern const ConstraintType kFixedPathType;
 extern const ConstraintType kContactType;
 extern const ConstraintType kContactGroupType;
 
 const ConstraintType *const *allConstraintTypes() {
   static const ConstraintType *const all[] = {
-      &kBSJointType, &kHingeType, &kContactType, &kContactGroupType, nullptr};
+      &kBSJointType,  &kHingeType,   &kPrismaticType, &kUniversalType,
+      &kAngular3Type, &kConeLimitType, &kLinear1Type, &kLinear2Type,
+      &kFixedPathType, &kContactType, &kContactGroupType, nullptr};
   return all;
 }
 
