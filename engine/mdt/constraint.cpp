@@ -70,7 +70,8 @@ bool checkType(const MdtConstraint *c, const ConstraintType &type, const char *f
     return false;
   }
   if (c->type != &type) {
-    MeWarning(0, "%s: constraint is a %s, not a %s; ignored", fn, c->type->name, type.name);
+    MeWarning(0, "%s: the constraint is of type %s where %s was expected; ignored", fn,
+              c->type->name, type.name);
     return false;
   }
   return true;

@@ -61,7 +61,7 @@ TEST(BadInput, NonFiniteAndDegenerateGeometryIsRejected) {
   // Wrong type through the typed API.
   MdtHingeGetLimit(reinterpret_cast<MdtHingeID>(MdtBSJointCreate(w)));
   EXPECT_EQ(cap.count(), 5u);
-  EXPECT_NE(cap.last().find("not a Hinge"), std::string::npos);
+  EXPECT_NE(cap.last().find("where Hinge was expected"), std::string::npos);
 }
 
 TEST(BadInput, DestroyingABodyDisablesItsJoints) {

@@ -101,7 +101,7 @@ TEST(JointsAInput, WrongTypeIsRejected) {
   WarningCapture warnings;
   MdtAngular3SetAxis((MdtAngular3ID)hc, 0, 0, 1);
   EXPECT_EQ(warnings.count(), 1u);
-  EXPECT_NE(warnings.last().find("not a Angular3"), std::string::npos);
+  EXPECT_NE(warnings.last().find("where Angular3 was expected"), std::string::npos);
   EXPECT_EQ(MdtPrismaticGetLimit(nullptr), nullptr);
   EXPECT_EQ(warnings.count(), 2u);
 }
