@@ -16,5 +16,6 @@
 #include "MdtLinear1.h"
 #include "MdtLinear2.h"
 #include "MdtFixedPath.h"
+#include "MdtCarWheel.h"
 #include "MdtContact.h"
 #endif

@@ -13,6 +13,7 @@ extern const ConstraintType kConeLimitType;
 extern const ConstraintType kLinear1Type;
 extern const ConstraintType kLinear2Type;
 extern const ConstraintType kFixedPathType;
+extern const ConstraintType kCarWheelType;
 extern const ConstraintType kContactType;
 extern const ConstraintType kContactGroupType;
 
@@ -20,7 +21,7 @@ const ConstraintType *const *allConstraintTypes() {
   static const ConstraintType *const all[] = {
       &kBSJointType,  &kHingeType,   &kPrismaticType, &kUniversalType,
       &kAngular3Type, &kConeLimitType, &kLinear1Type, &kLinear2Type,
-      &kFixedPathType, &kContactType, &kContactGroupType, nullptr};
+      &kFixedPathType, &kCarWheelType, &kContactType, &kContactGroupType, nullptr};
   return all;
 }
 
