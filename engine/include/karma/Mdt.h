@@ -17,5 +17,6 @@
 #include "MdtLinear2.h"
 #include "MdtFixedPath.h"
 #include "MdtCarWheel.h"
+#include "MdtSpring.h"
 #include "MdtContact.h"
 #endif

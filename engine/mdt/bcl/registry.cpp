@@ -14,6 +14,7 @@ extern const ConstraintType kLinear1Type;
 extern const ConstraintType kLinear2Type;
 extern const ConstraintType kFixedPathType;
 extern const ConstraintType kCarWheelType;
+extern const ConstraintType kSpringType;
 extern const ConstraintType kContactType;
 extern const ConstraintType kContactGroupType;
 
@@ -21,7 +22,7 @@ const ConstraintType *const *allConstraintTypes() {
   static const ConstraintType *const all[] = {
       &kBSJointType,  &kHingeType,   &kPrismaticType, &kUniversalType,
       &kAngular3Type, &kConeLimitType, &kLinear1Type, &kLinear2Type,
-      &kFixedPathType, &kCarWheelType, &kContactType, &kContactGroupType, nullptr};
+      &kFixedPathType, &kCarWheelType, &kSpringType, &kContactType, &kContactGroupType, nullptr};
   return all;
 }
 
