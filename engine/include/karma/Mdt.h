@@ -18,5 +18,6 @@
 #include "MdtFixedPath.h"
 #include "MdtCarWheel.h"
 #include "MdtSpring.h"
+#include "MdtSkeletal.h"
 #include "MdtContact.h"
 #endif

@@ -15,6 +15,7 @@ extern const ConstraintType kLinear2Type;
 extern const ConstraintType kFixedPathType;
 extern const ConstraintType kCarWheelType;
 extern const ConstraintType kSpringType;
+extern const ConstraintType kSkeletalType;
 extern const ConstraintType kContactType;
 extern const ConstraintType kContactGroupType;
 
@@ -22,7 +23,8 @@ const ConstraintType *const *allConstraintTypes() {
   static const ConstraintType *const all[] = {
       &kBSJointType,  &kHingeType,   &kPrismaticType, &kUniversalType,
       &kAngular3Type, &kConeLimitType, &kLinear1Type, &kLinear2Type,
-      &kFixedPathType, &kCarWheelType, &kSpringType, &kContactType, &kContactGroupType, nullptr};
+      &kFixedPathType, &kCarWheelType, &kSpringType, &kSkeletalType,
+      &kContactType, &kContactGroupType, nullptr};
   return all;
 }
 

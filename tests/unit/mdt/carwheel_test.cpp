@@ -3,26 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "joints_a_support.h"
+#include "joints_b_support.h"
 
 using namespace mdt_test;
 
 namespace {
-
-// Holds a body fixed to the world (position and orientation).
-void pinToWorld(MdtWorldID w, MdtBodyID b) {
-  MdtBSJointID bs = MdtBSJointCreate(w);
-  MdtBSJointSetBodies(bs, b, nullptr);
-  MdtBSJointEnable(bs);
-  MdtAngular3ID a = MdtAngular3Create(w);
-  MdtAngular3SetBodies(a, b, nullptr);
-  MdtAngular3Enable(a);
-}
-
-void setDiagonalInertia(MdtBodyID b, MeReal x, MeReal y, MeReal z) {
-  const MeMatrix3 I = {{x, 0, 0}, {0, y, 0}, {0, 0, z}};
-  MdtBodySetInertiaTensor(b, I);
-}
 
 // A chassis at the origin and a wheel 0.4 below it, z up, steering axis z,
 // hinge axis y.
