@@ -19,5 +19,6 @@
 #include "MdtCarWheel.h"
 #include "MdtSpring.h"
 #include "MdtSkeletal.h"
+#include "MdtSpring6.h"
 #include "MdtContact.h"
 #endif

@@ -16,6 +16,7 @@ extern const ConstraintType kFixedPathType;
 extern const ConstraintType kCarWheelType;
 extern const ConstraintType kSpringType;
 extern const ConstraintType kSkeletalType;
+extern const ConstraintType kSpring6Type;
 extern const ConstraintType kContactType;
 extern const ConstraintType kContactGroupType;
 
@@ -23,7 +24,7 @@ const ConstraintType *const *allConstraintTypes() {
   static const ConstraintType *const all[] = {
       &kBSJointType,  &kHingeType,   &kPrismaticType, &kUniversalType,
       &kAngular3Type, &kConeLimitType, &kLinear1Type, &kLinear2Type,
-      &kFixedPathType, &kCarWheelType, &kSpringType, &kSkeletalType,
+      &kFixedPathType, &kCarWheelType, &kSpringType, &kSkeletalType, &kSpring6Type,
       &kContactType, &kContactGroupType, nullptr};
   return all;
 }

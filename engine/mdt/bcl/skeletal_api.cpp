@@ -41,15 +41,7 @@ void MEAPI MdtSkeletalSetAxes(const MdtSkeletalID j, const MeReal px, const MeRe
   static const char *fn = "MdtSkeletalSetAxes";
   if (!ok(j, fn)) return;
   MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
-  if (!unitDirection(p, fn, "the primary axis") || !unitDirection(o, fn, "the secondary axis"))
-    return;
-  const MeReal cosine = MeVector3Dot(p, o);
-  if (std::fabs(cosine) > (MeReal)1e-3) {
-    MeWarning(0, "%s: the axes are not orthogonal (cosine %g); ignored", fn, (double)cosine);
-    return;
-  }
-  MeVector3MultiplyAdd(o, -cosine, p);
-  MeVector3Normalize(o);
+  if (!orthogonalAxes(p, o, fn)) return;
   setWorldAxes(j, p, o);
   j->warmRows = 0;
 }
