@@ -20,5 +20,6 @@
 #include "MdtSpring.h"
 #include "MdtSkeletal.h"
 #include "MdtSpring6.h"
+#include "MdtRPROJoint.h"
 #include "MdtContact.h"
 #endif

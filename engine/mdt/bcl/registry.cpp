@@ -17,6 +17,7 @@ extern const ConstraintType kCarWheelType;
 extern const ConstraintType kSpringType;
 extern const ConstraintType kSkeletalType;
 extern const ConstraintType kSpring6Type;
+extern const ConstraintType kRPROJointType;
 extern const ConstraintType kContactType;
 extern const ConstraintType kContactGroupType;
 
@@ -24,7 +25,7 @@ const ConstraintType *const *allConstraintTypes() {
   static const ConstraintType *const all[] = {
       &kBSJointType,  &kHingeType,   &kPrismaticType, &kUniversalType,
       &kAngular3Type, &kConeLimitType, &kLinear1Type, &kLinear2Type,
-      &kFixedPathType, &kCarWheelType, &kSpringType, &kSkeletalType, &kSpring6Type,
+      &kFixedPathType, &kCarWheelType, &kSpringType, &kSkeletalType, &kSpring6Type, &kRPROJointType,
       &kContactType, &kContactGroupType, nullptr};
   return all;
 }
