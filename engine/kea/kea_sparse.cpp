@@ -7,10 +7,10 @@
  *
  *  - Active set: the pivoting logic is the dense solver's, shared through
  *    kea_activeset_core.h. The free block (A + eps I)_FF is gathered from
- *    the CSR rows into a sparse lower triangle and factorised by a sparse
- *    LDL^T (Eigen's SimplicialLDLT) under an approximate minimum degree
- *    ordering, so a banded block costs O(m) to factorise and solve instead of
- *    O(m^3). When the free set is unchanged from the previous solve (the
+ *    the CSR rows into a sparse triangle and factorised by a sparse LDL^T
+ *    (Eigen's SimplicialLDLT) in a fill-reducing order (approximate minimum
+ *    degree, computed once for the whole matrix; see SparseBackend), so a
+ *    banded block costs O(m) to factorise and solve instead of O(m^3). When the free set is unchanged from the previous solve (the
  *    friction fixed point re-solving with new bounds) the factorisation is
  *    reused. Small free blocks (at most kDenseBlock rows) go through the
  *    dense LDL^T, which is faster there. A factorisation that breaks down
@@ -59,7 +59,15 @@ MeReal SparseResidual(const SparseLcpProblem &p, MeReal eps, std::span<const MeR
   return detail::ComplementarityResidual(detail::Rows(p), lambda, scratch);
 }
 
-/* The sparse matrix operations of the active-set core. */
+/* The sparse matrix operations of the active-set core.
+ *
+ * Ordering: an approximate minimum degree (AMD) ordering is computed once,
+ * for the pattern of the whole matrix, on the first sparse factorisation.
+ * Each free block is then eliminated in the induced order (its rows in the
+ * order AMD gave them). The fill of a principal submatrix under the induced
+ * order is never more than the fill of the whole matrix under the full
+ * order, so this keeps the factorisation sparse without re-running AMD (the
+ * largest cost of a factorisation) at every pivot step. */
 class SparseBackend {
  public:
   SparseBackend(const SparseLcpProblem &p, MeReal eps)
@@ -74,14 +82,25 @@ class SparseBackend {
   void solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
                  const std::vector<MeReal> &hi, std::vector<MeReal> &lambda) {
     const auto n = static_cast<std::size_t>(p_.n);
-    freeRows_.clear();
+    std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
       if (set[i] == detail::AtLo) lambda[i] = lo[i];
       else if (set[i] == detail::AtHi) lambda[i] = hi[i];
-      else freeRows_.push_back(static_cast<int>(i));
+      else ++m;
     }
-    const std::size_t m = freeRows_.size();
     if (m == 0) return;
+
+    /* The free rows, in the elimination order (natural order for the
+     * dense solve). */
+    freeRows_.clear();
+    if (m <= kDenseBlock) {
+      for (std::size_t i = 0; i < n; ++i)
+        if (set[i] == detail::Free) freeRows_.push_back(static_cast<int>(i));
+    } else {
+      if (order_.empty()) computeOrder();
+      for (int i : order_)
+        if (set[static_cast<std::size_t>(i)] == detail::Free) freeRows_.push_back(i);
+    }
     for (std::size_t a = 0; a < m; ++a) position_[static_cast<std::size_t>(freeRows_[a])] = static_cast<int>(a);
 
     /* rhs = b_F - A_FC lambda_C */
@@ -113,15 +132,33 @@ class SparseBackend {
   }
 
  private:
-  /* The free block, column a holding free row a's entries on and below the
-   * diagonal (A is symmetric and the columns of a CSR row ascend, so the
-   * positions come out sorted). `shift` is added to the diagonal. */
-  void gatherLower(std::size_t m, MeReal shift) {
+  /* AMD on the whole matrix's pattern (CSR of a symmetric matrix is also its
+   * CSC). order_ lists the rows in elimination order. */
+  void computeOrder() {
+    const auto n = static_cast<Eigen::Index>(p_.n);
+    const auto nnz = static_cast<Eigen::Index>(p_.rowStart[static_cast<std::size_t>(p_.n)]);
+    const Eigen::Map<const SpMat> full(n, n, nnz, p_.rowStart.data(), p_.col.data(), p_.val.data());
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> pinv;
+    Eigen::AMDOrdering<int> amd;
+    amd(full.selfadjointView<Eigen::Upper>(), pinv);
+    order_.assign(pinv.indices().data(), pinv.indices().data() + pinv.indices().size());
+    if (order_.size() != static_cast<std::size_t>(p_.n)) {
+      order_.resize(static_cast<std::size_t>(p_.n));
+      for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
+    }
+  }
+
+  /* The free block in elimination order: column a holds free row a's
+   * entries on and above the diagonal (positions <= a), sorted. `shift` is
+   * added to the diagonal. */
+  void gatherUpper(std::size_t m, MeReal shift) {
     std::size_t nnz = 0;
     for (std::size_t a = 0; a < m; ++a) {
       const auto i = static_cast<std::size_t>(freeRows_[a]);
-      for (int k = p_.rowStart[i]; k < p_.rowStart[i + 1]; ++k)
-        if (position_[static_cast<std::size_t>(p_.col[static_cast<std::size_t>(k)])] >= static_cast<int>(a)) ++nnz;
+      for (int k = p_.rowStart[i]; k < p_.rowStart[i + 1]; ++k) {
+        const int c = position_[static_cast<std::size_t>(p_.col[static_cast<std::size_t>(k)])];
+        if (c >= 0 && c <= static_cast<int>(a)) ++nnz;
+      }
     }
     block_.resize(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
     block_.resizeNonZeros(static_cast<Eigen::Index>(nnz));
@@ -131,20 +168,28 @@ class SparseBackend {
     int at = 0;
     for (std::size_t a = 0; a < m; ++a) {
       outer[a] = at;
+      const int first = at;
       const auto i = static_cast<std::size_t>(freeRows_[a]);
       for (int k = p_.rowStart[i]; k < p_.rowStart[i + 1]; ++k) {
         const int c = position_[static_cast<std::size_t>(p_.col[static_cast<std::size_t>(k)])];
-        if (c < static_cast<int>(a)) continue;
-        inner[at] = c;
-        value[at] = p_.val[static_cast<std::size_t>(k)] + (c == static_cast<int>(a) ? eps_ + shift : MeReal(0));
-        ++at;
+        if (c < 0 || c > static_cast<int>(a)) continue;
+        const MeReal v = p_.val[static_cast<std::size_t>(k)] + (c == static_cast<int>(a) ? eps_ + shift : MeReal(0));
+        /* Insertion into the sorted column (a handful of entries). */
+        int t = at++;
+        while (t > first && inner[t - 1] > c) {
+          inner[t] = inner[t - 1];
+          value[t] = value[t - 1];
+          --t;
+        }
+        inner[t] = c;
+        value[t] = v;
       }
     }
     outer[m] = at;
   }
 
   void factorise(std::size_t m) {
-    gatherLower(m, 0);
+    gatherUpper(m, 0);
     ldlt_.compute(block_);
     ldltOk_ = ldlt_.info() == Eigen::Success;
     factored_ = true;
@@ -179,8 +224,8 @@ class SparseBackend {
         if (static_cast<std::size_t>(p_.col[static_cast<std::size_t>(k)]) == i)
           diagMax = std::max(diagMax, std::fabs(p_.val[static_cast<std::size_t>(k)]));
     }
-    gatherLower(m, std::sqrt(ME_REAL_EPSILON) * (1 + diagMax));
-    Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> shifted(block_);
+    gatherUpper(m, std::sqrt(ME_REAL_EPSILON) * (1 + diagMax));
+    Ldlt shifted(block_);
     Vec x;
     if (shifted.info() == Eigen::Success) x = shifted.solve(rhs_);
     if (x.size() != static_cast<Eigen::Index>(m) || !x.allFinite()) x = Vec::Zero(static_cast<Eigen::Index>(m));
@@ -189,13 +234,16 @@ class SparseBackend {
     return x;
   }
 
+  /* The block comes already in elimination order: no reordering inside. */
+  using Ldlt = Eigen::SimplicialLDLT<SpMat, Eigen::Upper, Eigen::NaturalOrdering<int>>;
+
   const SparseLcpProblem &p_;
   MeReal eps_;
-  std::vector<int> position_, freeRows_, factoredRows_;
+  std::vector<int> position_, freeRows_, factoredRows_, order_;
   std::vector<MeReal> wScratch_, x_, dense_, denseRhs_;
   Vec rhs_;
   SpMat block_;
-  Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
+  Ldlt ldlt_;
   bool factored_ = false, ldltOk_ = false;
 };
 
