@@ -96,6 +96,9 @@ KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name,
 
   std::vector<MeReal> best = r.lambda;
   MeReal bestResidual = backend.residual(r.lambda, {});
+  /* Whether best and bestResidual are r.lambda and its residual, with r.w
+   * its w: then the final residual need not be computed again. */
+  bool bestIsCurrent = false;
   int solves = 0;
   bool cycle = false, done = false;
   std::vector<MeReal> newLo, newHi;
@@ -111,7 +114,8 @@ KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name,
       backend.solveFree(set, lo, hi, r.lambda);
       ++solves;
       const MeReal residual = backend.residual(r.lambda, r.w);
-      if (residual < bestResidual) {
+      bestIsCurrent = residual < bestResidual;
+      if (bestIsCurrent) {
         bestResidual = residual;
         best = r.lambda;
       }
@@ -164,8 +168,12 @@ KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name,
     if (!moved) done = true;
   }
 
-  r.lambda = best;
-  r.residual = backend.residual(r.lambda, r.w);
+  if (bestIsCurrent) {
+    r.residual = bestResidual;
+  } else {
+    r.lambda = best;
+    r.residual = backend.residual(r.lambda, r.w);
+  }
   r.iterations = solves;
   if (r.residual <= threshold) {
     r.status = KeaStatus::Solved;
