@@ -96,7 +96,7 @@
 namespace karma::mcd {
 
 // The guide's McdXAxis, McdYAxis, McdZAxis, McdAllAxes.
-enum : int { kAxisX = 1, kAxisY = 2, kAxisZ = 4, kAllAxes = 7 };
+inline constexpr int kAxisX = 1, kAxisY = 2, kAxisZ = 4, kAllAxes = 7;
 
 using ProxyId = int;  // a slot index, stable while the proxy is in the space
 inline constexpr ProxyId kNoProxy = -1;
