@@ -104,7 +104,7 @@ std::uint32_t AxisSortSpace::ProxySerial(ProxyId id) const {
 }
 
 bool AxisSortSpace::GetAabb(ProxyId id, MeReal min[3], MeReal max[3]) const {
-  if (!CheckProxy(id, "McdSpaceGetModelAABB")) return false;
+  if (!CheckProxy(id, "McdModelGetAABB")) return false;
   const Proxy &p = proxies_[static_cast<std::size_t>(id)];
   for (int k = 0; k < 3; ++k) {
     min[k] = p.min[k];
