@@ -37,9 +37,8 @@ void AxisSortSpace::ComputeEvents() {
   // Walk every overlap entry once: detach records whose pair is no longer
   // reportable, collect reportable pairs without a record, and drop entries
   // that neither overlap nor own a record.
-  for (int i = 0; i < overlaps_.Capacity(); ++i) {
-    OverlapEntry &e = overlaps_.Slot(i);
-    if (e.key == OverlapEntry::kEmpty) continue;
+  for (int i = 0; i < overlaps_.Size(); ++i) {
+    OverlapEntry &e = overlaps_.At(i);
     const bool reportable = Reportable(e);
     if (e.record >= 0 && !reportable) {
       pairs_.At(e.record).state = PairState::Goodbye;

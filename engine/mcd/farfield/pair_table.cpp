@@ -1,8 +1,9 @@
 // pair_table.cpp: the overlap hash (linear probing with backward-shift
 // deletion, so no tombstones) and the fixed pool of pair records.
 //
-// OverlapTable invariant: an entry sits at its home slot or after it in the
-// probe sequence, with no empty slot between its home and its position.
+// OverlapTable invariants: a hash slot sits at its home or after it in the
+// probe sequence with no free slot in between; slots_ and dense_ hold the
+// same keys, each slot's index naming its entry in dense_.
 #include "pair_table.h"
 
 namespace karma::mcd {
@@ -20,42 +21,47 @@ std::size_t OverlapTable::Home(std::uint64_t key) const {
 void OverlapTable::Reserve(int entries) {
   std::size_t cap = 16;
   while (cap < 2 * static_cast<std::size_t>(entries > 0 ? entries : 1)) cap *= 2;
-  slots_.assign(cap, OverlapEntry{OverlapEntry::kEmpty, -1, false});
-  size_ = 0;
+  slots_.assign(cap, Slot{OverlapEntry::kEmpty, -1});
+  dense_.clear();
+  dense_.reserve(static_cast<std::size_t>(entries > 0 ? entries : 1));
+}
+
+std::size_t OverlapTable::SlotOf(std::uint64_t key) const {
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t i = Home(key);
+  while (slots_[i].key != key && slots_[i].key != OverlapEntry::kEmpty) i = (i + 1) & mask;
+  return i;
 }
 
 OverlapEntry *OverlapTable::Find(std::uint64_t key) {
-  const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = Home(key);; i = (i + 1) & mask) {
-    OverlapEntry &e = slots_[i];
-    if (e.key == key) return &e;
-    if (e.key == OverlapEntry::kEmpty) return nullptr;
-  }
+  const Slot &slot = slots_[SlotOf(key)];
+  return slot.key == key ? &dense_[static_cast<std::size_t>(slot.index)] : nullptr;
 }
 
 OverlapEntry &OverlapTable::FindOrAdd(std::uint64_t key) {
-  if (2 * static_cast<std::size_t>(size_ + 1) > slots_.size()) Grow();
-  const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = Home(key);; i = (i + 1) & mask) {
-    OverlapEntry &e = slots_[i];
-    if (e.key == key) return e;
-    if (e.key == OverlapEntry::kEmpty) {
-      e = OverlapEntry{key, -1, false};
-      ++size_;
-      return e;
-    }
+  if (2 * (dense_.size() + 1) > slots_.size()) Grow();
+  Slot &slot = slots_[SlotOf(key)];
+  if (slot.key != key) {
+    slot = Slot{key, static_cast<int>(dense_.size())};
+    dense_.push_back(OverlapEntry{key, -1, false});
   }
+  return dense_[static_cast<std::size_t>(slot.index)];
 }
 
 void OverlapTable::Erase(std::uint64_t key) {
   const std::size_t mask = slots_.size() - 1;
-  std::size_t i = Home(key);
-  while (slots_[i].key != key) {
-    if (slots_[i].key == OverlapEntry::kEmpty) return;
-    i = (i + 1) & mask;
+  std::size_t i = SlotOf(key);
+  if (slots_[i].key != key) return;
+  // Keep dense_ packed: the last entry moves into the erased one's place.
+  const int index = slots_[i].index;
+  const std::uint64_t lastKey = dense_.back().key;
+  if (lastKey != key) {
+    dense_[static_cast<std::size_t>(index)] = dense_.back();
+    slots_[SlotOf(lastKey)].index = index;
   }
-  // Backward shift: pull later entries of the run into the hole when their
-  // home does not lie strictly between the hole and their position.
+  dense_.pop_back();
+  // Backward shift: pull later slots of the run into the hole when their
+  // home does not lie cyclically in (hole, position].
   std::size_t hole = i;
   for (std::size_t j = (i + 1) & mask; slots_[j].key != OverlapEntry::kEmpty; j = (j + 1) & mask) {
     const std::size_t home = Home(slots_[j].key);
@@ -65,20 +71,13 @@ void OverlapTable::Erase(std::uint64_t key) {
       hole = j;
     }
   }
-  slots_[hole] = OverlapEntry{OverlapEntry::kEmpty, -1, false};
-  --size_;
+  slots_[hole] = Slot{OverlapEntry::kEmpty, -1};
 }
 
 void OverlapTable::Grow() {
-  std::vector<OverlapEntry> old;
-  old.swap(slots_);
-  slots_.assign(old.size() * 2, OverlapEntry{OverlapEntry::kEmpty, -1, false});
-  const std::size_t mask = slots_.size() - 1;
-  for (const OverlapEntry &e : old) {
-    if (e.key == OverlapEntry::kEmpty) continue;
-    std::size_t i = Home(e.key);
-    while (slots_[i].key != OverlapEntry::kEmpty) i = (i + 1) & mask;
-    slots_[i] = e;
+  slots_.assign(slots_.size() * 2, Slot{OverlapEntry::kEmpty, -1});
+  for (std::size_t d = 0; d < dense_.size(); ++d) {
+    slots_[SlotOf(dense_[d].key)] = Slot{dense_[d].key, static_cast<int>(d)};
   }
 }
 

@@ -3,10 +3,11 @@
 // OverlapTable: every pair of proxies whose intervals overlap on all sorted
 // axes (in the axes' rank order, see endpoint_axis.h), whether or not it is
 // reported (frozen-frozen, disabled and culled pairs are kept so that an
-// unfreeze or an enable can say hello without a search). A flat open-
-// addressing hash keyed by the two slots (lower slot in the high half).
-// It starts with room for the space's pairCount and grows if more pairs
-// overlap; only the reported records below are capped.
+// unfreeze or an enable can say hello without a search). The entries are
+// packed in one array (walked once per step, in O(entries)) and found
+// through an open-addressing hash keyed by the two slots (lower slot in the
+// high half). It grows as more pairs overlap; only the reported records
+// below are capped.
 //
 // PairPool: the PairRecords the space reports, exactly pairCount of them
 // (the guide's pairCount). A record keeps its index and address from its
@@ -56,22 +57,28 @@ struct OverlapEntry {
 class OverlapTable {
  public:
   void Reserve(int entries);
-  int Size() const { return size_; }
+  int Size() const { return static_cast<int>(dense_.size()); }
   // The entry for key, or nullptr.
   OverlapEntry *Find(std::uint64_t key);
-  // The entry for key, added (record -1, overlapping false) if absent.
+  // The entry for key, added (record -1, overlapping false) if absent. The
+  // reference lives until the next addition.
   OverlapEntry &FindOrAdd(std::uint64_t key);
+  // Removes key's entry; the last entry moves into its place.
   void Erase(std::uint64_t key);
-  // Raw slot access for a full walk: entries with key != kEmpty are live.
-  int Capacity() const { return static_cast<int>(slots_.size()); }
-  OverlapEntry &Slot(int i) { return slots_[static_cast<std::size_t>(i)]; }
+  // Dense access for a full walk in O(Size()): entries [0, Size()).
+  OverlapEntry &At(int i) { return dense_[static_cast<std::size_t>(i)]; }
 
  private:
+  struct Slot {
+    std::uint64_t key;  // OverlapEntry::kEmpty when free
+    int index;          // into dense_
+  };
   std::size_t Home(std::uint64_t key) const;
+  std::size_t SlotOf(std::uint64_t key) const;  // its slot, or a free one
   void Grow();
 
-  std::vector<OverlapEntry> slots_;  // power-of-two size, load <= 1/2
-  int size_ = 0;
+  std::vector<OverlapEntry> dense_;  // the entries, packed
+  std::vector<Slot> slots_;          // power-of-two size, load <= 1/2
 };
 
 class PairPool {
