@@ -181,6 +181,11 @@ class AxisSortSpace {
   int ObjectCapacity() const { return objectCount_; }
   int PairCapacity() const { return pairs_.Capacity(); }
   SpaceStats Stats() const;
+  // Checks every internal invariant (sorted axes, endpoint positions, the
+  // overlap table against an O(n^2) pass over the ranks, record ownership
+  // and event order). For tests; outside a change block. On failure, one
+  // MeWarning says what broke and the result is false.
+  bool Validate() const;
   // Calls fn(id, user) for each proxy whose AABB overlaps [min, max] on all
   // three axes (closed intervals), in ascending slot order.
   template <class Fn>

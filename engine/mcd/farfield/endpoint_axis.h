@@ -109,6 +109,8 @@ class EndpointAxis {
 
   // True when the array is in ascending key order (tests and assertions).
   bool IsSorted() const;
+  int MinPos(int s) const { return minPos_[static_cast<std::size_t>(s)]; }
+  int MaxPos(int s) const { return maxPos_[static_cast<std::size_t>(s)]; }
 
  private:
   void Place(const Endpoint &e, int i) {

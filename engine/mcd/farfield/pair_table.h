@@ -17,6 +17,7 @@
 #define KARMA_MCD_FARFIELD_PAIR_TABLE_H
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace karma::mcd {
@@ -67,6 +68,7 @@ class OverlapTable {
   void Erase(std::uint64_t key);
   // Dense access for a full walk in O(Size()): entries [0, Size()).
   OverlapEntry &At(int i) { return dense_[static_cast<std::size_t>(i)]; }
+  std::span<const OverlapEntry> Entries() const { return dense_; }
 
  private:
   struct Slot {

@@ -189,6 +189,7 @@ TEST(FarfieldLifecycle, BatchInsertionAndBuild) {
     const Events ev = Collect(*space);
     EXPECT_TRUE(ev.stayings.empty());
     EXPECT_EQ(ReportedKeys(ev), BruteForceReported(*space));
+    EXPECT_TRUE(space->Validate());
     EXPECT_GT(ev.hellos.size(), 100u);
     AxisSortSpace::Destroy(space);
   }

@@ -23,6 +23,7 @@ void RunMotion(int axes, int count, int steps, unsigned seed) {
     const Events ev = Collect(*space, 37);
     checker.Step(ev);
     ASSERT_EQ(ReportedKeys(ev), BruteForceReported(*space)) << "axes " << axes << " step " << step;
+    ASSERT_TRUE(space->Validate());
     reportedTotal += static_cast<long long>(ev.hellos.size() + ev.stayings.size());
     space->BeginChanges();
     world.Move();
@@ -62,6 +63,7 @@ TEST(FarfieldRandomMotion, FastMotion) {
     space->UpdateAll();
     space->EndChanges();
     ASSERT_EQ(ReportedKeys(Collect(*space)), BruteForceReported(*space)) << step;
+    ASSERT_TRUE(space->Validate());
   }
   AxisSortSpace::Destroy(space);
 }
@@ -92,6 +94,7 @@ void Soak(int axes, unsigned seed, int steps) {
     const Events ev = Collect(*space, world.Int(1, 50));
     checker.Step(ev);
     ASSERT_EQ(ReportedKeys(ev), BruteForceReported(*space)) << "step " << step;
+    ASSERT_TRUE(space->Validate());
     space->BeginChanges();
     world.Move();
     const int ops = world.Int(0, 6);
@@ -177,6 +180,7 @@ TEST(FarfieldRandomMotion, GridMotionWithTouchingBoxes) {
       const Events ev = Collect(*space);
       checker.Step(ev);
       ASSERT_EQ(ReportedKeys(ev), BruteForceReported(*space)) << "axes " << axes << " step " << step;
+      ASSERT_TRUE(space->Validate());
       space->BeginChanges();
       world.Move();
       space->UpdateAll();
