@@ -48,7 +48,14 @@
 // pairs need a record, the extra hellos (the last in order) are not reported
 // and McdSpaceEndChanges warns once per block; they are retried every block
 // and say hello once records free up. Non-reported overlaps (frozen-frozen,
-// disabled, culled) are tracked in a hash that grows as needed.
+// disabled, culled) are tracked in a hash that grows as needed. Insertion
+// serials are 32-bit: the order is defined for a space's first 2^32 - 1
+// insertions.
+//
+// UpdateAll is treated like McdSpaceUpdateModels (inside a block only): the
+// guide's loop calls McdSpaceUpdateAll between the bridge's BeginChanges and
+// its next EndChanges. It calls the AABB function on every unfrozen proxy
+// and re-sorts at once; EndChanges sorts whatever changed after it.
 //
 // ## Mapping of the public C API (for the Mcd wrapper)
 //   McdSpaceAxisSortCreate(fwk, axes, objectCount, pairCount)
