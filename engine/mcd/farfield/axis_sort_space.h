@@ -17,6 +17,12 @@
 //
 // A pair is *reported* when it overlaps, its two proxies are not both frozen,
 // it is not disabled (DisablePair) and not culled (culling_table.h).
+// SetKeepFrozenPairs(true) softens the frozen rule: a reported pair whose
+// two proxies become frozen stays (staying, same record) instead of saying
+// goodbye; two frozen proxies still never start a pair. The guide hints at
+// this (the bridge skips the nearfield for frozen-frozen pairs and keeps
+// their contacts, so a sleeping stack keeps the contact groups that wake it
+// as a whole); the default is the guide's plain "not reported".
 //
 // ## Change blocks and pair events
 // The space is either inside a change block (IsChanging) or outside.
@@ -170,6 +176,9 @@ class AxisSortSpace {
   bool Freeze(ProxyId id);
   bool Unfreeze(ProxyId id);
   bool IsFrozen(ProxyId id) const;
+  // Anywhere; effective at the next EndChanges. Default false.
+  void SetKeepFrozenPairs(bool keep) { keepFrozenPairs_ = keep; }
+  bool KeepFrozenPairs() const { return keepFrozenPairs_; }
   // Outside a change block.
   void SetAabbFn(AabbFn fn, void *data);
   // Anywhere: brings the sorted arrays up to date now (else EndChanges does).
@@ -275,6 +284,7 @@ class AxisSortSpace {
   int droppedHellos_ = 0;
 
   bool changing_ = true;
+  bool keepFrozenPairs_ = false;
   AabbFn aabbFn_ = nullptr;
   void *aabbFnData_ = nullptr;
   void *userData_ = nullptr;

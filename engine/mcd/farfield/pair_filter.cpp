@@ -61,7 +61,7 @@ bool AxisSortSpace::Reportable(const OverlapEntry &e) const {
   const Proxy &pa = proxies_[static_cast<std::size_t>(a)];
   const Proxy &pb = proxies_[static_cast<std::size_t>(b)];
   if (pa.state != ProxyState::Live || pb.state != ProxyState::Live) return false;
-  if (pa.frozen && pb.frozen) return false;
+  if (pa.frozen && pb.frozen && !(keepFrozenPairs_ && e.record >= 0)) return false;
   if (pa.disabledCount > 0 && pb.disabledCount > 0 && disabled_.count(e.key) > 0) return false;
   return !Culled(pa, pb);
 }

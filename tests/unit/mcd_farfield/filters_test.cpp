@@ -71,6 +71,42 @@ TEST_F(Stack, FrozenPairsAreNotReported) {
   EXPECT_EQ(ev.stayings.size(), 1u);
 }
 
+// The softer rule: pairs that exist when both proxies freeze stay, with
+// their records; frozen proxies still start no pair; overlap ending still
+// says goodbye.
+TEST_F(Stack, KeepFrozenPairsKeepsExistingPairs) {
+  space->SetKeepFrozenPairs(true);
+  Copied ev = Step();
+  ASSERT_EQ(ev.hellos.size(), 2u);
+  const int record01 = ev.hellos[0].index;
+  space->Freeze(id[0]);
+  space->Freeze(id[1]);
+  space->Freeze(id[2]);
+  ev = Step();
+  EXPECT_TRUE(ev.goodbyes.empty());
+  ASSERT_EQ(ev.stayings.size(), 2u);
+  EXPECT_EQ(ev.stayings[0].index, record01);
+  // A new frozen-frozen overlap (2 moved onto 0 while unfrozen, then frozen
+  // again before the block ended) is not reported.
+  space->Unfreeze(id[2]);
+  MeReal min[3], max[3];
+  SetBox(min, max, 0, 0, MeReal(0.5), 1, 1, MeReal(1.5));
+  space->Update(id[2], min, max);
+  space->Freeze(id[2]);
+  ev = Step();
+  EXPECT_TRUE(ev.hellos.empty());
+  EXPECT_EQ(ev.stayings.size(), 2u);  // 0-1 and 1-2 stay
+  EXPECT_EQ(space->Stats().overlaps, 3);
+  // Disabling still says goodbye, and turning the option off drops the rest.
+  space->DisablePair(id[0], id[1]);
+  ev = Step();
+  EXPECT_EQ(ev.goodbyes.size(), 1u);
+  space->SetKeepFrozenPairs(false);
+  ev = Step();
+  EXPECT_EQ(ev.goodbyes.size(), 1u);
+  EXPECT_TRUE(ev.stayings.empty());
+}
+
 TEST_F(Stack, FreezeIsValidOutsideAChangeBlock) {
   WarningCapture warnings;
   Step();
