@@ -34,8 +34,8 @@ void EndpointAxis::Merge(std::span<const NewInterval> added) {
   scratch_.clear();
   for (const NewInterval &a : added) {
     const auto slot = static_cast<std::uint32_t>(a.slot);
-    scratch_.push_back({a.min, slot << 1});
-    scratch_.push_back({a.max, (slot << 1) | 1u});
+    scratch_.push_back({KeyOf(a.min), slot << 1});
+    scratch_.push_back({KeyOf(a.max), (slot << 1) | 1u});
   }
   std::sort(scratch_.begin(), scratch_.end(), BatchLess);
   // Merge from the back so the existing array can grow in place. On equal

@@ -1,7 +1,8 @@
 // endpoint_axis.h: one sorted axis of the axis-sort farfield.
 //
 // Each proxy in the sorted arrays owns two endpoints on every sorted axis:
-// its interval's min and max. An endpoint is (value, slot, isMax). The array
+// its interval's min and max. An endpoint is (value, slot, isMax), the value
+// kept as an order-preserving integer key (KeyOf). The array
 // is kept in ascending order of the key (value, isMax): at equal values a min
 // comes before a max, so intervals that only touch (a.max == b.min) count as
 // overlapping, the same closed-interval test as the brute force
@@ -25,20 +26,49 @@
 #include "MePrecision.h"
 
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <vector>
 
 namespace karma::mcd {
 
+// Endpoint values are stored as unsigned integers that order like the
+// MeReals they encode (sign-magnitude flipped to offset binary), so the sort
+// compares integers. -0 is stored as +0, so the order agrees with MeReal's
+// == and < for every non-NaN value, infinities included.
+#if KARMA_DOUBLE
+using SortKey = std::uint64_t;
+#else
+using SortKey = std::uint32_t;
+#endif
+static_assert(sizeof(SortKey) == sizeof(MeReal));
+
+inline SortKey KeyOf(MeReal v) {
+  if (v == 0) v = 0;  // -0 -> +0
+  SortKey bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  constexpr SortKey sign = SortKey{1} << (8 * sizeof(SortKey) - 1);
+  return (bits & sign) ? ~bits : (bits | sign);
+}
+
+inline MeReal ValueOf(SortKey key) {
+  constexpr SortKey sign = SortKey{1} << (8 * sizeof(SortKey) - 1);
+  const SortKey bits = (key & sign) ? (key & ~sign) : ~key;
+  MeReal v;
+  std::memcpy(&v, &bits, sizeof v);
+  return v;
+}
+
 struct Endpoint {
-  MeReal value;
+  SortKey key;         // KeyOf(value)
   std::uint32_t data;  // slot << 1 | isMax
 
+  MeReal Value() const { return ValueOf(key); }
   int Slot() const { return static_cast<int>(data >> 1); }
   bool IsMax() const { return (data & 1u) != 0; }
   // The sort order: value first, then min (0) before max (1).
   friend bool Greater(const Endpoint &l, const Endpoint &r) {
-    return l.value > r.value || (l.value == r.value && (l.data & 1u) > (r.data & 1u));
+    return l.key > r.key || (l.key == r.key && (l.data & 1u) > (r.data & 1u));
   }
 };
 
@@ -58,8 +88,8 @@ class EndpointAxis {
   // Writes new values into slot s's endpoints in place (the array may be out
   // of order until the next Sort()).
   void SetInterval(int s, MeReal min, MeReal max) {
-    ends_[static_cast<std::size_t>(minPos_[static_cast<std::size_t>(s)])].value = min;
-    ends_[static_cast<std::size_t>(maxPos_[static_cast<std::size_t>(s)])].value = max;
+    ends_[static_cast<std::size_t>(minPos_[static_cast<std::size_t>(s)])].key = KeyOf(min);
+    ends_[static_cast<std::size_t>(maxPos_[static_cast<std::size_t>(s)])].key = KeyOf(max);
   }
 
   // Overlap of slots a and b on this axis in rank order.

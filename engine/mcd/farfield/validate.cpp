@@ -34,7 +34,7 @@ bool AxisSortSpace::Validate() const {
       if (proxies_[static_cast<std::size_t>(e.Slot())].state != ProxyState::Live) return Fail("endpoint of a dead proxy");
       if ((e.IsMax() ? ax.MaxPos(e.Slot()) : ax.MinPos(e.Slot())) != i) return Fail("endpoint position");
       const Proxy &p = proxies_[static_cast<std::size_t>(e.Slot())];
-      if (e.value != (e.IsMax() ? p.max : p.min)[axisIndex_[k]]) return Fail("endpoint value");
+      if (e.Value() != (e.IsMax() ? p.max : p.min)[axisIndex_[k]]) return Fail("endpoint value");
     }
   }
   // The overlap table holds exactly the overlapping pairs, all overlapping.

@@ -195,6 +195,22 @@ TEST(FarfieldLifecycle, BatchInsertionAndBuild) {
   }
 }
 
+// Boxes touching at zero, one ending at -0 and the other starting at +0,
+// touch (-0 == +0), as in the brute force.
+TEST(FarfieldLifecycle, NegativeZeroTouchesPositiveZero) {
+  AxisSortSpace *space = AxisSortSpace::Create(kAxisX, 4, 8);
+  MeReal min[3], max[3];
+  SetBox(min, max, -1, 0, 0, -MeReal(0), 1, 1);
+  space->Insert(nullptr, min, max);
+  SetBox(min, max, 0, 0, 0, 1, 1, 1);
+  space->Insert(nullptr, min, max);
+  space->EndChanges();
+  EXPECT_EQ(Collect(*space).hellos.size(), 1u);
+  EXPECT_EQ(BruteForceReported(*space).size(), 1u);
+  EXPECT_TRUE(space->Validate());
+  AxisSortSpace::Destroy(space);
+}
+
 // Infinite AABBs (a plane) sort and pair like any other.
 TEST(FarfieldLifecycle, InfiniteBoxes) {
   AxisSortSpace *space = AxisSortSpace::Create(kAllAxes, 4, 8);
