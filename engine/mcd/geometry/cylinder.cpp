@@ -1,7 +1,9 @@
 // cylinder.cpp: the cylinder geometry, axis z, radius r, full height h.
 // V = pi r^2 h; Izz = m r^2 / 2; Ixx = Iyy = m (3 r^2 + h^2) / 12.
 // AABB: along world axis j the axis (row 2 of the TM) reaches |a_j| h/2 and
-// the end discs reach r sqrt(1 - a_j^2).
+// the end discs reach r sqrt(1 - a_j^2), computed as r sqrt(a_k^2 + a_l^2)
+// (k, l the other two axes; equal for a unit axis, and free of the
+// cancellation that 1 - a_j^2 suffers when a_j is near 1).
 #include "shape_util.h"
 
 using namespace karma::mcd;
@@ -18,7 +20,8 @@ void Aabb(const McdGeometry *g, MECONSTMATRIX MeMatrix4 tm, MeVector3 mn, MeVect
     auto *c = reinterpret_cast<const Cylinder *>(g);
     for (int j = 0; j < 3; ++j) {
         const MeReal a = tm[2][j];
-        const MeReal disc = std::sqrt(std::fmax((MeReal)0, 1 - a * a));
+        const MeReal ak = tm[2][(j + 1) % 3], al = tm[2][(j + 2) % 3];
+        const MeReal disc = std::sqrt(ak * ak + al * al);
         const MeReal e = std::fabs(a) * c->height / 2 + c->radius * disc;
         mn[j] = tm[3][j] - e;
         mx[j] = tm[3][j] + e;
