@@ -69,12 +69,10 @@ void MEAPI McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID fw) {
                    "framework is NULL");
     // Models first (they hold references), then every geometry: the
     // reference counts no longer matter since everything goes.
-    void *m = MePoolGetNextUsed(&fw->models, nullptr);
-    while (m) {
-        void *next = MePoolGetNextUsed(&fw->models, m);
+    // (MePool allows putting back the struct a pass has just returned.)
+    for (void *m = MePoolGetNextUsed(&fw->models, nullptr); m;
+         m = MePoolGetNextUsed(&fw->models, m))
         McdModelDestroy(static_cast<McdModel *>(m));
-        m = next;
-    }
     for (McdGeometry *g = fw->geometries; g; g = g->m_next)
         if (g->m_type == kMcdGeometryTypeAggregate) AggregateDropElements(g);
     while (fw->geometries) FreeGeometry(fw->geometries);

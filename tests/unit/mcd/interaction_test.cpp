@@ -242,76 +242,47 @@ TEST(McdInteraction, GuideDirectTestWithCallocPair) {
   free(pair);
 }
 
-TEST(McdInteraction, ContainerLayoutAndHelloEach) {
-  Framework fw;
-  McdModelPairContainer *c = McdModelPairContainerCreate(8);
-  ASSERT_NE(c, nullptr);
-  EXPECT_EQ(c->size, 8);
-  EXPECT_EQ(c->goodbyeFirst, 0);
-  EXPECT_EQ(c->goodbyeEnd, 0);
-  EXPECT_EQ(c->helloFirst, 4);
-  EXPECT_EQ(c->helloEnd, 4);
-  EXPECT_EQ(c->stayingFirst, 4);
-  EXPECT_EQ(c->stayingEnd, 4);
-  Body ground(McdPlaneCreate(fw), 0, 0, 0);
-  Body ball(McdSphereCreate(fw, 1), 0, 0, (MeReal)0.5);
-  // The guide's Q&A inserts a hello pair by hand like this.
-  McdModelPair *pair = McdModelPairCreate(ball.model, ground.model);
-  c->helloFirst = c->helloFirst - 1;
-  c->array[c->helloFirst] = pair;
-  McdHelloEach(c);
-  EXPECT_EQ(pair->m_helloed, 1);
-  McdContact contacts[4];
-  McdIntersectResult r{};
-  r.contacts = contacts;
-  r.contactMaxCount = 4;
-  for (int i = c->helloFirst; i < c->stayingEnd; ++i) EXPECT_EQ(McdIntersect(c->array[i], &r), 1);
-  // Goodbye block.
-  c->array[0] = pair;
-  c->goodbyeEnd = 1;
-  McdGoodbyeEach(c);
-  EXPECT_EQ(pair->m_helloed, 0);
-  McdModelPairContainerReset(c);
-  EXPECT_EQ(c->goodbyeEnd, 0);
-  EXPECT_EQ(c->helloFirst, 4);
-  McdModelPairDestroy(pair);
-  McdModelPairContainerDestroy(c);
-}
 
-int gTriangleCalls = 0;
-MeVector3 gVerts[3] = {{-5, -5, 0}, {5, -5, 0}, {0, 5, 0}};
-MeVector3 gNormal = {0, 0, 1};
-int MEAPI Greedy(McdModelPair *, McdUserTriangle *list, MeVector3, MeReal, int max) {
-  ++gTriangleCalls;
-  for (int i = 0; i < max; ++i) {
-    list[i].vertices[0] = &gVerts[0];
-    list[i].vertices[1] = &gVerts[1];
-    list[i].vertices[2] = &gVerts[2];
-    list[i].normal = &gNormal;
-    list[i].flags = kMcdTriangleStandard;
+TEST(McdInteraction, RandomPosesGiveUnitNormalsAndMirroredResults) {
+  Framework fw;
+  McdGeometryID shapes[2] = {McdSphereCreate(fw, (MeReal)0.7), McdBoxCreate(fw, 1, 2, (MeReal)0.5)};
+  TM groundTM;
+  const MeVector3 x = {1, 0, 0};
+  groundTM.rotate(x, -ME_PI / 2);  // the guide's y-up ground
+  McdModelID ground = McdModelCreate(McdPlaneCreate(fw));
+  McdModelSetTransformPtr(ground, groundTM);
+  McdModelUpdate(ground);
+  unsigned seed = 12345;
+  auto uniform = [&](double lo, double hi) {
+    seed = seed * 1664525u + 1013904223u;
+    return (MeReal)(lo + (hi - lo) * (seed >> 8) / 16777216.0);
+  };
+  int touching = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    Body b(shapes[trial % 2], uniform(-5, 5), uniform(-1.5, 1.5), uniform(-5, 5));
+    const MeVector3 axis = {uniform(-1, 1), uniform(-1, 1), uniform(0.1, 1)};
+    b.tm.rotate(axis, uniform(0, 6.28));
+    b.update();
+    Query f(b.model, ground), r(ground, b.model);
+    ASSERT_EQ(f.touch, r.touch);
+    ASSERT_EQ(f.r.contactCount, r.r.contactCount);
+    touching += f.touch;
+    for (int i = 0; i < f.r.contactCount; ++i) {
+      const McdContact &c = f.contacts[i], &d = r.contacts[i];
+      EXPECT_NEAR(MeVector3Magnitude(c.normal), 1, tol(1));
+      EXPECT_TRUE(std::isfinite(c.separation));
+      EXPECT_LE(c.separation, McdFrameworkGetContactTolerance(fw));
+      EXPECT_NEAR(c.normal[1], 1, tol(1));  // up, from the ground to the shape
+      // The separation is the height of the deepest point over y = 0.
+      EXPECT_NEAR(c.position[1], c.separation / 2, tol(4, 256));
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(d.normal[k], -c.normal[k]);
+        EXPECT_EQ(d.position[k], c.position[k]);
+      }
+    }
   }
-  return max + 3;  // claims more than it may
-}
-
-TEST(McdInteraction, TriangleListQueryClampsAnOverlongCallback) {
-  Framework fw;
-  MeVector3 mn = {-10, -10, -1}, mx = {10, 10, 0};
-  McdGeometryID g = McdTriangleListCreate(fw, mn, mx, 2, Greedy);
-  ASSERT_NE(g, nullptr);
-  ((McdTriangleList *)g)->triangleMaxCount = 5;  // as the guide's QuadBike does
-  EXPECT_EQ(McdTriangleListGetMaxTriangles(g), 5);
-  WarningCapture w;
-  McdUserTriangle *tris = nullptr;
-  MeVector3 pos = {0, 0, 0};
-  const int n = McdTriangleListGetTriangles(g, nullptr, pos, 1, &tris);
-  EXPECT_EQ(n, 5);
-  ASSERT_NE(tris, nullptr);
-  EXPECT_EQ(tris[4].normal, &gNormal);
-  EXPECT_EQ(w.count(), 1u);
-  EXPECT_TRUE(w.lastMentions("returned 8 triangles"));
-  EXPECT_TRUE(w.lastMentions("triangleMaxCount is 5"));
-  EXPECT_EQ(kMcdTriangleStandard, kMcdTriangleUseSmallestPenetration | kMcdTriangleTwoSided |
-                                      kMcdTriangleUseEdge0 | kMcdTriangleUseEdge1 | kMcdTriangleUseEdge2);
+  EXPECT_GT(touching, 40);
+  EXPECT_LT(touching, 180);
 }
 
 }  // namespace
