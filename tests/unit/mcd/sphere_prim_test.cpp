@@ -66,9 +66,9 @@ TEST(McdSphereBox, FaceEdgeVertexDeepAndSeparated) {
     expectContact(Hit(s.model, box.model), 0.6, 0, 0.5, 1, 0, 0, -0.8, 2 | (2 << 8));
     expectMirror(s.model, box.model);
   }
-  {  // centre inside near face -y
+  {  // centre inside near face -y: midway between y = -1.4 and -2
     Placed s(r5, 0, (MeReal)-1.9, 0);
-    expectContact(Hit(s.model, box.model), 0, -1.85, 0, 0, -1, 0, -0.6, 2 | (2 << 8));
+    expectContact(Hit(s.model, box.model), 0, -1.7, 0, 0, -1, 0, -0.6, 2 | (2 << 8));
   }
   {  // coincident centres: the nearest face (x, gap 1), no NaN
     Placed s(r5, 0, 0, 0);
@@ -81,7 +81,7 @@ TEST(McdSphereBox, FaceEdgeVertexDeepAndSeparated) {
     s.move((MeReal)1.501, 0, 0);
     EXPECT_EQ(Hit(s.model, box.model).touch, 0);
     EXPECT_EQ(Hit(box.model, s.model).touch, 0);
-    s.move((MeReal)1.3, (MeReal)2.3, 0);  // off the edge: |d| = 0.42 > 0.5? no: 0.424 < 0.5
+    s.move((MeReal)1.3, (MeReal)2.3, 0);  // near the edge: |d| = 0.424 < 0.5
     EXPECT_EQ(Hit(s.model, box.model).touch, 1);
     s.move((MeReal)1.4, (MeReal)2.4, 0);  // |d| = 0.566
     EXPECT_EQ(Hit(s.model, box.model).touch, 0);
