@@ -110,9 +110,9 @@ void Reduce(Pt *pts, int n, int keep) {
     }
 }
 
-int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
-    const Box b1(p->model1), b2(p->model2);
-    const MeReal tol = ContactTolerance(p->model1->framework);
+int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
+    const Box b1(m1), b2(m2);
+    const MeReal tol = ContactTolerance(m1->framework);
     const V3 T = b1.f.o - b2.f.o;
     MeReal bestFace = -MEINFINITY, bestEdge = -MEINFINITY;
     int faceAxis = 0, edgeAxis = -1;
@@ -171,6 +171,10 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         EmitV(r, b2.f.o + (b2.Radius(n) + (MeReal)0.5 * bestFace) * n, n, bestFace, 2, 2);
     }
     return Finish(r, n);
+}
+
+int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
+    return OrderedSameType(p, r, Test);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <initializer_list>
 #include <utility>
 
@@ -100,6 +101,29 @@ inline void ClosestSegmentSegment(V3 p0, V3 p1, V3 q0, V3 q1, MeReal &s, MeReal 
     t = (b * s + f) / e;
     if (t < 0) { t = 0; s = Clamp(-c / a, 0, 1); }
     else if (t > 1) { t = 1; s = Clamp((b - c) / a, 0, 1); }
+}
+
+}  // namespace karma::mcd::prim
+
+namespace karma::mcd::prim {
+
+// Same-type pairs (box-box, sphyl-sphyl) are called with the caller's order,
+// so to give exactly mirrored results for (a, b) and (b, a) the test runs
+// with the models in one fixed order (by address) and, when that is not the
+// caller's, negates the normals and swaps the dims bytes afterwards.
+template <class F>
+int OrderedSameType(McdModelPair *p, McdIntersectResult *r, F test) {
+    if (!std::less<const McdModel *>()(p->model2, p->model1))
+        return test(p->model1, p->model2, r);
+    const int first = r->contactCount;
+    const int touch = test(p->model2, p->model1, r);
+    for (int i = first; i < r->contactCount; ++i) {
+        McdContact &c = r->contacts[i];
+        MeVector3Scale(c.normal, -1);
+        c.dims = (MeI16)(((c.dims & 0xFF) << 8) | ((c.dims >> 8) & 0xFF));
+    }
+    if (touch) MeVector3Scale(r->normal, -1);
+    return touch;
 }
 
 }  // namespace karma::mcd::prim

@@ -42,9 +42,9 @@ V3 NormalBetween(const Seg &s1, const Seg &s2, V3 d) {
     return AnyPerpendicular(s1.a);
 }
 
-int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
-    const Seg s1(p->model1), s2(p->model2);
-    const MeReal tol = ContactTolerance(p->model1->framework);
+int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
+    const Seg s1(m1), s2(m2);
+    const MeReal tol = ContactTolerance(m1->framework);
     MeReal u, v;
     bool parallel = false;
     ClosestSegmentSegment(s1.e0, s1.e1, s2.e0, s2.e1, u, v, &parallel);
@@ -69,6 +69,10 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     }
     EmitV(r, (MeReal)0.5 * ((P - s1.r * n) + (Q + s2.r * n)), n, s, 2, 2);
     return Finish(r, n);
+}
+
+int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
+    return OrderedSameType(p, r, Test);
 }
 
 }  // namespace
