@@ -29,10 +29,11 @@ struct Seg {
     }
 };
 
-// The unit normal from Q to P, with fallbacks for touching core segments.
+// The unit normal from Q to P, with fallbacks for touching core segments
+// (d below 1e-5 of the sizes is rounding noise, not a direction).
 V3 NormalBetween(const Seg &s1, const Seg &s2, V3 d) {
     const MeReal dist = Norm(d);
-    if (dist > 0) return (1 / dist) * d;
+    if (dist > (MeReal)1e-5 * (s1.h + s2.h + s1.r + s2.r)) return (1 / dist) * d;
     V3 n = Cross(s1.a, s2.a);
     const MeReal len = Norm(n);
     if (len > (MeReal)1e-6) {
