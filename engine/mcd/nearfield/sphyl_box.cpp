@@ -13,7 +13,8 @@
 //    e0|/2 |a.L|, m the segment midpoint; the least overlap gives n (turned
 //    away from the box centre) and s = -o_L - r; P is the end of S deepest
 //    along -n.
-// When n is a box face normal (within 1e-4) the segment is clipped to that
+// When n is a box face normal (P beyond exactly one face, or a face axis
+// won) the segment is clipped to that
 // face's rectangle (the other two slabs) and each clipped end E at height
 // g = (E.n - h_face) gives a contact at E - (r + g)/2 n with separation g - r
 // when <= tolerance: a sphyl lying flat on a face has 2 contacts. Otherwise
@@ -61,16 +62,17 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     const V3 m = box.ToLocal(sphyl.o), e0 = m - H * a, e1 = m + H * a;
     V3 n, P;
     MeReal s, t0, t1;
+    int face = -1;  // the box face (axis index) n is the normal of, if any
     if (!ClipSlabs(e0, e1, h, 7, t0, t1)) {
         // Separated cores: nearest of the ends' clamps and the 12 edges.
         MeReal best = MEINFINITY;
-        V3 K;
-        auto consider = [&](V3 sp, V3 bp) {
+        V3 K, across;  // across: a x edge when both closest points are interior
+        auto consider = [&](V3 sp, V3 bp, V3 x) {
             const MeReal d2 = Dot(sp - bp, sp - bp);
-            if (d2 < best) { best = d2; P = sp; K = bp; }
+            if (d2 < best) { best = d2; P = sp; K = bp; across = x; }
         };
-        consider(e0, ClampToBox(e0, h));
-        consider(e1, ClampToBox(e1, h));
+        consider(e0, ClampToBox(e0, h), V3());
+        consider(e1, ClampToBox(e1, h), V3());
         for (int k = 0; k < 3; ++k)
             for (int c = 0; c < 4; ++c) {
                 V3 q0, q1;
@@ -80,49 +82,76 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
                 q0[k] = -h[k];
                 q1[k] = h[k];
                 MeReal u, v;
-                ClosestSegmentSegment(e0, e1, q0, q1, u, v);
-                consider(e0 + u * (e1 - e0), q0 + v * (q1 - q0));
+                bool par;
+                ClosestSegmentSegment(e0, e1, q0, q1, u, v, &par);
+                const bool interior = !par && u > 0 && u < 1 && v > 0 && v < 1;
+                consider(e0 + u * (e1 - e0), q0 + v * (q1 - q0), interior ? Cross(a, q1 - q0) : V3());
             }
         const MeReal dist = std::sqrt(best);
         s = dist - radius;
         if (s > tol) return 0;
         n = (1 / dist) * (P - K);
+        const MeReal alen = Norm(across);
+        if (alen > 0) {
+            // Interior of S against the interior of an edge: n is along
+            // a x edge exactly (no cancellation in P - K for small gaps).
+            n = (Dot(across, P - K) < 0 ? -1 / alen : 1 / alen) * across;
+            s = std::fabs(Dot(P - K, n)) - radius;
+        }
+        // P outside exactly one slab: the box point is on that face, and the
+        // normal is the face's (set exactly, free of rounding in P - K).
+        int outside = 0;
+        for (int k = 0; k < 3; ++k)
+            if (std::fabs(P[k]) > h[k]) { ++outside; face = k; }
+        if (outside != 1) face = -1;
     } else {
-        // Penetrating cores: least overlap over the Minkowski-difference axes.
+        // Penetrating cores: least overlap over the Minkowski-difference axes;
+        // an edge axis must beat the faces by a rounding margin (so a sphyl
+        // lying along a face keeps that face).
+        const MeReal margin = (MeReal)1e-5 * (H + h[0] + h[1] + h[2]);
         MeReal least = MEINFINITY;
-        auto axisTest = [&](V3 L) {
+        auto axisTest = [&](V3 L, int k) {
             const MeReal len = Norm(L);
             if (len < (MeReal)1e-4) return;
             L = (1 / len) * L;
             const MeReal hb = h[0] * std::fabs(L.x) + h[1] * std::fabs(L.y) + h[2] * std::fabs(L.z);
             const MeReal o = hb + H * std::fabs(Dot(a, L)) - std::fabs(Dot(m, L));
-            if (o < least) { least = o; n = Dot(m, L) < 0 ? -L : L; }
+            if (o < least - (k < 0 && face >= 0 ? margin : 0)) {
+                least = o;
+                n = Dot(m, L) < 0 ? -L : L;
+                face = k;
+            }
         };
         for (int k = 0; k < 3; ++k) {
             V3 x;
             x[k] = 1;
-            axisTest(x);
-            axisTest(Cross(a, x));
+            axisTest(x, k);
+        }
+        for (int k = 0; k < 3; ++k) {
+            V3 x;
+            x[k] = 1;
+            axisTest(Cross(a, x), -1);
         }
         s = -least - radius;
         P = Dot(e0, n) < Dot(e1, n) ? e0 : e1;
     }
-    // Face normal? Clip the segment to that face's rectangle.
-    for (int k = 0; k < 3; ++k) {
-        if (std::fabs(n[k]) < 1 - (MeReal)1e-4) continue;
+    // A face normal: clip the segment to that face's rectangle.
+    if (face >= 0) {
+        const int k = face;
         V3 f;
         f[k] = n[k] > 0 ? 1 : -1;
-        if (!ClipSlabs(e0, e1, h, 7 & ~(1 << k), t0, t1)) break;
         const V3 nw = box.Dir(f);
-        for (MeReal t : {t0, t1}) {
-            const V3 E = e0 + t * (e1 - e0);
-            const MeReal gap = Dot(E, f) - h[k];
-            if (gap - radius <= tol)
-                EmitV(r, box.ToWorld(E - (MeReal)0.5 * (radius + gap) * f), nw, gap - radius, 2, 2);
-            if ((t1 - t0) * 2 * H <= tol) break;  // one point
+        if (ClipSlabs(e0, e1, h, 7 & ~(1 << k), t0, t1)) {
+            for (MeReal t : {t0, t1}) {
+                const V3 E = e0 + t * (e1 - e0);
+                const MeReal gap = Dot(E, f) - h[k];
+                if (gap - radius <= tol)
+                    EmitV(r, box.ToWorld(E - (MeReal)0.5 * (radius + gap) * f), nw, gap - radius, 2, 2);
+                if ((t1 - t0) * 2 * H <= tol) break;  // one point
+            }
         }
         if (r->contactCount > 0) return Finish(r, nw);
-        break;
+        n = f;
     }
     const V3 nw = box.Dir(n);
     EmitV(r, box.ToWorld(P - (radius + (MeReal)0.5 * s) * n), nw, s, 2, 1);

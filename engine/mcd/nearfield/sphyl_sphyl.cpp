@@ -50,8 +50,21 @@ int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
     bool parallel = false;
     ClosestSegmentSegment(s1.e0, s1.e1, s2.e0, s2.e1, u, v, &parallel);
     const V3 P = s1.e0 + u * (s1.e1 - s1.e0), Q = s2.e0 + v * (s2.e1 - s2.e0);
-    const V3 n = NormalBetween(s1, s2, P - Q);
-    const MeReal dist = Norm(P - Q), s = dist - s1.r - s2.r;
+    V3 n = NormalBetween(s1, s2, P - Q);
+    MeReal dist = Norm(P - Q);
+    if (!parallel && u > 0 && u < 1 && v > 0 && v < 1) {
+        // Both interior: P - Q is along a1 x a2, and that cross product and
+        // the lines' distance |(o1 - o2).n| are free of the cancellation in
+        // P - Q when the cores nearly touch.
+        const V3 c = Cross(s1.a, s2.a);
+        const MeReal len = Norm(c);
+        if (len > (MeReal)1e-6) {
+            n = (1 / len) * c;
+            if (Dot(n, dist > 0 ? P - Q : s1.o - s2.o) < 0) n = -n;
+            dist = std::fabs(Dot(s1.o - s2.o, n));
+        }
+    }
+    const MeReal s = dist - s1.r - s2.r;
     if (s > tol) return 0;
     if (parallel && s1.h > 0 && s2.h > 0) {
         // Segment 2's ends projected on line 1 (coordinates along a1 from o1).

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "mcd_test_support.h"
 
@@ -71,8 +72,13 @@ inline D3 row(McdModelID m, int i) {
 // max over the model's points of x.d (d unit), for the solid primitives.
 inline double support(McdModelID m, const D3 &d) {
   McdGeometryID g = McdModelGetGeometry(m);
-  const D3 c = row(m, 3), az = row(m, 2);
+  const D3 c = row(m, 3);
+  D3 az = row(m, 2);
+  const double alen = std::sqrt(dot(az, az));  // unit to double precision
+  for (double &v : az) v /= alen;
   const double along = std::fabs(dot(az, d));
+  // |d - (d.a) a|, free of the cancellation in sqrt(1 - along^2)
+  const D3 perp = {d[0] - dot(d, az) * az[0], d[1] - dot(d, az) * az[1], d[2] - dot(d, az) * az[2]};
   switch (McdGeometryGetTypeId(g)) {
     case kMcdGeometryTypeSphere:
       return dot(c, d) + McdSphereGetRadius(g);
@@ -85,7 +91,7 @@ inline double support(McdModelID m, const D3 &d) {
     }
     case kMcdGeometryTypeCylinder:
       return dot(c, d) + McdCylinderGetHeight(g) / 2 * along +
-             McdCylinderGetRadius(g) * std::sqrt(std::fmax(0.0, 1 - along * along));
+             McdCylinderGetRadius(g) * std::sqrt(dot(perp, perp));
     case kMcdGeometryTypeSphyl:
       return dot(c, d) + McdSphylGetHeight(g) / 2 * along + McdSphylGetRadius(g);
     default:
@@ -101,34 +107,104 @@ inline double sepAlong(McdModelID m1, McdModelID m2, D3 n) {
   return -support(m1, {-n[0], -n[1], -n[2]}) - support(m2, n);
 }
 
+inline D3 cross(const D3 &a, const D3 &b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline D3 unit(D3 v) {
+  const double len = std::sqrt(dot(v, v));
+  for (double &x : v) x /= len;
+  return v;
+}
+
+// The directions where a model's support function has a kink: n.k = 0
+// for its box axes or its cylinder/sphyl axis.
+inline void kinkAxes(McdModelID m, std::vector<D3> &out) {
+  switch (McdGeometryGetTypeId(McdModelGetGeometry(m))) {
+    case kMcdGeometryTypeBox:
+      for (int i = 0; i < 3; ++i) out.push_back(unit(row(m, i)));
+      break;
+    case kMcdGeometryTypeCylinder:
+    case kMcdGeometryTypeSphyl:
+      out.push_back(unit(row(m, 2)));
+      break;
+    default:
+      break;
+  }
+}
+
 // The signed separation of two convex models (distance when apart, minus the
-// penetration depth when overlapping) = max over unit n of sepAlong: sampled
-// on a Fibonacci sphere (plus `hint`) and refined by hill climbing.
+// penetration depth when overlapping) = max over unit n of sepAlong. The
+// maximum lies where the support functions' kinks meet, on a kink circle or
+// in a smooth region, so the search covers: the points k_i x k_j and the
+// cylinder axes, each kink circle n.k = 0 (sampled, then refined by golden
+// section), and the sphere (Fibonacci sampling plus a random search with a
+// shrinking step), and the hint.
 inline double bruteSeparation(McdModelID m1, McdModelID m2, D3 hint = {0, 0, 0}) {
+  double bestS = -1e30;
   D3 best = {0, 0, 1};
-  double bestS = sepAlong(m1, m2, best);
-  if (dot(hint, hint) > 0 && sepAlong(m1, m2, hint) > bestS) {
-    best = hint;
-    bestS = sepAlong(m1, m2, hint);
+  auto tryDir = [&](const D3 &n) {
+    if (dot(n, n) < 1e-20) return;
+    const double s = sepAlong(m1, m2, n);
+    if (s > bestS) { bestS = s; best = unit(n); }
+  };
+  tryDir(hint);
+  std::vector<D3> k;
+  kinkAxes(m1, k);
+  kinkAxes(m2, k);
+  for (const D3 &a : k) {
+    tryDir(a);
+    tryDir({-a[0], -a[1], -a[2]});
+    for (const D3 &b : k) {
+      const D3 c = cross(a, b);
+      tryDir(c);
+      tryDir({-c[0], -c[1], -c[2]});
+    }
+    // The circle n.a = 0: n = cos t u + sin t v.
+    const D3 u = unit(std::fabs(a[0]) < 0.6 ? cross(a, {1, 0, 0}) : cross(a, {0, 1, 0}));
+    const D3 v = cross(a, u);
+    auto at = [&](double t) {
+      return D3{std::cos(t) * u[0] + std::sin(t) * v[0], std::cos(t) * u[1] + std::sin(t) * v[1],
+                std::cos(t) * u[2] + std::sin(t) * v[2]};
+    };
+    const int M = 720;
+    double bt = 0, bs = -1e30;
+    for (int i = 0; i < M; ++i) {
+      const double s = sepAlong(m1, m2, at(2 * M_PI * i / M));
+      if (s > bs) { bs = s; bt = 2 * M_PI * i / M; }
+    }
+    double lo = bt - 2 * M_PI / M, hi = bt + 2 * M_PI / M;
+    for (int it = 0; it < 80; ++it) {
+      const double m1t = lo + (hi - lo) * 0.381966, m2t = hi - (hi - lo) * 0.381966;
+      if (sepAlong(m1, m2, at(m1t)) < sepAlong(m1, m2, at(m2t))) lo = m1t;
+      else hi = m2t;
+    }
+    tryDir(at((lo + hi) / 2));
   }
   const int N = 3000;
   for (int i = 0; i < N; ++i) {
     const double z = 1 - (2 * i + 1.0) / N, rr = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
-    const D3 n = {rr * std::cos(phi), rr * std::sin(phi), z};
-    const double s = sepAlong(m1, m2, n);
-    if (s > bestS) { bestS = s; best = n; }
+    tryDir({rr * std::cos(phi), rr * std::sin(phi), z});
   }
-  for (double step = 0.05; step > 1e-9;) {
-    bool improved = false;
-    for (int k = 0; k < 6; ++k) {
-      D3 n = best;
-      n[k / 2] += (k & 1) ? -step : step;
-      const double len = std::sqrt(dot(n, n));
-      for (double &v : n) v /= len;
-      const double s = sepAlong(m1, m2, n);
-      if (s > bestS) { bestS = s; best = n; improved = true; }
+  // Random search with a shrinking step: 48 fixed random directions per step.
+  static const std::vector<D3> dirs = [] {
+    std::vector<D3> d;
+    unsigned seed = 7;
+    while (d.size() < 48) {
+      D3 x;
+      for (double &c : x) {
+        seed = seed * 1664525u + 1013904223u;
+        c = (seed >> 8) / 8388608.0 - 1;
+      }
+      const double len = std::sqrt(dot(x, x));
+      if (len > 0.1 && len <= 1) d.push_back({x[0] / len, x[1] / len, x[2] / len});
     }
-    if (!improved) step /= 2;
+    return d;
+  }();
+  for (double step = 0.05; step > 1e-10;) {
+    const D3 from = best;
+    const double before = bestS;
+    for (const D3 &e : dirs) tryDir({from[0] + step * e[0], from[1] + step * e[1], from[2] + step * e[2]});
+    if (!(bestS > before)) step /= 2;
   }
   return bestS;
 }
