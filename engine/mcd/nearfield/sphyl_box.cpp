@@ -5,20 +5,22 @@
 //  - S misses the box (slab test): the closest points of S and the box are
 //    either an end of S and its clamp into the box, or a point of S and a
 //    point of one of the 12 box edges (segment-segment); the nearest pair
-//    (P on S, K on the box) gives d, n = (P - K)/d, s = d - r.
+//    (P on S, K on the box) gives d, n = (P - K)/d, s = d - r. For interior
+//    points of S and of an edge n is taken as +-(a x edge), which P - K is
+//    parallel to (and which does not lose digits when d is small).
 //  - S enters the box: the minimum translation is along one of the 6 axes
-//    of the segment/box Minkowski difference, the box axes x_i and the
-//    cross products a x x_i (a = direction of S). On axis L the overlap is
-//    o_L = (hb + hs) - |(m - 0).L| with hb = sum h_i |x_i.L|, hs = |e1 -
-//    e0|/2 |a.L|, m the segment midpoint; the least overlap gives n (turned
-//    away from the box centre) and s = -o_L - r; P is the end of S deepest
-//    along -n.
-// When n is a box face normal (P beyond exactly one face, or a face axis
-// won) the segment is clipped to that
-// face's rectangle (the other two slabs) and each clipped end E at height
-// g = (E.n - h_face) gives a contact at E - (r + g)/2 n with separation g - r
-// when <= tolerance: a sphyl lying flat on a face has 2 contacts. Otherwise
-// one contact midway between P - r n and P - (r + s) n.
+//    of the segment/box Minkowski sum (a zonotope), the box axes x_i and
+//    the cross products a x x_i (a = direction of S). On axis L the overlap
+//    is o_L = hb + H |a.L| - |m.L| with hb = sum h_i |x_i.L|, H the half
+//    length, m the segment midpoint; the least overlap gives n (turned away
+//    from the box centre) and s = -o_L - r; P is the end of S deepest along
+//    -n. An edge axis must beat the faces by a rounding margin.
+// Face case (P beyond exactly one face's slab, or a face axis won): S is
+// clipped to that face's rectangle (the other two slabs) and each clipped end
+// E at height g = E.f - h_face over it (f the face normal) gives a contact at
+// E - (r + g)/2 f with separation g - r when that is <= tolerance: a sphyl
+// lying flat on a face has 2 contacts, standing on its end 1. Otherwise one
+// contact midway between P - r n and the box point P - (r + s) n.
 #include "prim_math.h"
 
 using namespace karma::mcd;
