@@ -1,7 +1,7 @@
 // box_box_test.cpp: box against box: resting manifolds (at the corners of
 // the overlap), the 45-degree octagon, buffer reduction, deep overlap,
-// edge-edge, separation found only on an edge axis, coincident boxes, both
-// argument orders.
+// corner on a face, edge-edge, separation found only on an edge axis,
+// coincident boxes, both argument orders.
 #include <algorithm>
 #include <set>
 #include <utility>
@@ -134,6 +134,27 @@ TEST(McdBoxBox, DeepOverlapAndTiltedOntoAnEdge) {
     EXPECT_NEAR(e.c[i].normal[2], 1, kEps);
   }
   expectMirrored(top.model, base.model);
+}
+
+TEST(McdBoxBox, CornerOnAFaceGivesOneContact) {
+  Framework fw;
+  Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);  // top face z = 1
+  // A unit-half cube turned about (1, -1, 0) by acos(1/sqrt 3): a body
+  // diagonal vertical, so a corner sqrt 3 below the centre, 0.01 deep.
+  const double r3 = std::sqrt(3.0);
+  Placed cube(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)(1 + r3 - 0.01), {1, -1, 0},
+              (MeReal)std::acos(1 / r3));
+  Hit h(cube.model, base.model);
+  ASSERT_EQ(h.count(), 1);
+  EXPECT_NEAR(h.c[0].separation, -0.01, 1e-5);
+  EXPECT_NEAR(h.c[0].normal[2], 1, kEps);
+  EXPECT_NEAR(h.c[0].position[0], 0, 1e-5);
+  EXPECT_NEAR(h.c[0].position[1], 0, 1e-5);
+  EXPECT_NEAR(h.c[0].position[2], 0.995, 1e-5);
+  EXPECT_EQ(h.c[0].dims, (MeI16)(0 | (2 << 8)));  // cube corner on the base's face
+  expectMirrored(cube.model, base.model);
+  cube.move(0, 0, (MeReal)(1 + r3 + 0.01));
+  EXPECT_EQ(Hit(cube.model, base.model).touch, 0);
 }
 
 TEST(McdBoxBox, EdgeAgainstEdgeGivesOneContact) {
