@@ -75,6 +75,13 @@ TEST_P(PrimRandom, RandomPosesAgreeWithBruteForce) {
     EXPECT_GE(f.minSep(), truth - pc.normalTol - eps) << "trial " << trial;
     if (pc.exactDepth) {
       EXPECT_NEAR(f.minSep(), truth, eps) << "trial " << trial;
+      // Each contact lies midway (along n) between the surfaces' extreme
+      // points: model1's lowest along n and model2's highest.
+      const double mid = (support(B.model, n) - support(A.model, {-n[0], -n[1], -n[2]})) / 2;
+      for (int i = 0; i < f.count(); ++i) {
+        const D3 p = {f.c[i].position[0], f.c[i].position[1], f.c[i].position[2]};
+        EXPECT_NEAR(dot(p, n), mid, 4 * eps) << "trial " << trial;
+      }
     }
   }
   EXPECT_GT(touching, 20);
