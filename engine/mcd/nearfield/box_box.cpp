@@ -166,8 +166,9 @@ int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
     for (int i = 0; i < keep; ++i)
         EmitV(r, pts[i].p, n, pts[i].depth, refIs1 ? 2 : pts[i].dims, refIs1 ? pts[i].dims : 2);
     if (r->contactCount == 0) {
-        // Clipping lost every point (touching at the tolerance): one contact
-        // at the midpoint of the centres' segment projected between the boxes.
+        // Clipping lost every point (the deepest corner lies outside the
+        // reference face): one contact on the line through box 2's centre
+        // along n, midway between the two boxes' support planes.
         EmitV(r, b2.f.o + (b2.Radius(n) + (MeReal)0.5 * bestFace) * n, n, bestFace, 2, 2);
     }
     return Finish(r, n);

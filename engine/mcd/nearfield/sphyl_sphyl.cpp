@@ -3,9 +3,12 @@
 // Each sphyl is its core segment (centre o, z axis a, half length H) swept
 // by its radius. The closest points P on segment 1 and Q on segment 2
 // (ClosestSegmentSegment) give d = |P - Q|, n = (P - Q)/d, s = d - r1 - r2
-// and one contact midway between P - r1 n and Q + r2 n. When the segments
-// cross (d = 0) n is a1 x a2 turned towards o1 - o2 (or, for one line,
-// perpendicular to it). Parallel axes: the part of segment 1 that projects
+// and one contact midway between P - r1 n and Q + r2 n. When P and Q are
+// both interior, n is taken as a1 x a2 (P - Q is parallel to it) turned
+// towards P - Q, and d = |(o1 - o2).n|, which lose no digits when the cores
+// nearly touch. When the segments cross (d ~ 0) n is a1 x a2 turned towards
+// o1 - o2 (or, for one line, perpendicular to it). Parallel axes: the part
+// of segment 1 that projects
 // onto segment 2 is the interval [t0, t1] along a1; when it has length,
 // both of its ends give a contact (same n and s: the lines' distance).
 #include "prim_math.h"
