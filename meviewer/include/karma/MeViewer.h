@@ -1,6 +1,170 @@
 /* MeViewer.h: the Karma demo renderer (Appendix B of the guide).
- * The API arrives with the viewer issue. */
+ *
+ * A program creates a render context from its command line, creates
+ * graphics pointed at the transforms it simulates, and hands control to
+ * RRun, which loops { input, tick, draw } until the user quits, -frames N
+ * frames have been drawn, or RRenderQuit is called, and then ends the
+ * program through exit() (so cleanup registered with atexit runs; RRun never
+ * returns):
+ *
+ *   MeCommandLineOptions *opts = MeCommandLineOptionsCreate(argc, argv);
+ *   RRender *rc = RRenderContextCreate(opts, 0, 1);
+ *   MeCommandLineOptionsDestroy(opts);
+ *   if (!rc) return 1;
+ *   RGraphicSphereCreate(rc, 1, red, MdtBodyGetTransformPtr(body));
+ *   atexit(cleanup);            (cleanup calls RRenderContextDestroy(rc))
+ *   RRun(rc, tick, 0);
+ *
+ * Backends, chosen on the command line (`prog -help` lists every option):
+ *   -gl      (default; -d3d is a synonym) OpenGL rendered offscreen through OSMesa
+ *   -null    the loop runs, nothing is drawn
+ *   -bench   as -null, and per-frame timing statistics are printed at exit
+ *   -profile draws, and prints a per-phase timing table at exit
+ * Output: -frames N, -out DIR (DIR/frame_00000.png ...), -every K, -bmp,
+ * -size WxH (default 640x480).
+ *
+ * Functions taking an RRender* accept NULL with a warning and do nothing
+ * (returning NULL / -1 / 1 where they return something). */
 #ifndef KARMA_MEVIEWER_H
 #define KARMA_MEVIEWER_H
+
 #include "MeGlobals.h"
-#endif
+#include "MeViewerTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+/* ---- render contexts and the main loop --------------------------------- */
+
+/* Reads the viewer's options from `options`, then from `overrideOptions`
+ * (which win), removing them from both when `eat` is true; fills the
+ * context with defaults and starts the backend. Returns NULL (with a
+ * message) if an option is malformed, the output directory cannot be
+ * written, or the backend cannot start. -help prints the options and exits
+ * the program with status 0. */
+MEPUBLIC RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options,
+                                             MeCommandLineOptions *overrideOptions, MeBool eat);
+/* Frees the context, its graphics in both lists, native lines and
+ * textures. NULL is accepted. Returns 0. */
+MEPUBLIC int MEAPI RRenderContextDestroy(RRender *rc);
+/* Asks RRun to stop before the next frame. */
+MEPUBLIC void MEAPI RRenderQuit(RRender *rc);
+/* Runs the loop (see the top of this file); ends the program with exit(0),
+ * or exit(1) when rc is NULL. */
+MEPUBLIC void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata);
+
+/* ---- render lists ------------------------------------------------------ */
+
+MEPUBLIC void MEAPI RGraphicAddToList(RRender *rc, RGraphic *rg, int is2D);
+MEPUBLIC void MEAPI RGraphicRemoveFromList(RRender *rc, RGraphic *rg, int is2D);
+
+/* ---- primitives (each is added to the context's 3D list, text and
+ * rectangles to the 2D list; NULL on failure) ----------------------------- */
+
+/* x, y: left and top edge in 2D units. */
+MEPUBLIC RGraphic *MEAPI RGraphic2DRectangleCreate(RRender *rc, AcmeReal x, AcmeReal y, AcmeReal width,
+                                                   AcmeReal height, const float color[4]);
+/* A square in x-z of side `length` at height y_pos, cut into `triangles`
+ * cells per side (two triangles each); textures span it once. */
+MEPUBLIC RGraphic *MEAPI RGraphicGroundPlaneCreate(RRender *rc, AcmeReal length, int triangles,
+                                                   const float color[4], AcmeReal y_pos);
+/* Centred at the origin, sides x, y, z. */
+MEPUBLIC RGraphic *MEAPI RGraphicBoxCreate(RRender *rc, AcmeReal x, AcmeReal y, AcmeReal z,
+                                           const float color[4], MeMatrix4Ptr matrix);
+/* Axis z: apex at z = uheight, base (radius `radius`) at z = -lheight. */
+MEPUBLIC RGraphic *MEAPI RGraphicConeCreate(RRender *rc, AcmeReal radius, AcmeReal uheight, AcmeReal lheight,
+                                            const float color[4], MeMatrix4Ptr matrix);
+/* Axis z, from -height/2 to height/2. */
+MEPUBLIC RGraphic *MEAPI RGraphicCylinderCreate(RRender *rc, AcmeReal radius, AcmeReal height,
+                                                const float color[4], MeMatrix4Ptr matrix);
+MEPUBLIC RGraphic *MEAPI RGraphicSphereCreate(RRender *rc, AcmeReal radius, const float color[4],
+                                              MeMatrix4Ptr matrix);
+/* In the x-y plane, centred, facing +z. */
+MEPUBLIC RGraphic *MEAPI RGraphicSquareCreate(RRender *rc, AcmeReal side, const float color[4],
+                                              MeMatrix4Ptr matrix);
+/* About the z axis; the surface spans distances innerRadius..outerRadius
+ * from the axis (tube radius (outer - inner) / 2). */
+MEPUBLIC RGraphic *MEAPI RGraphicTorusCreate(RRender *rc, AcmeReal innerRadius, AcmeReal outerRadius,
+                                             const float color[4], MeMatrix4Ptr matrix);
+/* Axis z, a `sides`-gon of radius bottomRadius at z = bottom to one of
+ * topRadius at z = top, both ends capped. */
+MEPUBLIC RGraphic *MEAPI RGraphicFrustumCreate(RRender *rc, AcmeReal bottomRadius, AcmeReal topRadius,
+                                               AcmeReal bottom, AcmeReal top, int sides, const float color[4],
+                                               MeMatrix4Ptr matrix);
+/* A line as an RGraphic: one degenerate wireframe triangle (origin, end,
+ * end). Move it with RGraphicLineMoveEnds. */
+MEPUBLIC RGraphic *MEAPI RGraphicLineCreate(RRender *rc, AcmeReal *origin, AcmeReal *end, const float color[4],
+                                            MeMatrix4Ptr matrix);
+/* Returns 0, or 1 with a warning if lineG is not a line made by RGraphicLineCreate. */
+MEPUBLIC int MEAPI RGraphicLineMoveEnds(RGraphic *lineG, AcmeReal *origin, AcmeReal *end);
+/* A line the graphics library draws itself; kept in the context. */
+MEPUBLIC RNativeLine *MEAPI RNLineCreate(RRender *const rc, const AcmeReal start[3], const AcmeReal end[3],
+                                         const AcmeReal color[4], const MeVector4 *const matrix);
+MEPUBLIC void MEAPI RNLineMoveEnds(RNativeLine *const line, const AcmeReal start[3], const AcmeReal end[3]);
+/* Text in the 2D list, textured with the built-in "font": x, y are the left
+ * and top edge in 2D units; '\n' starts a new line. */
+MEPUBLIC RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal x, AcmeReal y,
+                                            const float color[4]);
+
+/* ---- objects ------------------------------------------------------------ */
+
+/* Room for numVertices vertices (none in use yet: m_nNumVertices = 0),
+ * white, untextured, solid, no transform; in no list. */
+MEPUBLIC RGraphic *MEAPI RGraphicCreateEmpty(int numVertices);
+/* Frees a graphic that is in no list (its header and vertices too). */
+MEPUBLIC void MEAPI RGraphicDestroy(RGraphic *rg);
+/* Removes rg from the given list and frees it. */
+MEPUBLIC void MEAPI RGraphicDelete(RRender *rc, RGraphic *rg, int is2D);
+MEPUBLIC void MEAPI RGraphicSetTransformPtr(RGraphic *g, MeMatrix4Ptr matrix);
+/* Ambient and diffuse become color; emissive and specular become 0. */
+MEPUBLIC void MEAPI RGraphicSetColor(RGraphic *g, const float color[4]);
+/* The ambient colour. */
+MEPUBLIC void MEAPI RGraphicGetColor(RGraphic *g, float color[4]);
+/* Sets or clears the wireframe flag. */
+MEPUBLIC void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool wireframe);
+/* Appends the triangles of the strips to rg's list (growing the
+ * allocation as needed), alternate triangles reversed so every triangle
+ * keeps the strip's winding. rg->m_pVertices may move. */
+MEPUBLIC void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize,
+                                              int *stripStart, int numStrips);
+
+/* ---- textures ------------------------------------------------------------ */
+
+/* The ID for a texture file name (a name seen before keeps its ID), or -1
+ * when all R_MAX_TEXTURES IDs are taken. Files load when RRun starts (or
+ * the next frame, for names added later). */
+MEPUBLIC int MEAPI RRenderTextureCreate(RRender *rc, char *filename);
+/* Gives rg the texture `filename` (no extension: ".bmp" is added and the
+ * search path of docs/ARCHITECTURE.md followed). Returns the ID, or -1
+ * (and rg is untextured) when all IDs are taken. */
+MEPUBLIC int MEAPI RGraphicSetTexture(RRender *rc, RGraphic *rg, char *filename);
+
+/* ---- camera -------------------------------------------------------------- */
+
+MEPUBLIC void MEAPI RCameraSetLookAt(RRender *rc, const AcmeVector3 lookAt);
+MEPUBLIC void MEAPI RCameraGetLookAt(RRender *rc, AcmeVector3 camlookat);
+/* dist is clamped to >= 0.01, theta wrapped into [-pi, pi], phi clamped
+ * into [-pi/2, pi/2]. */
+MEPUBLIC void MEAPI RCameraSetView(RRender *rc, AcmeReal dist, AcmeReal theta, AcmeReal phi);
+MEPUBLIC void MEAPI RCameraGetPosition(RRender *rc, AcmeVector3 campos);
+MEPUBLIC void MEAPI RCameraZoom(RRender *rc, AcmeReal dist);
+/* Pans move the look-at point and the camera together along the camera's
+ * right (X), up (Y) and forward (Z, towards the look-at) directions. */
+MEPUBLIC void MEAPI RCameraPanX(RRender *rc, AcmeReal dist);
+MEPUBLIC void MEAPI RCameraPanY(RRender *rc, AcmeReal dist);
+MEPUBLIC void MEAPI RCameraPanZ(RRender *rc, AcmeReal dist);
+MEPUBLIC void MEAPI RCameraRotateAngle(RRender *rc, AcmeReal d_theta);
+MEPUBLIC void MEAPI RCameraRotateElevation(RRender *rc, AcmeReal d_phi);
+MEPUBLIC void MEAPI RCameraUpdate(RRender *rc);
+
+/* ---- lights -------------------------------------------------------------- */
+
+MEPUBLIC void MEAPI RLightSwitchOn(RRender *rc, RRenderLight light);
+MEPUBLIC void MEAPI RLightSwitchOff(RRender *rc, RRenderLight light);
+/* The guide names these functions both RLightSwitchOn/Off and
+ * RSwitchLightOn/Off; both spellings work. */
+MEPUBLIC void MEAPI RSwitchLightOn(RRender *rc, RRenderLight light);
+MEPUBLIC void MEAPI RSwitchLightOff(RRender *rc, RRenderLight light);
+
+ME_EXTERN_C_END
+
+#endif /* KARMA_MEVIEWER_H */
