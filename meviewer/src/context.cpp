@@ -61,13 +61,13 @@ void SetDefaults(RRender *rc) {
 /* Creates the output directory if needed and proves it writable. */
 bool PrepareOutputDir(const std::string &dir, std::string &error) {
   std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+    error = "the output path '" + dir + "' exists and is not a directory";
+    return false;
+  }
   std::filesystem::create_directories(dir, ec);
   if (ec) {
     error = "cannot create the output directory '" + dir + "': " + ec.message();
-    return false;
-  }
-  if (!std::filesystem::is_directory(dir, ec)) {
-    error = "the output path '" + dir + "' exists and is not a directory";
     return false;
   }
   const std::filesystem::path probe = std::filesystem::path(dir) / ".meviewer-write-test";

@@ -5,9 +5,11 @@
  * of 1-unit "pixels", about 5 wide and up to 10 high including descenders.
  * Each printable ASCII character c (32..127) is filled at 2 texels per unit
  * into cell (c - 32) of a 256x256 RGBA texture: kFontColumns cells of
- * kFontCellW x kFontCellH texels per row, the glyph offset by (1, 1). The
+ * kFontCellW x kFontCellH texels per row, the glyph offset by (2, 2). The
  * texture is white with the glyph's coverage in alpha, so text takes the
- * colour of its graphic and blends over the scene. */
+ * colour of its graphic and blends over the scene. FontAdvance gives each
+ * character's width in font units (proportional spacing, as stb_easy_font
+ * prints). */
 #include "viewer_internal.h"
 
 #include <cstring>
@@ -26,7 +28,7 @@
 namespace karma::viewer {
 
 Image MakeFontImage() {
-  constexpr int kScale = 2, kOffset = 1;
+  constexpr int kScale = 2, kOffset = 2; /* even: strokes land on whole pixels */
   Image img;
   img.width = img.height = kFontTextureSize;
   img.channels = 4;
@@ -60,6 +62,11 @@ Image MakeFontImage() {
     }
   }
   return img;
+}
+
+int FontAdvance(unsigned char c) {
+  if (c < 32 || c >= 128) c = '?';
+  return stb_easy_font_charinfo[c - 32].advance & 15;
 }
 
 } // namespace karma::viewer

@@ -67,6 +67,8 @@ constexpr int kFontCellW = 16, kFontCellH = 28, kFontColumns = 16, kFontRows = 6
 constexpr int kFontTextureSize = 256;
 constexpr int kFontTextureID = R_MAX_TEXTURES; /* outside the program's IDs */
 Image MakeFontImage();
+/* Horizontal advance of a character in font units (= 2D units). */
+int FontAdvance(unsigned char c);
 
 /* The directories searched for texture files, in order (ARCHITECTURE.md). */
 std::vector<std::string> TextureSearchPath();
