@@ -167,4 +167,7 @@ MEPUBLIC void MEAPI RSwitchLightOff(RRender *rc, RRenderLight light);
 
 ME_EXTERN_C_END
 
+/* Colours given as MeReal arrays in a double build (see the header). */
+#include "MeViewerColor.h"
+
 #endif /* KARMA_MEVIEWER_H */

@@ -157,7 +157,7 @@ TEST(Textures, CheckerboardIsFoundAndBadFilesFallBackToUntextured) {
   RRender *rc = MakeContext("prog -null");
   ASSERT_NE(rc, nullptr);
   char checker[] = "checkerboard", tiny[] = "tiny", cut[] = "cut", missing[] = "no-such-texture";
-  RGraphic *g = RGraphicBoxCreate(rc, 1, 1, 1, nullptr, nullptr);
+  RGraphic *g = RGraphicBoxCreate(rc, 1, 1, 1, static_cast<const float *>(nullptr), nullptr);
   EXPECT_EQ(RGraphicSetTexture(rc, g, checker), 0);
   EXPECT_EQ(g->m_pObject->m_nTextureID, 0);
   EXPECT_EQ(RRenderTextureCreate(rc, tiny), 1);
