@@ -3,7 +3,7 @@
  *
  * stb_easy_font describes each glyph as axis-aligned rectangles on a grid
  * of 1-unit "pixels", about 5 wide and up to 10 high including descenders.
- * Each printable ASCII character c (32..127) is filled at 2 texels per unit
+ * Each printable ASCII character c (32..126) is filled at 2 texels per unit
  * into cell (c - 32) of a 256x256 RGBA texture: kFontColumns cells of
  * kFontCellW x kFontCellH texels per row, the glyph offset by (2, 2). The
  * texture is white with the glyph's coverage in alpha, so text takes the
@@ -40,7 +40,7 @@ Image MakeFontImage() {
   };
   static_assert(sizeof(QuadVertex) == 16, "stb_easy_font writes 16-byte vertices");
   QuadVertex buffer[4 * 256];
-  for (int c = 32; c < 128; ++c) {
+  for (int c = 32; c < 127; ++c) { /* entry 95 (127) is the table's end marker */
     char text[2] = {char(c), 0};
     const int quads = stb_easy_font_print(0, 0, text, nullptr, buffer, int(sizeof buffer));
     const int cell = c - 32, cx = (cell % kFontColumns) * kFontCellW, cy = (cell / kFontColumns) * kFontCellH;
@@ -65,7 +65,7 @@ Image MakeFontImage() {
 }
 
 int FontAdvance(unsigned char c) {
-  if (c < 32 || c >= 128) c = '?';
+  if (c < 32 || c >= 127) c = '?';
   return stb_easy_font_charinfo[c - 32].advance & 15;
 }
 

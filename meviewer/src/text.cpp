@@ -7,7 +7,7 @@
  * 2W x 2H texels of the cell. The pen then moves by the character's
  * own advance (FontAdvance), so spacing is proportional. Spaces take room
  * but no quad;
- * characters outside printable ASCII show as '?'. */
+ * characters outside printable ASCII (32..126) show as '?'. */
 #include "viewer_internal.h"
 
 #include <cmath>
@@ -36,7 +36,7 @@ RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal x, AcmeReal
     }
     if (*c != ' ') {
       const unsigned char ch = static_cast<unsigned char>(*c);
-      const int cell = (ch >= 32 && ch < 128 ? ch : '?') - 32;
+      const int cell = (ch >= 32 && ch < 127 ? ch : '?') - 32;
       const float u0 = float(cell % kFontColumns * kFontCellW) / kFontTextureSize, v0 = float(cell / kFontColumns) * dv;
       const float x0 = pen, y0 = float(y) + H * float(line);
       const RObjectVertex a = {x0, y0, 0, 0, 0, 1, u0, v0};

@@ -62,7 +62,7 @@ struct Texture {
 };
 
 /* The font texture: 16 x 6 cells of R_FONT_CELL_W x R_FONT_CELL_H texels for
- * the printable ASCII characters 32..127, white with coverage in alpha. */
+ * the printable ASCII characters 32..126, white with coverage in alpha. */
 constexpr int kFontCellW = 16, kFontCellH = 28, kFontColumns = 16, kFontRows = 6;
 constexpr int kFontTextureSize = 256;
 constexpr int kFontTextureID = R_MAX_TEXTURES; /* outside the program's IDs */
