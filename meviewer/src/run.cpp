@@ -92,3 +92,20 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
   p->running = false;
   std::exit(0);
 }
+
+namespace {
+
+struct NoDataTick {
+  RMainLoopCallBackNoData tick;
+};
+
+void MEAPI CallNoDataTick(RRender *rc, void *userdata) { static_cast<NoDataTick *>(userdata)->tick(rc); }
+
+} // namespace
+
+/* The record lives in this frame, which RRun never returns to. */
+void MEAPI RRunNoData(RRender *rc, RMainLoopCallBackNoData tick, void *userdata) {
+  (void)userdata; /* a tick without user data cannot receive it */
+  NoDataTick record{tick};
+  RRun(rc, tick ? CallNoDataTick : nullptr, &record);
+}

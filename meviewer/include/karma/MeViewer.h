@@ -51,6 +51,8 @@ MEPUBLIC void MEAPI RRenderQuit(RRender *rc);
 /* Runs the loop (see the top of this file); ends the program with exit(0),
  * or exit(1) when rc is NULL. */
 MEPUBLIC void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata);
+/* RRun for a tick without user data (see RRun's forms below). */
+MEPUBLIC void MEAPI RRunNoData(RRender *rc, RMainLoopCallBackNoData tick, void *userdata);
 
 /* ---- render lists ------------------------------------------------------ */
 
@@ -166,6 +168,22 @@ MEPUBLIC void MEAPI RSwitchLightOn(RRender *rc, RRenderLight light);
 MEPUBLIC void MEAPI RSwitchLightOff(RRender *rc, RRenderLight light);
 
 ME_EXTERN_C_END
+
+/* The guide calls RRun as RRun(rc, tick, 0) and as RRun(rc, tick), and
+ * writes ticks both with and without a user-data parameter. All four
+ * combinations work: in C11 RRun is also a macro that counts its arguments
+ * and picks RRunNoData for a one-parameter tick (_Generic); in C++ there
+ * are overloads (there, pass a real tick: a null one is ambiguous). */
+#if !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L
+#  define R_RUN_PICK_(tick) _Generic((tick), RMainLoopCallBackNoData: RRunNoData, default: RRun)
+#  define R_RUN_3_(rc, tick, userdata) R_RUN_PICK_(tick)(rc, tick, userdata)
+#  define R_RUN_2_(rc, tick) R_RUN_PICK_(tick)(rc, tick, 0)
+#  define R_RUN_SELECT_(a, b, c, name, ...) name
+#  define RRun(...) R_RUN_SELECT_(__VA_ARGS__, R_RUN_3_, R_RUN_2_, R_RUN_NEEDS_2_OR_3_ARGUMENTS)(__VA_ARGS__)
+#elif defined(__cplusplus)
+inline void RRun(RRender *rc, RMainLoopCallBack tick) { RRun(rc, tick, 0); }
+inline void RRun(RRender *rc, RMainLoopCallBackNoData tick, void *userdata = 0) { RRunNoData(rc, tick, userdata); }
+#endif
 
 /* Colours given as MeReal arrays in a double build (see the header). */
 #include "MeViewerColor.h"

@@ -101,8 +101,10 @@ typedef enum RRenderLight {
 struct RRender;
 struct RRenderPrivate;
 
-/* The per-frame callback of RRun. */
+/* The per-frame callback of RRun. The guide also writes a tick without
+ * user data (`void MEAPI Tick(RRender *rc)`); MeViewer.h accepts both. */
 typedef void(MEAPI *RMainLoopCallBack)(struct RRender *rc, void *userdata);
+typedef void(MEAPI *RMainLoopCallBackNoData)(struct RRender *rc);
 
 #define R_APPNAME_SIZE 256
 

@@ -25,3 +25,27 @@ int ViewerCApiCheck(RRender *rc) {
     RGraphicSetColor(rc->m_pRG_First, color);
     return made;
 }
+
+/* The guide's tick forms, run through RRun's two- and three-argument
+ * forms (each ends the process; see run_test.cpp). */
+#include <stdio.h>
+
+static int ticks;
+static void MEAPI TickNoData(RRender *rc) {
+    (void)rc;
+    fprintf(stderr, "C tick without user data %d\n", ++ticks);
+}
+static void MEAPI TickWithData(RRender *rc, void *userdata) {
+    (void)rc;
+    fprintf(stderr, "C tick with user data %d\n", ++*(int *)userdata);
+}
+
+void ViewerCRunTwoArguments(RRender *rc);
+void ViewerCRunNoDataThreeArguments(RRender *rc);
+void ViewerCRunWithData(RRender *rc);
+void ViewerCRunTwoArguments(RRender *rc) { RRun(rc, TickNoData); }
+void ViewerCRunNoDataThreeArguments(RRender *rc) { RRun(rc, TickNoData, 0); }
+void ViewerCRunWithData(RRender *rc) {
+    static int n;
+    RRun(rc, TickWithData, &n);
+}

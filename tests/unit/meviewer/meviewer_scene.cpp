@@ -161,5 +161,5 @@ int main(int argc, const char *argv[]) {
     return 1;
   }
   std::atexit(Cleanup);
-  RRun(rc, nullptr, nullptr);
+  RRun(rc, static_cast<RMainLoopCallBack>(nullptr), nullptr);
 }

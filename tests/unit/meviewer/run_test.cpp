@@ -20,7 +20,7 @@ int gQuitAt = -1;
 
 void MEAPI Tick(RRender *rc, void *userdata) {
   ++gTicks;
-  *static_cast<int *>(userdata) += 1;
+  if (userdata) *static_cast<int *>(userdata) += 1;
   if (gTicks == gQuitAt) RRenderQuit(rc);
 }
 
@@ -97,6 +97,30 @@ TEST_F(RunDeathTest, EveryAndBmpChooseWhichFramesAndTheFormat) {
   for (const char *name : {"frame_00001.bmp", "frame_00003.bmp", "frame_00000.png"})
     EXPECT_FALSE(std::filesystem::exists(dir.path() / name)) << name;
   EXPECT_EQ(std::filesystem::file_size(dir.path() / "frame_00000.bmp"), 54u + 32u * 32u * 3u);
+}
+
+extern "C" void ViewerCRunTwoArguments(RRender *rc);
+extern "C" void ViewerCRunNoDataThreeArguments(RRender *rc);
+extern "C" void ViewerCRunWithData(RRender *rc);
+
+TEST_F(RunDeathTest, GuideTickAndRunFormsFromC) {
+  EXPECT_EXIT(ViewerCRunTwoArguments(MakeContext("prog -null -frames 2")), ::testing::ExitedWithCode(0),
+              "C tick without user data 2");
+  EXPECT_EXIT(ViewerCRunNoDataThreeArguments(MakeContext("prog -null -frames 2")), ::testing::ExitedWithCode(0),
+              "C tick without user data 2");
+  EXPECT_EXIT(ViewerCRunWithData(MakeContext("prog -null -frames 3")), ::testing::ExitedWithCode(0),
+              "C tick with user data 3");
+}
+
+void MEAPI TickNoData(RRender *) { std::fprintf(stderr, "C++ tick %d\n", ++gTicks); }
+
+TEST_F(RunDeathTest, GuideTickAndRunFormsFromCxx) {
+  EXPECT_EXIT(RRun(MakeContext("prog -null -frames 2"), TickNoData), ::testing::ExitedWithCode(0), "C\\+\\+ tick 2");
+  EXPECT_EXIT(RRun(MakeContext("prog -null -frames 2"), TickNoData, nullptr), ::testing::ExitedWithCode(0),
+              "C\\+\\+ tick 2");
+  static int n = 0;
+  EXPECT_EXIT(RRun(MakeContext("prog -null -frames 2"), Tick), ::testing::ExitedWithCode(0), "");
+  EXPECT_EXIT(RRun(MakeContext("prog -null -frames 2"), Tick, &n), ::testing::ExitedWithCode(0), "");
 }
 
 } // namespace
