@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <new>
 
 using namespace karma::viewer;
@@ -82,6 +83,21 @@ bool PrepareOutputDir(const std::string &dir, std::string &error) {
   return true;
 }
 
+/* The -keys text, then the -keyfile's, parsed as one script. */
+bool ReadKeyScript(const ViewerOptions &opts, std::vector<KeyEvent> &script, std::string &error) {
+  std::string text = opts.keys;
+  if (!opts.keyFile.empty()) {
+    std::ifstream f(opts.keyFile);
+    if (!f) {
+      error = "cannot read the key file '" + opts.keyFile + "'";
+      return false;
+    }
+    text += "\n";
+    text.append(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+  }
+  return ParseKeyScript(text, script, error);
+}
+
 void FreeList(RGraphic *g) {
   while (g) {
     RGraphic *next = g->m_pNext;
@@ -103,10 +119,17 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
   }
   if (opts.help) {
     std::fputs(HelpText(), stdout);
+    std::fputs(KeyScriptHelp(), stdout);
     std::fflush(stdout);
     std::exit(0);
   }
   ReportUnknownOptions(options);
+
+  std::vector<KeyEvent> script;
+  if (!ReadKeyScript(opts, script, error)) {
+    MeWarning(0, "RRenderContextCreate: %s; no render context", error.c_str());
+    return nullptr;
+  }
 
   const bool draws = opts.backend == BackendKind::GL || opts.backend == BackendKind::Profile;
   if (!draws && !opts.outDir.empty()) {
@@ -143,6 +166,7 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
   }
   rc->m_pPrivate->options = opts;
   rc->m_pPrivate->backend = std::move(backend);
+  rc->m_pPrivate->controls.script = std::move(script);
   rc->m_pPrivate->font.name = "font";
   rc->m_pPrivate->font.image = MakeFontImage();
   rc->m_pPrivate->font.state = TextureState::Loaded;
@@ -154,6 +178,7 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
 
 int MEAPI RRenderContextDestroy(RRender *rc) {
   if (!rc) return 0;
+  DestroyMenus(rc);
   FreeList(rc->m_pRG_First);
   FreeList(rc->m_pRG_First2D);
   for (RNativeLine *l = rc->m_pNL_First; l;) {

@@ -23,7 +23,7 @@ constexpr int kBackendCount = 5;
 
 /* Options taking a value, then flags; used for the misspelling check. */
 const char *const kKnownOptions[] = {"-gl",  "-d3d", "-null",  "-bench", "-profile", "-frames",
-                                     "-out", "-every", "-bmp", "-size", "-help"};
+                                     "-out", "-every", "-bmp", "-size", "-help", "-keys", "-keyfile"};
 /* Options the project's own programs read (golden runs pass them to every
  * program), never reported as unknown. */
 const char *const kProgramOptions[] = {"-platform", "-trajectory"};
@@ -106,7 +106,9 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
   const ValueOption values[] = {{"-frames", "a whole number of frames, 0 or more"},
                                 {"-out", "a directory"},
                                 {"-every", "a whole number, 1 or more"},
-                                {"-size", "WxH, each 16..8192, e.g. 640x480"}};
+                                {"-size", "WxH, each 16..8192, e.g. 640x480"},
+                                {"-keys", "a key script, e.g. \"10:key Return\""},
+                                {"-keyfile", "a key script file"}};
   for (const ValueOption &v : values) {
     bool missing = false;
     const char *text = Value(o, v.name, eat, missing);
@@ -122,7 +124,9 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
     if (!std::strcmp(v.name, "-frames")) ok = ParseLong(text, 0, 2000000000L, n), out.frames = ok ? n : out.frames;
     else if (!std::strcmp(v.name, "-every")) ok = ParseLong(text, 1, 2000000000L, n), out.every = ok ? int(n) : out.every;
     else if (!std::strcmp(v.name, "-size")) ok = ParseSize(text, out.width, out.height);
+    else if (!std::strcmp(v.name, "-keys")) out.keys = text;
     else if (!*text) ok = false;
+    else if (!std::strcmp(v.name, "-keyfile")) out.keyFile = text;
     else out.outDir = text;
     if (!ok) {
       error = std::string("bad value '") + text + "' for " + v.name + ": want " + v.want;
@@ -164,6 +168,8 @@ const char *HelpText() {
          "  -every K       with -out, write only frames whose number is a multiple of K\n"
          "  -bmp           with -out, write 24-bit BMP files instead of PNG\n"
          "  -size WxH      frame size in pixels (default 640x480)\n"
+         "  -keys SCRIPT   press keys and move the mouse at given frames (below)\n"
+         "  -keyfile FILE  the same, the script read from FILE (after -keys' events)\n"
          "  -help          print this list and exit\n"
          "Textures are found as NAME.bmp in: the working directory, $KARMA_DATA_DIR,\n"
          "the program's directory and its data/ and ../share/karma/ folders, then\n"

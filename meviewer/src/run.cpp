@@ -65,7 +65,7 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
   bool writeFailed = false;
   while (!p->quit && (o.frames < 0 || rc->m_nFrame < o.frames)) {
     const Clock::time_point t0 = Clock::now();
-    /* Input: nothing to read without a window (key scripts come later). */
+    ProcessInput(rc); /* the key script's events for this frame */
     const Clock::time_point t1 = Clock::now();
     if (tick) tick(rc, userdata);
     const Clock::time_point t2 = Clock::now();

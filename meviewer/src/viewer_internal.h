@@ -26,6 +26,8 @@ struct ViewerOptions {
   bool bmp = false;     /* BMP instead of PNG */
   int width = 640, height = 480;
   bool help = false;
+  std::string keys;     /* -keys SCRIPT, then -keyfile FILE's text appended */
+  std::string keyFile;  /* -keyfile FILE */
 };
 
 /* The options text -help prints. */
@@ -107,6 +109,59 @@ void CameraMatrixFloat(const RRender *rc, float out[16]);
 
 } // namespace karma::viewer
 
+namespace karma::viewer {
+
+/* Keys: printable ASCII characters are themselves; named keys follow. */
+enum Key : int {
+  kKeyUp = 256, kKeyDown, kKeyLeft, kKeyRight, kKeyReturn, kKeyEscape, kKeyTab, kKeySpace,
+  kKeyF1, kKeyF12 = kKeyF1 + 11
+};
+/* The key's name as scripts and help text write it ("Up", "Return", "q"). */
+std::string KeyName(int key);
+/* Parses a key name or single printable character; -1 if unknown. */
+int ParseKeyName(const std::string &name);
+
+/* One scripted input event (keyscript.cpp has the grammar). */
+struct KeyEvent {
+  enum Kind { Press, Release, Tap, Action, Mouse, Quit } kind = Press;
+  long frame = 0;
+  int key = 0;       /* Press, Release, Tap */
+  int action = 0;    /* Action */
+  int x = 0, y = 0, buttons = 0; /* Mouse */
+};
+/* Parses a key script; on error returns false with a message naming the
+ * event (by number and text) in `error`. Events come out sorted by frame,
+ * keeping their written order within a frame. */
+bool ParseKeyScript(const std::string &text, std::vector<KeyEvent> &out, std::string &error);
+/* Help text for the script grammar (-help prints it). */
+const char *KeyScriptHelp();
+
+struct Controls {
+  RButtonPressCallBack arrows[8] = {}; /* Up Up2 Down Down2 Left Left2 Right Right2 */
+  RButtonPressCallBack action[R_MAX_ACTIONS] = {};
+  void *actionData[R_MAX_ACTIONS] = {};
+  int actionKey[R_MAX_ACTIONS] = {kKeySpace, kKeyTab, kKeyReturn, 'x', 'c', 'v'};
+  RMouseCallBack mouse = nullptr;
+  void *mouseData = nullptr;
+  std::vector<int> held; /* keys down */
+  std::vector<KeyEvent> script;
+  std::size_t next = 0;  /* first script event not yet applied */
+};
+/* The input phase of a frame: applies the script's events for this frame. */
+void ProcessInput(RRender *rc);
+/* A key going down / up, as a user would press it. */
+void PressKey(RRender *rc, int key);
+void ReleaseKey(RRender *rc, int key);
+/* The open menu's reaction to a key; false if the menu does not use it. */
+bool MenuHandleKey(RRender *rc, int key);
+/* The open menu as 2D graphics (in no list), for one frame; the caller
+ * destroys them. Empty when no menu is open. */
+std::vector<RGraphic *> MenuOverlay(RRender *rc);
+/* Frees every menu of the context (RRenderContextDestroy). */
+void DestroyMenus(RRender *rc);
+
+} // namespace karma::viewer
+
 struct RRenderPrivate {
   karma::viewer::ViewerOptions options;
   std::vector<karma::viewer::Texture> textures; /* index = texture ID */
@@ -118,6 +173,10 @@ struct RRenderPrivate {
   RDirectLight appliedDirect1{}, appliedDirect2{};
   RPointLight appliedPoint{};
   bool lightsApplied = false;
+  karma::viewer::Controls controls;
+  RMenu *defaultMenu = nullptr;
+  RMenu *shownMenu = nullptr;
+  std::vector<RMenu *> menus; /* every menu made in this context */
 };
 
 /* RGraphic creation shared by the primitives (graphic.cpp). */

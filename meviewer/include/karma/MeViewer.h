@@ -167,6 +167,45 @@ MEPUBLIC void MEAPI RLightSwitchOff(RRender *rc, RRenderLight light);
 MEPUBLIC void MEAPI RSwitchLightOn(RRender *rc, RRenderLight light);
 MEPUBLIC void MEAPI RSwitchLightOff(RRender *rc, RRenderLight light);
 
+/* ---- controls ------------------------------------------------------------- */
+
+/* Keys (there is no window: -keys / -keyfile scripts press them; see
+ * docs/ARCHITECTURE.md, "Key scripts"):
+ *   Up Down Left Right      the arrow keys       Up2 Down2 Left2 Right2   w s a d
+ *   Action0 Space  Action1 Tab  Action2 Return  Action3 x  Action4 c  Action5 v
+ *   Escape quits (or closes an open menu); Action1's key opens the default
+ *   menu when the program has no Action1 callback. */
+MEPUBLIC void MEAPI RRenderSetUpCallBack(RRender *rc, RButtonPressCallBack func);
+MEPUBLIC void MEAPI RRenderSetUp2CallBack(RRender *rc, RButtonPressCallBack func);
+MEPUBLIC void MEAPI RRenderSetDownCallBack(RRender *rc, RButtonPressCallBack func);
+MEPUBLIC void MEAPI RRenderSetDown2CallBack(RRender *rc, RButtonPressCallBack func);
+MEPUBLIC void MEAPI RRenderSetLeftCallBack(RRender *rc, RButtonPressCallBack func);
+MEPUBLIC void MEAPI RRenderSetLeft2CallBack(RRender *rc, RButtonPressCallBack func);
+MEPUBLIC void MEAPI RRenderSetRightCallBack(RRender *rc, RButtonPressCallBack func);
+MEPUBLIC void MEAPI RRenderSetRight2CallBack(RRender *rc, RButtonPressCallBack func);
+/* N in 0..R_MAX_ACTIONS-1; func gets userdata. */
+MEPUBLIC void MEAPI RRenderSetActionNCallBack(RRender *rc, int N, RButtonPressCallBack func, void *userdata);
+/* Makes the printable character `key` press action N (instead of its default key). */
+MEPUBLIC void MEAPI RRenderSetActionNKey(RRender *rc, const unsigned int N, const char key);
+MEPUBLIC void MEAPI RRenderSetMouseCallBack(RRender *rc, RMouseCallBack func, void *userdata);
+
+/* ---- menus ------------------------------------------------------------------ */
+
+/* A menu is drawn over the scene while displayed. Keys while it is open:
+ * Up / Down move the highlight; Left / Right step a value entry down / up
+ * by its increment within [lo, hi], or flip a toggle; Return flips a
+ * toggle or opens a submenu; Escape goes back to the parent menu or closes
+ * the menu; Action1's key closes it. Callbacks run with the new value on
+ * every change. The context frees menus still alive when it is destroyed. */
+MEPUBLIC RMenu *MEAPI RMenuCreate(RRender *rc, const char *name);
+MEPUBLIC void MEAPI RMenuDestroy(RMenu *rm);
+MEPUBLIC void MEAPI RRenderSetDefaultMenu(RRender *rc, RMenu *menu);
+MEPUBLIC void MEAPI RMenuDisplay(RMenu *rm);
+MEPUBLIC void MEAPI RMenuAddToggleEntry(RMenu *rm, const char *name, RMenuToggleCallback func, MeBool defaultValue);
+MEPUBLIC void MEAPI RMenuAddValueEntry(RMenu *rm, const char *name, RMenuValueCallback func, MeReal hi, MeReal lo,
+                                       MeReal increment, MeReal defaultValue);
+MEPUBLIC void MEAPI RMenuAddSubmenuEntry(RMenu *rm, const char *name, RMenu *submenu);
+
 ME_EXTERN_C_END
 
 /* The guide calls RRun as RRun(rc, tick, 0) and as RRun(rc, tick), and

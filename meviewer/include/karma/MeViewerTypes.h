@@ -106,6 +106,21 @@ struct RRenderPrivate;
 typedef void(MEAPI *RMainLoopCallBack)(struct RRender *rc, void *userdata);
 typedef void(MEAPI *RMainLoopCallBackNoData)(struct RRender *rc);
 
+/* Controls (the guide's "Controls"): a button callback runs once when its
+ * key is pressed; the mouse callback gets the pointer position in pixels
+ * of the frame (x right, y down) and the buttons held (bit 0 left, bit 1
+ * middle, bit 2 right). */
+typedef void(MEAPI *RButtonPressCallBack)(struct RRender *rc, void *userdata);
+typedef void(MEAPI *RMouseCallBack)(struct RRender *rc, int x, int y, int buttons, void *userdata);
+
+/* Actions 0..R_MAX_ACTIONS-1 (the guide uses 1..5 in help text). */
+#define R_MAX_ACTIONS 6
+
+/* Menus (the guide's "Menu System"); the structure is private. */
+typedef struct RMenu RMenu;
+typedef void(MEAPI *RMenuToggleCallback)(MeBool on);
+typedef void(MEAPI *RMenuValueCallback)(MeReal value);
+
 #define R_APPNAME_SIZE 256
 
 /* The render context. Members below are the ones the guide names; change the

@@ -6,7 +6,7 @@
 // The golden driver adds -platform, -trajectory and -out; the trajectory
 // holds no bodies (the scenes are still) and exists because every golden
 // run writes one. Scenes: rectangle2d groundplane box cone cylinder sphere
-// square torus frustum line nativeline custom wireframe lighting texture text.
+// square torus frustum line nativeline custom wireframe lighting texture text menu.
 #include "MeViewer.h"
 
 #include <karma/golden/KarmaTrajectory.h>
@@ -124,6 +124,14 @@ bool Build(const std::string &s) {
     RGraphic2DRectangleCreate(rc, 0, 400, 640, 80, kBlue);
     char l4[] = "text over a rectangle";
     RGraphicTextCreate(rc, l4, 20, 430, kWhite);
+  } else if (s == "menu") {
+    RGraphicSphereCreate(rc, 1.3, kGreen, tm[0]);
+    RMenu *menu = RMenuCreate(rc, "Options");
+    RMenu *more = RMenuCreate(rc, "More");
+    RMenuAddToggleEntry(menu, "gravity", nullptr, 1);
+    RMenuAddValueEntry(menu, "friction", nullptr, 2, 0, 0.25, 0.5);
+    RMenuAddSubmenuEntry(menu, "more", more);
+    RRenderSetDefaultMenu(rc, menu);
   } else {
     return false;
   }
