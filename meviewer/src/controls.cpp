@@ -2,7 +2,7 @@
  *
  * Without a window, keys come from the -keys / -keyfile script
  * (keyscript.cpp). A key press runs, in this order of precedence: the open
- * menu's handling of it (menu.cpp), Escape's quit, the action whose key it
+ * menu's handling of it (menu.cpp), Escape's quit, F1's help toggle, the action whose key it
  * is (Action1 with no callback opens the default menu), the arrow-style
  * control bound to it. A key already down does not press again (no
  * auto-repeat); callbacks run on the press only, as the guide says. */
@@ -41,6 +41,10 @@ void PressKey(RRender *rc, int key) {
   if (p->shownMenu && MenuHandleKey(rc, key)) return;
   if (key == kKeyEscape) {
     p->quit = true;
+    return;
+  }
+  if (key == kKeyF1) {
+    RRenderToggleUserHelp(rc);
     return;
   }
   for (int n = 0; n < R_MAX_ACTIONS; ++n)

@@ -67,7 +67,7 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
     const Clock::time_point t0 = Clock::now();
     ProcessInput(rc); /* the key script's events for this frame */
     const Clock::time_point t1 = Clock::now();
-    if (tick) tick(rc, userdata);
+    if (tick && !p->paused) tick(rc, userdata); /* the help pauses the simulation */
     const Clock::time_point t2 = Clock::now();
     if (p->backend->Draws()) {
       LoadPendingTextures(rc);

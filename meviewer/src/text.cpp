@@ -7,7 +7,7 @@
  * 2W x 2H texels of the cell. The pen then moves by the character's
  * own advance (FontAdvance), so spacing is proportional. Spaces take room
  * but no quad;
- * characters outside printable ASCII (32..126) show as '?'. */
+ * The text is put through RParseText first. Characters outside printable ASCII (32..126) show as '?'. */
 #include "viewer_internal.h"
 
 #include <cmath>
@@ -15,8 +15,10 @@
 
 using namespace karma::viewer;
 
-RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal x, AcmeReal y, const float color[4]) {
-  ME_REQUIRE_ARG_RET(rc && text, nullptr, "RGraphicTextCreate", "rc or text is NULL");
+RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text_in, AcmeReal x, AcmeReal y, const float color[4]) {
+  ME_REQUIRE_ARG_RET(rc && text_in, nullptr, "RGraphicTextCreate", "rc or text is NULL");
+  const std::string parsed = ParseText(rc, text_in); /* $ variables, as the guide says */
+  const char *text = parsed.c_str();
   ME_REQUIRE_ARG_RET(std::isfinite(double(x)) && std::isfinite(double(y)), nullptr, "RGraphicTextCreate",
                      "x and y must be finite");
   int quads = 0;

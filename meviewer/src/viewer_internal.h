@@ -157,6 +157,10 @@ bool MenuHandleKey(RRender *rc, int key);
 /* The open menu as 2D graphics (in no list), for one frame; the caller
  * destroys them. Empty when no menu is open. */
 std::vector<RGraphic *> MenuOverlay(RRender *rc);
+/* RParseText into a std::string (no length limit). */
+std::string ParseText(const RRender *rc, const char *text);
+/* The help panel as 2D graphics for one frame (empty when hidden). */
+std::vector<RGraphic *> HelpOverlay(RRender *rc);
 /* Frees every menu of the context (RRenderContextDestroy). */
 void DestroyMenus(RRender *rc);
 
@@ -177,6 +181,9 @@ struct RRenderPrivate {
   RMenu *defaultMenu = nullptr;
   RMenu *shownMenu = nullptr;
   std::vector<RMenu *> menus; /* every menu made in this context */
+  std::vector<std::string> help; /* parsed help lines */
+  bool helpShown = false;
+  bool paused = false;           /* toggled with the help: no tick */
 };
 
 /* RGraphic creation shared by the primitives (graphic.cpp). */

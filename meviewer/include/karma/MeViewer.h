@@ -206,6 +206,20 @@ MEPUBLIC void MEAPI RMenuAddValueEntry(RMenu *rm, const char *name, RMenuValueCa
                                        MeReal increment, MeReal defaultValue);
 MEPUBLIC void MEAPI RMenuAddSubmenuEntry(RMenu *rm, const char *name, RMenu *submenu);
 
+/* ---- help and text utilities ----------------------------------------------- */
+
+/* Copies text_in to text_out (at most outbuffersize bytes, always
+ * terminated), replacing variables: $UP $DOWN $LEFT $RIGHT, $UP2 $DOWN2
+ * $LEFT2 $RIGHT2, $ACTION0..$ACTION5 (the keys that press them), $MOUSE,
+ * $APPNAME (rc->m_AppName). A variable is '$' and the longest run of
+ * capitals and digits after it; unknown ones are copied unchanged. */
+MEPUBLIC void MEAPI RParseText(RRender *rc, char *text_in, char *text_out, int outbuffersize);
+/* Builds the help panel from `arraySize` lines, each put through RParseText. */
+MEPUBLIC void MEAPI RRenderCreateUserHelp(RRender *rc, char *help[], int arraySize);
+/* Shows or hides the help panel and pauses or resumes the simulation: while
+ * the help shows, RRun draws but does not call the tick. F1 toggles it too. */
+MEPUBLIC void MEAPI RRenderToggleUserHelp(RRender *rc);
+
 ME_EXTERN_C_END
 
 /* The guide calls RRun as RRun(rc, tick, 0) and as RRun(rc, tick), and

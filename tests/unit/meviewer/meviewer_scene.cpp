@@ -6,7 +6,7 @@
 // The golden driver adds -platform, -trajectory and -out; the trajectory
 // holds no bodies (the scenes are still) and exists because every golden
 // run writes one. Scenes: rectangle2d groundplane box cone cylinder sphere
-// square torus frustum line nativeline custom wireframe lighting texture text menu.
+// square torus frustum line nativeline custom wireframe lighting texture text help menu.
 #include "MeViewer.h"
 
 #include <karma/golden/KarmaTrajectory.h>
@@ -124,6 +124,14 @@ bool Build(const std::string &s) {
     RGraphic2DRectangleCreate(rc, 0, 400, 640, 80, kBlue);
     char l4[] = "text over a rectangle";
     RGraphicTextCreate(rc, l4, 20, 430, kWhite);
+  } else if (s == "help") {
+    // RainbowChain's help, shown as the guide's program shows it.
+    std::strcpy(rc->m_AppName, "RainbowChain");
+    char l0[] = "$ACTION1 - toggle options menu", l1[] = "$ACTION2 - reset", l2[] = "$MOUSE - apply mouse force";
+    char *help[3] = {l0, l1, l2};
+    RGraphicSphereCreate(rc, 1.3, kGreen, tm[0]);
+    RRenderCreateUserHelp(rc, help, 3);
+    RRenderToggleUserHelp(rc);
   } else if (s == "menu") {
     RGraphicSphereCreate(rc, 1.3, kGreen, tm[0]);
     RMenu *menu = RMenuCreate(rc, "Options");
