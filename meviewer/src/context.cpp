@@ -179,6 +179,7 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
 int MEAPI RRenderContextDestroy(RRender *rc) {
   if (!rc) return 0;
   DestroyMenus(rc);
+  DestroyPerformanceBar(rc);
   FreeList(rc->m_pRG_First);
   FreeList(rc->m_pRG_First2D);
   for (RNativeLine *l = rc->m_pNL_First; l;) {

@@ -191,6 +191,10 @@ void DrawSceneGL(RRender *rc) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   for (RGraphic *g = rc->m_pRG_First2D; g; g = g->m_pNext) DrawGraphic(rc, g, true);
+  for (RGraphic *g : PerformanceBarOverlay(rc)) {
+    DrawGraphic(rc, g, true);
+    RGraphicDestroy(g);
+  }
   for (RGraphic *g : HelpOverlay(rc)) {
     DrawGraphic(rc, g, true);
     RGraphicDestroy(g);

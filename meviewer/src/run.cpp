@@ -64,6 +64,8 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
   const bool timed = o.backend == BackendKind::Bench || o.backend == BackendKind::Profile;
   bool writeFailed = false;
   while (!p->quit && (o.frames < 0 || rc->m_nFrame < o.frames)) {
+    const bool profiled = p->bar != nullptr; /* the bar reads MeProfile's last frame */
+    if (profiled) MeProfileStartFrame();
     const Clock::time_point t0 = Clock::now();
     ProcessInput(rc); /* the key script's events for this frame */
     const Clock::time_point t1 = Clock::now();
@@ -71,7 +73,9 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
     const Clock::time_point t2 = Clock::now();
     if (p->backend->Draws()) {
       LoadPendingTextures(rc);
+      if (profiled) MeProfileStartSection("render");
       p->backend->DrawFrame(rc);
+      if (profiled) MeProfileEndSection("render");
     }
     const Clock::time_point t3 = Clock::now();
     OutputFrame(rc, writeFailed, progress);
@@ -83,6 +87,7 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
       times.output.push_back(Ms(t3, t4));
       times.total.push_back(Ms(t0, t4));
     }
+    if (profiled) MeProfileEndFrame();
     ++rc->m_nFrame;
   }
   if (progress) std::fputc('\n', stderr);

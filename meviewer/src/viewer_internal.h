@@ -161,6 +161,9 @@ std::vector<RGraphic *> MenuOverlay(RRender *rc);
 std::string ParseText(const RRender *rc, const char *text);
 /* The help panel as 2D graphics for one frame (empty when hidden). */
 std::vector<RGraphic *> HelpOverlay(RRender *rc);
+/* The performance bar as 2D graphics for one frame (empty without a bar). */
+std::vector<RGraphic *> PerformanceBarOverlay(RRender *rc);
+void DestroyPerformanceBar(RRender *rc);
 /* Frees every menu of the context (RRenderContextDestroy). */
 void DestroyMenus(RRender *rc);
 
@@ -184,6 +187,7 @@ struct RRenderPrivate {
   std::vector<std::string> help; /* parsed help lines */
   bool helpShown = false;
   bool paused = false;           /* toggled with the help: no tick */
+  RPerformanceBar *bar = nullptr;
 };
 
 /* RGraphic creation shared by the primitives (graphic.cpp). */

@@ -206,6 +206,16 @@ MEPUBLIC void MEAPI RMenuAddValueEntry(RMenu *rm, const char *name, RMenuValueCa
                                        MeReal increment, MeReal defaultValue);
 MEPUBLIC void MEAPI RMenuAddSubmenuEntry(RMenu *rm, const char *name, RMenu *submenu);
 
+/* ---- performance -------------------------------------------------------------- */
+
+/* Adds a bar along the bottom of the screen showing, for the last frame,
+ * the time in the MeProfile sections "collision" and "dynamics" (which the
+ * program's tick times, as Mst does), the viewer's rendering, and the idle
+ * rest of a 1/60 s frame. While a bar exists RRun opens an MeProfile frame
+ * per loop iteration and times "render" itself. Returns the context's bar
+ * (one per context, freed with it), or NULL if rc is NULL. */
+MEPUBLIC RPerformanceBar *MEAPI RPerformanceBarCreate(RRender *rc);
+
 /* ---- help and text utilities ----------------------------------------------- */
 
 /* Copies text_in to text_out (at most outbuffersize bytes, always

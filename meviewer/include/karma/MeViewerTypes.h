@@ -121,6 +121,9 @@ typedef struct RMenu RMenu;
 typedef void(MEAPI *RMenuToggleCallback)(MeBool on);
 typedef void(MEAPI *RMenuValueCallback)(MeReal value);
 
+/* The performance bar (RPerformanceBarCreate); private. */
+typedef struct RPerformanceBar RPerformanceBar;
+
 #define R_APPNAME_SIZE 256
 
 /* The render context. Members below are the ones the guide names; change the

@@ -6,7 +6,7 @@
 // The golden driver adds -platform, -trajectory and -out; the trajectory
 // holds no bodies (the scenes are still) and exists because every golden
 // run writes one. Scenes: rectangle2d groundplane box cone cylinder sphere
-// square torus frustum line nativeline custom wireframe lighting texture text help menu.
+// square torus frustum line nativeline custom wireframe lighting texture text help menu perfbar.
 #include "MeViewer.h"
 
 #include <karma/golden/KarmaTrajectory.h>
@@ -39,6 +39,25 @@ void Place(MeMatrix4 m, MeReal a, MeReal b, MeReal x, MeReal y, MeReal z) {
 }
 
 void Camera(MeReal dist, MeReal theta, MeReal phi) { RCameraSetView(rc, dist, theta, phi); }
+
+// The perfbar scene's clock: every reading is 2 ms after the last, so each
+// MeProfile start/end pair lasts 2 ms per clock reading between them.
+double MEAPI StepClock(void *) {
+  static double now = 0;
+  return now += 2;
+}
+
+// Collision spans a nested section (3 readings: 6 ms), dynamics one pair (2 ms).
+void MEAPI ProfiledTick(RRender *, void *) {
+  MeProfileStartSection("collision");
+  MeProfileStartSection("narrow phase");
+  MeProfileEndSection("narrow phase");
+  MeProfileEndSection("collision");
+  MeProfileStartSection("dynamics");
+  MeProfileEndSection("dynamics");
+}
+
+RMainLoopCallBack gTick = nullptr;
 
 bool Build(const std::string &s) {
   Place(tm[0], -1.1, 0.4, 0, 0, 0);
@@ -132,6 +151,11 @@ bool Build(const std::string &s) {
     RGraphicSphereCreate(rc, 1.3, kGreen, tm[0]);
     RRenderCreateUserHelp(rc, help, 3);
     RRenderToggleUserHelp(rc);
+  } else if (s == "perfbar") {
+    RGraphicSphereCreate(rc, 1.3, kGreen, tm[0]);
+    MeProfileSetClock(StepClock, nullptr);
+    RPerformanceBarCreate(rc);
+    gTick = ProfiledTick;
   } else if (s == "menu") {
     RGraphicSphereCreate(rc, 1.3, kGreen, tm[0]);
     RMenu *menu = RMenuCreate(rc, "Options");
@@ -147,6 +171,8 @@ bool Build(const std::string &s) {
 }
 
 void MEAPI_CDECL Cleanup() { RRenderContextDestroy(rc); }
+
+
 
 } // namespace
 
@@ -177,5 +203,5 @@ int main(int argc, const char *argv[]) {
     return 1;
   }
   std::atexit(Cleanup);
-  RRun(rc, static_cast<RMainLoopCallBack>(nullptr), nullptr);
+  RRun(rc, gTick, nullptr);
 }
