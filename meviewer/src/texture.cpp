@@ -60,21 +60,19 @@ std::vector<std::string> TextureSearchPath() {
   return dirs;
 }
 
+std::string FindDataFile(const std::string &file) {
+  std::error_code ec;
+  if (fs::path(file).is_absolute()) return fs::is_regular_file(file, ec) ? file : std::string();
+  for (const std::string &dir : TextureSearchPath())
+    if (fs::is_regular_file(fs::path(dir) / file, ec)) return (fs::path(dir) / file).string();
+  return {};
+}
+
 void LoadPendingTextures(RRender *rc) {
   for (Texture &t : rc->m_pPrivate->textures) {
     if (t.state != TextureState::Pending) continue;
     const std::string file = FileName(t.name);
-    std::string found;
-    std::error_code ec;
-    if (fs::path(file).is_absolute()) {
-      if (fs::is_regular_file(file, ec)) found = file;
-    } else {
-      for (const std::string &dir : TextureSearchPath())
-        if (fs::is_regular_file(fs::path(dir) / file, ec)) {
-          found = (fs::path(dir) / file).string();
-          break;
-        }
-    }
+    const std::string found = FindDataFile(file);
     if (found.empty()) {
       std::string where;
       for (const std::string &dir : TextureSearchPath()) where += (where.empty() ? "" : ", ") + dir;

@@ -74,6 +74,12 @@ int FontAdvance(unsigned char c);
 
 /* The directories searched for texture files, in order (ARCHITECTURE.md). */
 std::vector<std::string> TextureSearchPath();
+/* A data file (texture, object) by the search path: the first existing
+ * DIR/file, or file itself when absolute; empty if none. */
+std::string FindDataFile(const std::string &file);
+/* Triangles read from an ASE file: 3 vertices per face, positions as in
+ * the file, normals unit, texture v flipped to MeViewer's (0 = top). */
+bool ParseAse(const std::string &text, std::vector<RObjectVertex> &out, std::string &error);
 /* Loads every pending texture (called when RRun starts and each frame). */
 void LoadPendingTextures(RRender *rc);
 

@@ -129,6 +129,24 @@ MEPUBLIC void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool wireframe);
 MEPUBLIC void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize,
                                               int *stripStart, int numStrips);
 
+/* ---- object files (ASE) ------------------------------------------------------- */
+
+/* Loads the meshes of an ASE file (3ds Max ASCII export: *MESH_VERTEX_LIST,
+ * *MESH_FACE_LIST, optional *MESH_TVERTLIST / *MESH_TFACELIST texture
+ * coordinates and *MESH_VERTEXNORMAL normals; materials are ignored),
+ * positions multiplied by the scales, into one graphic in the 3D list.
+ * The file is found like a texture (the search path), by its full name.
+ * NULL with a message for a missing or malformed file. */
+MEPUBLIC RGraphic *MEAPI RGraphicLoadASE(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale,
+                                         AcmeReal zScale, const float color[4], MeMatrix4Ptr matrix);
+/* As RGraphicLoadASE, after normalising the object: centred on its bounding
+ * box, each side scaled to length 2 (or, with bKeepAspectRatio, the longest
+ * side to 2 and the others in proportion), then multiplied by the scales;
+ * put in the 2D list when is2D. */
+MEPUBLIC RGraphic *MEAPI RGraphicCreate(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale,
+                                        AcmeReal zScale, const AcmeReal color[4], MeMatrix4Ptr matrix, int is2D,
+                                        int bKeepAspectRatio);
+
 /* ---- textures ------------------------------------------------------------ */
 
 /* The ID for a texture file name (a name seen before keeps its ID), or -1

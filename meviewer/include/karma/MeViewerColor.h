@@ -1,7 +1,7 @@
 /* MeViewerColor.h: colour arguments as either float[4] or MeReal[4].
  *
  * The guide declares the primitive creators with `const float color[4]`
- * (and RNLineCreate with `const AcmeReal color[4]`), yet its own programs
+ * (and RNLineCreate, RGraphicCreate with `const AcmeReal color[4]`), yet its own programs
  * pass both kinds: RainbowChain a float array, the basic-steps program
  * `MeReal red[]`. With MeReal = float they are the same type; with
  * KARMA_DOUBLE they are not, and the other kind would not compile in C++
@@ -10,7 +10,7 @@
  *     a double array to a float copy (a compound literal living for the
  *     call) through _Generic, and passes anything else through unchanged;
  *   - C++: inline overloads taking `const double color[4]` (or, for
- *     RNLineCreate, `const float color[4]`).
+ *     RNLineCreate and RGraphicCreate, `const float color[4]`).
  * Included by MeViewer.h after the declarations; not meant to be included
  * on its own. */
 #ifndef KARMA_MEVIEWERCOLOR_H
@@ -53,6 +53,8 @@ static inline const MeReal *RColorFromFloat_(const float *c, MeReal *out) {
 #    define RGraphicTextCreate(rc, t, x, y, c) RGraphicTextCreate(rc, t, x, y, R_COLOR_F_(c))
 #    define RGraphicSetColor(g, c) RGraphicSetColor(g, R_COLOR_F_(c))
 #    define RNLineCreate(rc, s, e, c, m) RNLineCreate(rc, s, e, R_COLOR_R_(c), m)
+#    define RGraphicLoadASE(rc, f, x, y, z, c, m) RGraphicLoadASE(rc, f, x, y, z, R_COLOR_F_(c), m)
+#    define RGraphicCreate(rc, f, x, y, z, c, m, d, k) RGraphicCreate(rc, f, x, y, z, R_COLOR_R_(c), m, d, k)
 #  elif defined(__cplusplus)
 #    define R_DOUBLE_COLOR_OVERLOAD_(ret, name, params, args)                                          \
         inline ret name params {                                                                      \
@@ -91,6 +93,14 @@ R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicLineCreate,
 R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicTextCreate, (RRender * rc, char *t, AcmeReal x, AcmeReal y, const double c[4]),
                          (rc, t, x, y, RColorFromDouble_(c, f_)))
 R_DOUBLE_COLOR_OVERLOAD_(void, RGraphicSetColor, (RGraphic * g, const double c[4]), (g, RColorFromDouble_(c, f_)))
+R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicLoadASE,
+                         (RRender * rc, char *f, AcmeReal x, AcmeReal y, AcmeReal z, const double c[4], MeMatrix4Ptr m),
+                         (rc, f, x, y, z, RColorFromDouble_(c, f_), m))
+inline RGraphic *RGraphicCreate(RRender *rc, char *f, AcmeReal x, AcmeReal y, AcmeReal z, const float c[4],
+                                MeMatrix4Ptr m, int is2D, int keep) {
+    MeReal r[4];
+    return RGraphicCreate(rc, f, x, y, z, RColorFromFloat_(c, r), m, is2D, keep);
+}
 inline RNativeLine *RNLineCreate(RRender *const rc, const AcmeReal s[3], const AcmeReal e[3], const float c[4],
                                  const MeVector4 *const m) {
     MeReal r[4];

@@ -6,7 +6,7 @@
 // The golden driver adds -platform, -trajectory and -out; the trajectory
 // holds no bodies (the scenes are still) and exists because every golden
 // run writes one. Scenes: rectangle2d groundplane box cone cylinder sphere
-// square torus frustum line nativeline custom wireframe lighting texture text help menu perfbar.
+// square torus frustum line nativeline custom wireframe lighting texture text help menu perfbar ase.
 #include "MeViewer.h"
 
 #include <karma/golden/KarmaTrajectory.h>
@@ -58,6 +58,8 @@ void MEAPI ProfiledTick(RRender *, void *) {
 }
 
 RMainLoopCallBack gTick = nullptr;
+
+std::string gModel; // -model FILE for the ase scene
 
 bool Build(const std::string &s) {
   Place(tm[0], -1.1, 0.4, 0, 0, 0);
@@ -156,6 +158,12 @@ bool Build(const std::string &s) {
     MeProfileSetClock(StepClock, nullptr);
     RPerformanceBarCreate(rc);
     gTick = ProfiledTick;
+  } else if (s == "ase") {
+    char checker[] = "checkerboard";
+    Place(tm[1], -1.4, 0.6, 0, -0.3, 0);
+    RGraphic *g = RGraphicLoadASE(rc, gModel.data(), 1.2, 1.2, 1.2, kWhite, tm[1]);
+    if (!g) return false;
+    RGraphicSetTexture(rc, g, checker);
   } else if (s == "menu") {
     RGraphicSphereCreate(rc, 1.3, kGreen, tm[0]);
     RMenu *menu = RMenuCreate(rc, "Options");
@@ -182,6 +190,8 @@ int main(int argc, const char *argv[]) {
   const char *scene = MeCommandLineOptionsGetString(opts, "-scene", 1);
   const char *trajectoryPath = MeCommandLineOptionsGetString(opts, "-trajectory", 1);
   const char *platform = MeCommandLineOptionsGetString(opts, "-platform", 1);
+  const char *model = MeCommandLineOptionsGetString(opts, "-model", 1);
+  gModel = model ? model : "";
   const std::string sceneName = scene ? scene : "";
   const std::string path = trajectoryPath ? trajectoryPath : "";
   const std::string backend = platform ? platform : "reference";
