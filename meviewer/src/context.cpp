@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iterator>
 #include <new>
+#include <unistd.h>
 
 using namespace karma::viewer;
 
@@ -137,6 +138,25 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
               opts.backend == BackendKind::Null ? "-null" : "-bench");
     opts.outDir.clear();
   }
+  std::string videoTempDir;
+  if (!opts.video.empty()) {
+    if (!draws) {
+      MeWarning(0, "RRenderContextCreate: -video %s is ignored: nothing is drawn", opts.video.c_str());
+      opts.video.clear();
+    } else if (FindInPath("ffmpeg").empty()) {
+      MeWarning(0, "RRenderContextCreate: -video %s: ffmpeg is not installed (Debian package ffmpeg); no video "
+                "will be made%s", opts.video.c_str(), opts.outDir.empty() ? "" : ", the frames are still written");
+      opts.video.clear();
+    } else if (opts.outDir.empty()) {
+      /* Frames for the video only: a private directory, removed after. */
+      std::string pattern = (std::filesystem::temp_directory_path() / "meviewer-video-XXXXXX").string();
+      if (!mkdtemp(pattern.data())) {
+        MeWarning(0, "RRenderContextCreate: -video: cannot make a temporary frame directory; no render context");
+        return nullptr;
+      }
+      opts.outDir = videoTempDir = pattern;
+    }
+  }
   if (!opts.outDir.empty() && !PrepareOutputDir(opts.outDir, error)) {
     MeWarning(0, "RRenderContextCreate: %s; no render context", error.c_str());
     return nullptr;
@@ -167,6 +187,7 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
   rc->m_pPrivate->options = opts;
   rc->m_pPrivate->backend = std::move(backend);
   rc->m_pPrivate->controls.script = std::move(script);
+  rc->m_pPrivate->videoTempDir = videoTempDir;
   rc->m_pPrivate->font.name = "font";
   rc->m_pPrivate->font.image = MakeFontImage();
   rc->m_pPrivate->font.state = TextureState::Loaded;
@@ -186,6 +207,10 @@ int MEAPI RRenderContextDestroy(RRender *rc) {
     RNativeLine *next = l->m_pNext;
     MeMemoryAPI.destroy(l);
     l = next;
+  }
+  if (!rc->m_pPrivate->videoTempDir.empty()) {
+    std::error_code ec;
+    std::filesystem::remove_all(rc->m_pPrivate->videoTempDir, ec);
   }
   delete rc->m_pPrivate;
   MeMemoryAPI.destroy(rc);

@@ -23,7 +23,7 @@ constexpr int kBackendCount = 5;
 
 /* Options taking a value, then flags; used for the misspelling check. */
 const char *const kKnownOptions[] = {"-gl",  "-d3d", "-null",  "-bench", "-profile", "-frames",
-                                     "-out", "-every", "-bmp", "-size", "-help", "-keys", "-keyfile"};
+                                     "-out", "-every", "-bmp", "-size", "-help", "-keys", "-keyfile", "-video"};
 /* Options the project's own programs read (golden runs pass them to every
  * program), never reported as unknown. */
 const char *const kProgramOptions[] = {"-platform", "-trajectory"};
@@ -108,7 +108,8 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
                                 {"-every", "a whole number, 1 or more"},
                                 {"-size", "WxH, each 16..8192, e.g. 640x480"},
                                 {"-keys", "a key script, e.g. \"10:key Return\""},
-                                {"-keyfile", "a key script file"}};
+                                {"-keyfile", "a key script file"},
+                                {"-video", "a video file name (.mp4 or .gif)"}};
   for (const ValueOption &v : values) {
     bool missing = false;
     const char *text = Value(o, v.name, eat, missing);
@@ -127,6 +128,7 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
     else if (!std::strcmp(v.name, "-keys")) out.keys = text;
     else if (!*text) ok = false;
     else if (!std::strcmp(v.name, "-keyfile")) out.keyFile = text;
+    else if (!std::strcmp(v.name, "-video")) out.video = text;
     else out.outDir = text;
     if (!ok) {
       error = std::string("bad value '") + text + "' for " + v.name + ": want " + v.want;
@@ -170,6 +172,8 @@ const char *HelpText() {
          "  -size WxH      frame size in pixels (default 640x480)\n"
          "  -keys SCRIPT   press keys and move the mouse at given frames (below)\n"
          "  -keyfile FILE  the same, the script read from FILE (after -keys' events)\n"
+         "  -video FILE    after the run, assemble the frames into FILE with ffmpeg\n"
+         "                 (.gif: an animated GIF, otherwise H.264 MP4; 30 frames/s)\n"
          "  -help          print this list and exit\n"
          "Textures are found as NAME.bmp in: the working directory, $KARMA_DATA_DIR,\n"
          "the program's directory and its data/ and ../share/karma/ folders, then\n"

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <unistd.h>
 
 using namespace karma::viewer;
@@ -54,7 +55,7 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
   }
   RRenderPrivate *p = rc->m_pPrivate;
   const ViewerOptions &o = p->options;
-  const bool progress = !o.outDir.empty() && isatty(STDERR_FILENO);
+  const bool progress = !o.outDir.empty() && p->videoTempDir.empty() && isatty(STDERR_FILENO);
   if (o.frames < 0 && p->backend->Draws())
     MeInfo(0, "MeViewer: drawing offscreen with no frame limit; pass -frames N to stop after N frames");
   p->running = true;
@@ -91,6 +92,12 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
     ++rc->m_nFrame;
   }
   if (progress) std::fputc('\n', stderr);
+  if (!o.video.empty() && !writeFailed) AssembleVideo(o.outDir, o.bmp, o.video);
+  if (!p->videoTempDir.empty()) { /* frames made only for the video */
+    std::error_code ec;
+    std::filesystem::remove_all(p->videoTempDir, ec);
+    p->videoTempDir.clear();
+  }
   if (o.backend == BackendKind::Bench) PrintBenchReport(times, stdout);
   if (o.backend == BackendKind::Profile) PrintProfileReport(times, stdout);
   std::fflush(stdout);

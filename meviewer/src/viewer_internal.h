@@ -28,6 +28,7 @@ struct ViewerOptions {
   bool help = false;
   std::string keys;     /* -keys SCRIPT, then -keyfile FILE's text appended */
   std::string keyFile;  /* -keyfile FILE */
+  std::string video;    /* -video FILE (.gif: GIF, anything else: H.264 MP4) */
 };
 
 /* The options text -help prints. */
@@ -101,6 +102,12 @@ std::unique_ptr<Backend> CreateGLBackend(int width, int height, std::string &err
 bool WriteFrameImage(const std::string &dir, long frame, bool bmp, const Image &image, std::string &error);
 /* "frame_00042.png" */
 std::string FrameFileName(long frame, bool bmp);
+
+/* -video: the path of an executable `name` on $PATH, or empty. */
+std::string FindInPath(const std::string &name);
+/* Runs ffmpeg on the frames written to `dir` to make `video`; reports the
+ * outcome through MeInfo / MeWarning. Returns true on success. */
+bool AssembleVideo(const std::string &dir, bool bmp, const std::string &video);
 
 /* Per-phase timings of the loop, for -bench and -profile. */
 struct FrameTimes {
@@ -194,6 +201,7 @@ struct RRenderPrivate {
   bool helpShown = false;
   bool paused = false;           /* toggled with the help: no tick */
   RPerformanceBar *bar = nullptr;
+  std::string videoTempDir; /* frames for -video without -out, removed after */
 };
 
 /* RGraphic creation shared by the primitives (graphic.cpp). */
