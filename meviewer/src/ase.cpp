@@ -38,6 +38,19 @@ struct Mesh {
 
 bool Flush(Mesh &m, std::vector<RObjectVertex> &out, std::string &error) {
   if (m.numVertex < 0 && m.numFaces < 0) return true;
+  /* Every index used below is checked here against the arrays themselves,
+   * whatever order the file gave counts and lists in. */
+  if (m.normal.size() < m.face.size() || m.normalCount.size() < m.face.size()) {
+    error = "faces without *MESH_NUMFACES";
+    return false;
+  }
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    for (long c : m.face[f])
+      if (c < 0 || std::size_t(c) >= m.vertex.size()) return error = "a face corner is not a vertex", false;
+    if (f < m.tface.size())
+      for (long c : m.tface[f])
+        if (c < 0 || std::size_t(c) >= m.tvert.size()) return error = "a texture corner is not a *MESH_TVERT", false;
+  }
   for (std::size_t f = 0; f < m.face.size(); ++f) {
     const std::array<long, 3> &c = m.face[f];
     float p[3][3];
@@ -62,7 +75,6 @@ bool Flush(Mesh &m, std::vector<RObjectVertex> &out, std::string &error) {
       out.push_back(v);
     }
   }
-  (void)error;
   m = Mesh{};
   return true;
 }
@@ -94,17 +106,21 @@ bool ParseAse(const std::string &text, std::vector<RObjectVertex> &out, std::str
       return true;
     };
     if (key == "*MESH") {
-      if (!Flush(m, out, error)) return false;
+      if (!Flush(m, out, error)) return fail(error);
       anyMesh = true;
+      lastNormalFace = -1, normalsSinceFace = 0; /* normals belong to their own mesh */
     } else if (key == "*MESH_NUMVERTEX") {
+      if (m.numVertex >= 0) return fail("*MESH_NUMVERTEX given twice in one mesh");
       if (!count(m.numVertex)) return fail("bad *MESH_NUMVERTEX");
       m.vertex.assign(std::size_t(m.numVertex), {0, 0, 0});
     } else if (key == "*MESH_NUMFACES") {
+      if (m.numFaces >= 0) return fail("*MESH_NUMFACES given twice in one mesh");
       if (!count(m.numFaces)) return fail("bad *MESH_NUMFACES");
       m.face.clear(), m.face.reserve(std::size_t(m.numFaces));
       m.normal.assign(std::size_t(m.numFaces), {});
       m.normalCount.assign(std::size_t(m.numFaces), 0);
     } else if (key == "*MESH_NUMTVERTEX") {
+      if (!m.tvert.empty() || !m.tface.empty()) return fail("*MESH_NUMTVERTEX given twice in one mesh");
       if (!count(m.numTVertex)) return fail("bad *MESH_NUMTVERTEX");
       m.tvert.assign(std::size_t(m.numTVertex), {0, 0, 0});
     } else if (key == "*MESH_VERTEX" || key == "*MESH_TVERT") {
@@ -135,14 +151,15 @@ bool ParseAse(const std::string &text, std::vector<RObjectVertex> &out, std::str
       m.tface.push_back({ta, tb, tc});
     } else if (key == "*MESH_FACENORMAL") {
       long i = -1;
-      if (!(ls >> i) || i < 0 || i >= m.numFaces) return fail("bad *MESH_FACENORMAL index");
+      if (!(ls >> i) || i < 0 || std::size_t(i) >= m.normal.size()) return fail("bad *MESH_FACENORMAL index");
       lastNormalFace = i, normalsSinceFace = 0;
     } else if (key == "*MESH_VERTEXNORMAL") {
       long v = -1;
       float x, y, z;
       if (!(ls >> v >> x >> y >> z) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
         return fail("bad *MESH_VERTEXNORMAL");
-      if (lastNormalFace < 0 || normalsSinceFace >= 3) return fail("*MESH_VERTEXNORMAL outside a face's three");
+      if (lastNormalFace < 0 || normalsSinceFace >= 3 || std::size_t(lastNormalFace) >= m.normal.size())
+        return fail("*MESH_VERTEXNORMAL outside a face's three");
       m.normal[std::size_t(lastNormalFace)][std::size_t(normalsSinceFace)] = {x, y, z};
       m.normalCount[std::size_t(lastNormalFace)] = ++normalsSinceFace;
     }
@@ -152,7 +169,7 @@ bool ParseAse(const std::string &text, std::vector<RObjectVertex> &out, std::str
     return fail("the last mesh has " + std::to_string(m.face.size()) + " faces, *MESH_NUMFACES says " +
                 std::to_string(m.numFaces));
   if (!m.tface.empty() && m.tface.size() != m.face.size()) return fail("*MESH_TFACE count differs from the faces");
-  Flush(m, out, error);
+  if (!Flush(m, out, error)) return fail(error);
   if (out.empty()) return fail("the meshes have no faces");
   return true;
 }

@@ -66,7 +66,11 @@ TEST(Ase, BrokenFilesNameTheLine) {
                {replace("*MESH_NUMVERTEX 5", "*MESH_NUMVERTEX -5"), "bad *MESH_NUMVERTEX"},
                {replace("A:    0 B:    2 C:    1", "A    0 B    2 C    1"), "bad *MESH_FACE"},
                {replace("*MESH_VERTEXNORMAL 1	0.0	0.0	-2.0", "*MESH_VERTEXNORMAL 1	0.0	0.0	-2.0\n*MESH_VERTEXNORMAL 1 0 0 1"),
-                "outside a face's three"}};
+                "outside a face's three"},
+               // Found by the libFuzzer target: a normal of a previous mesh's face.
+               {good + "*MESH {\n*MESH_VERTEXNORMAL 0 0 0 1\n", "outside a face's three"},
+               {replace("*MESH_NUMFACES 6", "*MESH_NUMFACES 6\n*MESH_NUMFACES 2"), "given twice"},
+               {replace("*MESH_NUMVERTEX 5", "*MESH_NUMVERTEX 5\n*MESH_NUMVERTEX 9"), "given twice"}};
   for (const Case &c : cases) {
     std::vector<RObjectVertex> v;
     std::string error;
