@@ -89,3 +89,33 @@ TEST(LightsBadInput, UnknownLightWarns) {
 }
 
 } // namespace
+
+namespace {
+
+// The guide: vertex edits show in the next frame, and the renderer fills
+// each header's m_Matrix from the graphic's transform.
+TEST(Drawing, VertexEditsShowNextFrameAndTheMatrixIsCopied) {
+  RRender *rc = MakeContext("prog -size 64x64");
+  ASSERT_NE(rc, nullptr);
+  const float white[4] = {1, 1, 1, 1};
+  MeMatrix4 tm;
+  MeMatrix4TMMakeIdentity(tm);
+  RGraphic *sq = RGraphicSquareCreate(rc, 2, white, tm);
+  ASSERT_NE(sq, nullptr);
+  auto centre = [&] {
+    karma::viewer::Image img;
+    rc->m_pPrivate->backend->DrawFrame(rc);
+    EXPECT_TRUE(rc->m_pPrivate->backend->ReadFrame(img));
+    return int(img.pixels[(32 * 64 + 32) * 3]);
+  };
+  const int background = int(0.2f * 255 + 0.5f);
+  EXPECT_GT(centre(), background + 20); // the square covers the centre
+  for (int i = 0; i < sq->m_pObject->m_nNumVertices; ++i) sq->m_pVertices[i].m_X += 50; // move it away
+  EXPECT_NEAR(centre(), background, 1);
+  MeMatrix4TMSetPosition(tm, -50, 0, 0); // the transform brings it back
+  EXPECT_GT(centre(), background + 20);
+  EXPECT_EQ(sq->m_pObject->m_Matrix[3][0], -50);
+  RRenderContextDestroy(rc);
+}
+
+} // namespace
