@@ -158,6 +158,7 @@ const char *KeyScriptHelp() {
          "  KEY: a printable character or Up Down Left Right Return Escape Tab Space F1..F12\n"
          "  Controls: Up/Down/Left/Right = arrow keys, Up2/Down2/Left2/Right2 = w s a d,\n"
          "  actions 0..5 = Space Tab Return x c v, Escape quits (or closes a menu),\n"
+         "  F1 shows or hides the help (and pauses or resumes the simulation),\n"
          "  Action1's key opens the default menu when the program has no Action1 callback.\n"
          "  Example: -keys \"10:key Return; 20:press Up; 30:release Up; 40:mouse 320,240,1\"\n";
 }

@@ -176,8 +176,8 @@ const char *HelpText() {
          "                 (.gif: an animated GIF, otherwise H.264 MP4; 30 frames/s)\n"
          "  -help          print this list and exit\n"
          "Textures are found as NAME.bmp in: the working directory, $KARMA_DATA_DIR,\n"
-         "the program's directory and its data/ and ../share/karma/ folders, then\n"
-         "Karma's installed share/karma/ folder.\n";
+         "the program's directory and its data/ and ../share/karma/ folders, the\n"
+         "build tree's share/karma/, then Karma's installed share/karma/ folder.\n";
 }
 
 bool ParseViewerOptions(MeCommandLineOptions *options, MeCommandLineOptions *overrides, bool eat,

@@ -64,7 +64,7 @@ struct Texture {
   unsigned glName = 0;    /* the backend's texture object, 0 = not uploaded */
 };
 
-/* The font texture: 16 x 6 cells of R_FONT_CELL_W x R_FONT_CELL_H texels for
+/* The font texture: 16 x 6 cells of kFontCellW x kFontCellH texels for
  * the printable ASCII characters 32..126, white with coverage in alpha. */
 constexpr int kFontCellW = 16, kFontCellH = 28, kFontColumns = 16, kFontRows = 6;
 constexpr int kFontTextureSize = 256;

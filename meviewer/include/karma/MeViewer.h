@@ -21,7 +21,8 @@
  *   -bench   as -null, and per-frame timing statistics are printed at exit
  *   -profile draws, and prints a per-phase timing table at exit
  * Output: -frames N, -out DIR (DIR/frame_00000.png ...), -every K, -bmp,
- * -size WxH (default 640x480).
+ * -size WxH (default 640x480), -video FILE (with ffmpeg). Input: -keys
+ * SCRIPT, -keyfile FILE (scripted key presses and mouse moves).
  *
  * Functions taking an RRender* accept NULL with a warning and do nothing
  * (returning NULL / -1 / 1 where they return something). */
