@@ -274,28 +274,6 @@ TEST_F(Graphics, BadSizesGiveNullWithAWarning) {
   EXPECT_GE(Messages::Warnings().size(), 7u) << Messages::All();
 }
 
-extern "C" int ViewerCApiCheck(RRender *rc);
-
-TEST_F(Graphics, GuideColourArgumentsWorkFromCInEitherPrecision) {
-  EXPECT_EQ(ViewerCApiCheck(rc), 8);
-  EXPECT_EQ(rc->m_pRG_First->m_pObject->m_ColorAmbient[1], 1); // the last SetColor, white
-}
-
-TEST_F(Graphics, GuideColourArgumentsWorkFromCxx) {
-  MeReal red[] = {1, 0, 0, 0};
-  const float white[4] = {1, 1, 1, 1};
-  RGraphic *a = RGraphicSphereCreate(rc, 1, red, nullptr);
-  RGraphic *b = RGraphicSphereCreate(rc, 1, white, nullptr);
-  ASSERT_NE(a, nullptr);
-  ASSERT_NE(b, nullptr);
-  EXPECT_EQ(a->m_pObject->m_ColorDiffuse[0], 1);
-  EXPECT_EQ(a->m_pObject->m_ColorDiffuse[1], 0);
-  EXPECT_EQ(b->m_pObject->m_ColorDiffuse[1], 1);
-  const AcmeReal s[3] = {0, 0, 0}, e[3] = {1, 0, 0};
-  EXPECT_NE(RNLineCreate(rc, s, e, white, nullptr), nullptr);
-  EXPECT_NE(RNLineCreate(rc, s, e, red, nullptr), nullptr);
-}
-
 RObjectVertex StripVertex(float x, float y) {
   RObjectVertex v{};
   v.m_X = x, v.m_Y = y, v.m_NZ = 1;
