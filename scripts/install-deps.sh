@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git   # toolchain
-  libeigen3-dev libccd-dev                           # maths, convex collision
+  libeigen3-dev libccd-dev libqhull-dev              # maths, convex collision, hulls
   libosmesa6-dev                                     # offscreen OpenGL (MeViewer)
   libstb-dev                                         # PNG/BMP read and write
   libgtest-dev libgmock-dev libbenchmark-dev         # tests and benchmarks

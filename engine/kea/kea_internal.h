@@ -20,19 +20,52 @@ inline MeReal NormaliseBound(MeReal v) {
   return v;
 }
 
+/* The per-row part of a problem (everything but the matrix), shared by the
+ * dense and the sparse problems. */
+struct RowView {
+  int n = 0;
+  std::span<const MeReal> b, lo, hi;
+  std::span<const int> findex;
+  std::span<const MeReal> mu;
+};
+inline RowView Rows(const LcpProblem &p) { return {p.n, p.b, p.lo, p.hi, p.findex, p.mu}; }
+inline RowView Rows(const SparseLcpProblem &p) { return {p.n, p.b, p.lo, p.hi, p.findex, p.mu}; }
+
 /* The bounds of every row for a given lambda: the caller's (normalised) box,
  * or +-mu_i * max(lambda_j, 0) on friction rows. */
-void ComputeBounds(const LcpProblem &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo,
+void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo,
                    std::vector<MeReal> &hi);
 
-/* Checks the problem and options; on failure warns and returns false. */
+/* The contract's residual max_i |lambda_i - clamp(lambda_i - w_i, lo_i, hi_i)|
+ * for a given lambda and its w (bounds computed from lambda). */
+MeReal ComplementarityResidual(const RowView &p, std::span<const MeReal> lambda, std::span<const MeReal> w);
+
+/* Warns "<function>: bad input: <why>; ..." and returns false. */
+bool Reject(const char *function, const char *why);
+
+/* Checks the per-row arrays and the options (everything but the matrix,
+ * whose size and finiteness the caller checks first); on failure warns and
+ * returns false. */
+bool ValidateRows(const RowView &p, const KeaOptions &o, const char *function);
+
+/* Checks the dense problem and options; on failure warns and returns false. */
 bool Validate(const LcpProblem &p, const KeaOptions &o, const char *function);
+
+/* Checks the sparse problem (CSR structure: n + 1 ascending row starts from
+ * 0, columns in range and strictly ascending within a row, every diagonal
+ * present, finite values) and options; on failure warns and returns false. */
+bool ValidateSparse(const SparseLcpProblem &p, const KeaOptions &o, const char *function);
 
 /* The BadInput result: zeros everywhere. */
 KeaResult BadInputResult(int n);
 
 /* Tolerance * (1 + max|b|): the residual below which the problem is solved. */
-MeReal SolvedThreshold(const LcpProblem &p, const KeaOptions &o);
+MeReal SolvedThreshold(const RowView &p, const KeaOptions &o);
+
+/* Solves a dense symmetric block (the active set's free rows) by LDL^T,
+ * falling back to a least-squares (complete orthogonal decomposition) solve
+ * when the factorisation breaks down. block is m x m, column-major; rhs m. */
+void SolveDenseBlock(std::vector<MeReal> &block, std::vector<MeReal> &rhs, int m, std::vector<MeReal> &x);
 
 /* Emits the iteration-cap / cycle warnings when options.warnings is set. */
 void WarnIterationLimit(const KeaOptions &o, const char *function, int iterations, MeReal residual);

@@ -11,7 +11,7 @@
 namespace karma::kea {
 namespace detail {
 
-void ComputeBounds(const LcpProblem &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo,
+void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo,
                    std::vector<MeReal> &hi) {
   const auto n = static_cast<std::size_t>(p.n);
   lo.resize(n);
@@ -37,23 +37,65 @@ bool AllFinite(std::span<const MeReal> v) {
   return std::all_of(v.begin(), v.end(), [](MeReal x) { return std::isfinite(x); });
 }
 
+}  // namespace
+
+MeReal ComplementarityResidual(const RowView &p, std::span<const MeReal> lambda, std::span<const MeReal> w) {
+  const auto n = static_cast<std::size_t>(p.n);
+  std::vector<MeReal> lo, hi;
+  ComputeBounds(p, lambda, lo, hi);
+  MeReal worst = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const MeReal projected = std::clamp(lambda[i] - w[i], lo[i], hi[i]);
+    worst = std::max(worst, std::fabs(lambda[i] - projected));
+  }
+  return worst;
+}
+
 bool Reject(const char *function, const char *why) {
   MeWarning(0, "%s: bad input: %s; returning lambda = 0", function, why);
   return false;
 }
 
-}  // namespace
-
 bool Validate(const LcpProblem &p, const KeaOptions &o, const char *function) {
   if (p.n < 0) return Reject(function, "negative row count");
   const auto n = static_cast<std::size_t>(p.n);
   if (p.A.size() != n * n) return Reject(function, "A does not hold n*n values");
+  if (!AllFinite(p.A)) return Reject(function, "A contains NaN or infinity");
+  return ValidateRows(Rows(p), o, function);
+}
+
+bool ValidateSparse(const SparseLcpProblem &p, const KeaOptions &o, const char *function) {
+  if (p.n < 0) return Reject(function, "negative row count");
+  const auto n = static_cast<std::size_t>(p.n);
+  if (p.rowStart.size() != n + 1) return Reject(function, "CSR row starts do not hold n + 1 values");
+  if (p.rowStart[0] != 0) return Reject(function, "CSR row starts do not begin at 0");
+  for (std::size_t i = 0; i < n; ++i)
+    if (p.rowStart[i + 1] < p.rowStart[i]) return Reject(function, "CSR row starts are not ascending");
+  if (static_cast<std::size_t>(p.rowStart[n]) != p.col.size() || p.col.size() != p.val.size())
+    return Reject(function, "CSR column and value arrays do not hold rowStart[n] values");
+  for (std::size_t i = 0; i < n; ++i) {
+    bool diagonal = false;
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int c = p.col[static_cast<std::size_t>(k)];
+      if (c < 0 || c >= p.n) return Reject(function, "CSR column index out of range");
+      if (k > p.rowStart[i] && c <= p.col[static_cast<std::size_t>(k) - 1])
+        return Reject(function, "CSR columns are not strictly ascending within a row");
+      if (static_cast<std::size_t>(c) == i) diagonal = true;
+    }
+    if (!diagonal) return Reject(function, "CSR row without its diagonal entry");
+  }
+  if (!AllFinite(p.val)) return Reject(function, "A contains NaN or infinity");
+  return ValidateRows(Rows(p), o, function);
+}
+
+bool ValidateRows(const RowView &p, const KeaOptions &o, const char *function) {
+  if (p.n < 0) return Reject(function, "negative row count");
+  const auto n = static_cast<std::size_t>(p.n);
   if (p.b.size() != n || p.lo.size() != n || p.hi.size() != n)
     return Reject(function, "b, lo or hi does not hold n values");
   if (!p.findex.empty() && p.findex.size() != n) return Reject(function, "findex is neither empty nor n values");
   if (!o.warmStart.empty() && o.warmStart.size() != n)
     return Reject(function, "warm start is neither empty nor n values");
-  if (!AllFinite(p.A)) return Reject(function, "A contains NaN or infinity");
   if (!AllFinite(p.b)) return Reject(function, "b contains NaN or infinity");
   if (!AllFinite(o.warmStart)) return Reject(function, "warm start contains NaN or infinity");
   if (!(o.epsilon >= 0) || !std::isfinite(o.epsilon)) return Reject(function, "epsilon is negative or NaN");
@@ -94,7 +136,7 @@ KeaResult BadInputResult(int n) {
   return r;
 }
 
-MeReal SolvedThreshold(const LcpProblem &p, const KeaOptions &o) {
+MeReal SolvedThreshold(const RowView &p, const KeaOptions &o) {
   MeReal bmax = 0;
   for (MeReal v : p.b) bmax = std::max(bmax, std::fabs(v));
   const MeReal tol = o.tolerance > 0 ? o.tolerance : KeaDefaultTolerance();
@@ -135,18 +177,15 @@ const char *KeaStatusName(KeaStatus status) {
 
 MeReal KeaResidual(const LcpProblem &p, MeReal epsilon, std::span<const MeReal> lambda, std::span<MeReal> w) {
   const auto n = static_cast<std::size_t>(p.n);
-  std::vector<MeReal> lo, hi;
-  detail::ComputeBounds(p, lambda, lo, hi);
-  MeReal worst = 0;
+  std::vector<MeReal> wl(n);
   for (std::size_t i = 0; i < n; ++i) {
     MeReal wi = -p.b[i] + epsilon * lambda[i];
     const MeReal *row = p.A.data() + i * n;
     for (std::size_t j = 0; j < n; ++j) wi += row[j] * lambda[j];
-    if (w.size() == n) w[i] = wi;
-    const MeReal projected = std::clamp(lambda[i] - wi, lo[i], hi[i]);
-    worst = std::max(worst, std::fabs(lambda[i] - projected));
+    wl[i] = wi;
   }
-  return worst;
+  if (w.size() == n) std::copy(wl.begin(), wl.end(), w.begin());
+  return detail::ComplementarityResidual(detail::Rows(p), lambda, wl);
 }
 
 KeaResult KeaSolve(const LcpProblem &problem, const KeaOptions &options) {

@@ -86,12 +86,19 @@
  * crash.
  *
  * ===========================================================================
- * TODO (sparsity): this is the dense reference implementation. A is formed
- * and factorised densely (O(n^3) per factorisation). The production path
- * should exploit the partition structure (J is block-sparse with one or two
- * bodies per row; A's sparsity follows body sharing), assemble J M^-1 J^T
- * through the platform kernels and factorise sparsely / incrementally. The
- * dense solvers here are the specification those must agree with.
+ * Sparsity. KeaSolveActiveSet / KeaSolvePGS are the dense reference
+ * implementation (A formed and factorised densely, O(n^3) per
+ * factorisation); they are the specification the sparse path must agree
+ * with. KeaSolveSparse (kea_sparse.cpp) takes A in CSR, as Mdt builds it
+ * (A's sparsity follows body sharing), and is what the step uses: the same
+ * active-set logic (shared code, kea_activeset_core.h) with the free block
+ * factorised by a sparse LDL^T under an AMD ordering (dense LDL^T for free
+ * blocks of at most 20 rows; the factorisation is reused while the free set
+ * is unchanged), and PGS sweeping the CSR rows. A chain (banded A) costs
+ * O(n) per pivot step / sweep.
+ * TODO (sparsity): still open: assembling J M^-1 J^T through the platform
+ * kernels in Kea itself (Mdt assembles A today), and incremental (rank-one)
+ * updates of the factorisation between pivot steps instead of refactorising.
  * ======================================================================== */
 #ifndef KARMA_KEA_LCP_H
 #define KARMA_KEA_LCP_H

@@ -22,7 +22,7 @@ KeaResult KeaSolvePGS(const LcpProblem &p, const KeaOptions &o) {
   const auto n = static_cast<std::size_t>(p.n);
   const MeReal eps = o.epsilon;
   const int cap = o.maxIterations > 0 ? o.maxIterations : 50;
-  const MeReal threshold = detail::SolvedThreshold(p, o);
+  const MeReal threshold = detail::SolvedThreshold(detail::Rows(p), o);
 
   KeaResult r;
   r.lambda.assign(n, MeReal(0));
@@ -30,7 +30,7 @@ KeaResult KeaSolvePGS(const LcpProblem &p, const KeaOptions &o) {
   if (!o.warmStart.empty()) std::copy(o.warmStart.begin(), o.warmStart.end(), r.lambda.begin());
 
   std::vector<MeReal> lo, hi;
-  detail::ComputeBounds(p, r.lambda, lo, hi);
+  detail::ComputeBounds(detail::Rows(p), r.lambda, lo, hi);
   for (std::size_t i = 0; i < n; ++i) r.lambda[i] = std::clamp(r.lambda[i], lo[i], hi[i]);
 
   std::vector<MeReal> best = r.lambda;

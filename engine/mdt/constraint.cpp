@@ -149,6 +149,7 @@ void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0
   c->body[0] = body0;
   c->body[1] = body1;
   attachDefault(c);
+  if (c->type->attach) c->type->attach(c);
   c->warmRows = 0;
 }
 

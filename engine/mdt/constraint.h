@@ -114,6 +114,10 @@ struct ConstraintType {
   // Optional: called when the constraint is destroyed (contact groups free
   // their contacts).
   void (*destroy)(MdtConstraint *c);
+  // Optional: called after MdtConstraintSetBodies (and Mdt*Reset) has put
+  // the default attachment (attachDefault), so a type can replace it with
+  // its own (Spring: each body's own origin; RPRO: the centres of mass).
+  void (*attach)(MdtConstraint *c);
   // Optional: enumerates the bodies beyond body[0..1] that rows touch; no
   // type needs this yet (every row touches body[0] and body[1] only).
 };

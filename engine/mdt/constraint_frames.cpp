@@ -15,6 +15,7 @@ void resetKeepingBodies(MdtConstraint *c) {
   c->body[1] = b1;
   attachDefault(c);
   c->type->reset(c);
+  if (c->type->attach) c->type->attach(c);
 }
 
 void toBodyFrame(const MdtConstraint *c, int i, const MeVector3 world, MeVector3 local) {

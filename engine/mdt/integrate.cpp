@@ -9,12 +9,10 @@
 //   w'  = w + Iw^-1 (h tau + Ja)                   (Ja: angular impulse)
 //   x'  = x + h v'
 //   q'  = q turned by w' over h (MeQuaternionFiniteRotation; exact for
-//         constant w'). With a fast-spin axis a in use, w' is split into
-//         its part along a and the rest, and the body is turned by the rest
-//         first and then about a, so a large spin cannot swamp a small
-//         off-axis turn in one combined rotation.
+//         constant w'). With a fast-spin axis a in use, see advanceBody.
 //
-// The gyroscopic term w x (Iw w) is explicit. Constraint impulses are added
+// The gyroscopic term w x (Iw w) is explicit, except for bodies with a
+// fast-spin axis (see gyroscopicStep). Constraint impulses are added
 // between the velocity prediction and the position update (step.cpp):
 //   v' = vPred + M^-1 J^T lambda.
 #include "MeMessage.h"
@@ -41,6 +39,44 @@ void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 te
   MeMatrix3TransposeMultiplyVector(out, R, lb);  // body -> world
 }
 
+namespace {
+
+// The gyroscopic velocity change of a fast spinner, linearly implicit.
+//
+// Explicitly, dw = -h Iw^-1 (w x Iw w). For a wheel spinning at S about a
+// (inertia Is about a, Ia across), the part of w across a then turns at
+// Omega = S (Is - Ia) / Ia each step, and explicit Euler multiplies its size
+// by sqrt(1 + (h Omega)^2) per step: with S h ~ 1 a forced turn of the
+// wheel (a car cornering) blows up. Instead solve g(w') = Iw (w' - w) +
+// h w' x Iw w' = 0 by one Newton step from w:
+//   (Iw + h (W Iw - [Iw w]x)) dw = -h w x Iw w,    W = [w]x,
+// whose cross-axis factor is 1 / sqrt(1 + (h Omega)^2) <= 1: stable at any
+// spin, exact as h -> 0, and the spin about a principal axis is untouched
+// (w x Iw w = 0 there). The matrix is always invertible (its symmetric part
+// is Iw).
+void gyroscopicStep(const MdtBody *b, MECONSTMATRIX MeMatrix3 Iw, MeReal h, MeVector3 dw) {
+  const MeReal *w = b->angularVelocity;
+  MeVector3 L, f;
+  MeMatrix3MultiplyVector(L, Iw, w);
+  MeVector3Cross(f, w, L);
+  MeVector3Scale(f, -h);
+  MeMatrix3 J, Jinv;
+  for (int k = 0; k < 3; ++k) {
+    MeVector3 e = {0, 0, 0}, col, t1, t2;
+    e[k] = 1;
+    MeMatrix3MultiplyVector(col, Iw, e);  // Iw e_k
+    MeVector3Cross(t1, w, col);          // W Iw e_k
+    MeVector3Cross(t2, L, e);            // [Iw w]x e_k
+    for (int r = 0; r < 3; ++r) J[r][k] = col[r] + h * (t1[r] - t2[r]);
+  }
+  if (MeMatrix3Inverse(Jinv, J))
+    MeMatrix3MultiplyVector(dw, Jinv, f);
+  else
+    MeVector3Set(dw, 0, 0, 0);  // unreachable: J's symmetric part is Iw
+}
+
+}  // namespace
+
 void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
   MeVector3 tmp;
 
@@ -57,16 +93,28 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
 
   // Angular velocity.
   MeVector3 L, gyro, tau;
-  applyBodyTensor(L, b, b->inertia, b->angularVelocity);
-  MeVector3Cross(gyro, b->angularVelocity, L);
   MeVector3Copy(tau, b->torque);
   MeVector3MultiplyAdd(tau, -b->angularDamping, b->angularVelocity);
-  MeVector3Subtract(tau, tau, gyro);
+  if (!b->fastSpinEnabled) {
+    applyBodyTensor(L, b, b->inertia, b->angularVelocity);
+    MeVector3Cross(gyro, b->angularVelocity, L);
+    MeVector3Subtract(tau, tau, gyro);
+  }
   MeVector3MultiplyScalar(tmp, tau, h);
   MeVector3Add(tmp, tmp, b->angularImpulse);
   MeVector3 dw;
   applyBodyTensor(dw, b, b->invInertia, tmp);
   MeVector3Add(b->wPred, b->angularVelocity, dw);
+  if (b->fastSpinEnabled) {
+    MeMatrix3 Iw;  // world-frame inertia
+    for (int k = 0; k < 3; ++k) {
+      MeVector3 e = {0, 0, 0};
+      e[k] = 1;
+      applyBodyTensor(Iw[k], b, b->inertia, e);  // symmetric: row k = column k
+    }
+    gyroscopicStep(b, Iw, h, dw);
+    MeVector3Add(b->wPred, b->wPred, dw);
+  }
 
   // World-frame inverse inertia for the constraint response:
   // (R^T Ib R + h^2 K)^-1, with K the body's geometric stiffness (zero
@@ -111,11 +159,18 @@ void advanceBody(MdtBody *b, MeReal h) {
   MeVector4 q1;
   MeVector4Copy(q1, b->q);
   if (b->fastSpinEnabled) {
+    // w' = par + perp, par along the fast-spin axis a. The spin is applied
+    // FIRST, about a as it stands at the start of the step, then the turn
+    // perp carries the spinning body (and a with it). For a wheel spinning
+    // about its axle while the car turns this is the true motion
+    // q' = turn(perp) turn(spin about a) q; spinning after the turn would
+    // spin about the old axle direction a while the body's axle has already
+    // moved, tilting the axle by ~|perp| |par| h^2 every step.
     MeVector3 par, perp;
     MeVector3MultiplyScalar(par, b->fastSpinAxis, MeVector3Dot(w1, b->fastSpinAxis));
     MeVector3Subtract(perp, w1, par);
-    MeQuaternionFiniteRotation(q1, perp, h);
     MeQuaternionFiniteRotation(q1, par, h);
+    MeQuaternionFiniteRotation(q1, perp, h);
   } else {
     MeQuaternionFiniteRotation(q1, w1, h);
   }

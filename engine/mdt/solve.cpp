@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "MeMessage.h"
+#include "kernels.h"
 #include "step.h"
 
 namespace karma::mdt {
@@ -17,23 +18,15 @@ namespace {
 
 int rowCapacity(const MdtConstraint *c);
 
-// M^-1 J^T of one row for one of its bodies (lin, ang).
-void minvJt(const MdtBody *b, const MeReal jl[3], const MeReal ja[3], MeVector3 lin,
-            MeVector3 ang) {
-  MeVector3MultiplyScalar(lin, jl, b->invMass);
-  MeMatrix3MultiplyVector(ang, b->invInertiaWorld, ja);
-}
-
-MeReal bodyDot(const MeReal jl[3], const MeReal ja[3], const MeVector3 lin, const MeVector3 ang) {
-  return MeVector3Dot(jl, lin) + MeVector3Dot(ja, ang);
-}
-
 }  // namespace
 
 void solvePartition(MdtWorldID world, StepScratch &s, const Partition &part,
                     const StepContext &ctx) {
   MdtWorldPrivate *p = world->priv;
   const MdtWorldParams &params = world->params;
+  // The per-row kernels: M^-1 J^T of a row for one body, and one body's
+  // share of a J M^-1 J^T entry (also J v).
+  const platform::Kernels &kern = platform::ActiveKernels();
   accumulateGeometricStiffness(world, s, part);
   for (int i = 0; i < part.bodyCount; ++i) {
     MdtBody *b = s.partBodies[(size_t)(part.bodyStart + i)];
@@ -104,9 +97,9 @@ void solvePartition(MdtWorldID world, StepScratch &s, const Partition &part,
       body1[(size_t)k] = c->body[1] && c->body[1]->enabled ? c->body[1]->index : -1;
       MeReal jv = 0;
       if (body0[(size_t)k] >= 0)
-        jv += bodyDot(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
+        jv += kern.rowPairEntry(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
       if (body1[(size_t)k] >= 0)
-        jv += bodyDot(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
+        jv += kern.rowPairEntry(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
       b[(size_t)k] = row.speed - jv;
       lo[(size_t)k] = row.lo <= -MEINFINITY ? -MEINFINITY : row.lo * ctx.h;
       hi[(size_t)k] = row.hi >= MEINFINITY ? MEINFINITY : row.hi * ctx.h;
@@ -148,12 +141,14 @@ void solvePartition(MdtWorldID world, StepScratch &s, const Partition &part,
   for (int k = 0; k < m; ++k) {
     const Row &row = *kept[(size_t)k];
     MeReal *out = &mj[(size_t)k * 12];
-    if (body0[(size_t)k] >= 0)
-      minvJt(s.partBodies[(size_t)(part.bodyStart + body0[(size_t)k])], row.J[0], row.J[1], out,
-             out + 3);
-    if (body1[(size_t)k] >= 0)
-      minvJt(s.partBodies[(size_t)(part.bodyStart + body1[(size_t)k])], row.J[2], row.J[3],
-             out + 6, out + 9);
+    if (body0[(size_t)k] >= 0) {
+      const MdtBody *bk = s.partBodies[(size_t)(part.bodyStart + body0[(size_t)k])];
+      kern.bodyMinvJt(bk->invMass, bk->invInertiaWorld, row.J[0], row.J[1], out, out + 3);
+    }
+    if (body1[(size_t)k] >= 0) {
+      const MdtBody *bk = s.partBodies[(size_t)(part.bodyStart + body1[(size_t)k])];
+      kern.bodyMinvJt(bk->invMass, bk->invInertiaWorld, row.J[2], row.J[3], out + 6, out + 9);
+    }
   }
   std::vector<int> rowStart((size_t)m + 1, 0), col;
   std::vector<MeReal> val;
@@ -170,7 +165,7 @@ void solvePartition(MdtWorldID world, StepScratch &s, const Partition &part,
         // Row j's M^-1 J^T half that belongs to body bi.
         const int sideJ = body0[(size_t)j] == bi ? 0 : 1;
         const MeReal *mjj = &mj[(size_t)j * 12 + (size_t)(sideJ * 6)];
-        const MeReal v = bodyDot(ri.J[2 * side], ri.J[2 * side + 1], mjj, mjj + 3);
+        const MeReal v = kern.rowPairEntry(ri.J[2 * side], ri.J[2 * side + 1], mjj, mjj + 3);
         if (seen[(size_t)j] != i) {
           seen[(size_t)j] = i;
           acc[(size_t)j] = 0;

@@ -1,6 +1,20 @@
-/* Mcd.h: Karma Collision (framework, geometries, spaces, queries).
- * The API arrives with the collision issue. */
+/* Mcd.h: Karma Collision. Includes every collision header: the framework,
+ * geometries, models, pairs, contacts and the nearfield interactions. */
 #ifndef KARMA_MCD_H
 #define KARMA_MCD_H
 #include "MeGlobals.h"
+#include "McdFrame.h"
+#include "McdGeometry.h"
+#include "McdSphere.h"
+#include "McdBox.h"
+#include "McdCylinder.h"
+#include "McdPlane.h"
+#include "McdSphyl.h"
+#include "McdTriangleList.h"
+#include "McdConvexMesh.h"
+#include "McdAggregate.h"
+#include "McdModel.h"
+#include "McdContact.h"
+#include "McdModelPair.h"
+#include "McdInteraction.h"
 #endif

@@ -16,5 +16,10 @@
 #include "MdtLinear1.h"
 #include "MdtLinear2.h"
 #include "MdtFixedPath.h"
+#include "MdtCarWheel.h"
+#include "MdtSpring.h"
+#include "MdtSkeletal.h"
+#include "MdtSpring6.h"
+#include "MdtRPROJoint.h"
 #include "MdtContact.h"
 #endif

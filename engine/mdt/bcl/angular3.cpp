@@ -66,7 +66,7 @@ void relockTwist(MdtConstraint *c) {
 namespace karma::mdt {
 extern const ConstraintType kAngular3Type = {
     MdtConstraintTypeAngular3, "Angular3", sizeof(MdtAngular3), 3, nullptr, reset, addRows,
-    nullptr, nullptr};
+    nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Angular3, kAngular3Type)

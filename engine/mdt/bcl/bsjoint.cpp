@@ -20,7 +20,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 namespace karma::mdt {
 extern const ConstraintType kBSJointType = {
     MdtConstraintTypeBSJoint, "BSJoint", sizeof(MdtBSJoint), 3, nullptr, reset, addRows,
-    nullptr, nullptr};
+    nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(BSJoint, kBSJointType)

@@ -74,7 +74,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 namespace karma::mdt {
 extern const ConstraintType kConeLimitType = {
     MdtConstraintTypeConeLimit, "ConeLimit", sizeof(MdtConeLimit), 1, nullptr, reset, addRows,
-    nullptr, nullptr};
+    nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(ConeLimit, kConeLimitType)

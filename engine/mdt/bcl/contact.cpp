@@ -120,7 +120,7 @@ void destroy(MdtConstraint *c) {
 namespace karma::mdt {
 extern const ConstraintType kContactType = {
     MdtConstraintTypeContact, "Contact", sizeof(MdtContact), 3, nullptr, reset, addRows,
-    afterSolve, destroy};
+    afterSolve, destroy, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Contact, kContactType)

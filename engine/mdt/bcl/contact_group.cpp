@@ -60,7 +60,7 @@ void destroy(MdtConstraint *c) {
 namespace karma::mdt {
 extern const ConstraintType kContactGroupType = {
     MdtConstraintTypeContactGroup, "ContactGroup", sizeof(MdtContactGroup), 0, rowCapacity,
-    reset, addRows, afterSolve, destroy};
+    reset, addRows, afterSolve, destroy, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(ContactGroup, kContactGroupType)

@@ -62,7 +62,7 @@ void afterSolve(MdtConstraint *c, const MeReal *, int, const StepContext &ctx) {
 namespace karma::mdt {
 extern const ConstraintType kFixedPathType = {
     MdtConstraintTypeFixedPath, "FixedPath", sizeof(MdtFixedPath), 3, nullptr, reset, addRows,
-    afterSolve, nullptr};
+    afterSolve, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(FixedPath, kFixedPathType)

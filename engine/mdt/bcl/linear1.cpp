@@ -31,7 +31,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 namespace karma::mdt {
 extern const ConstraintType kLinear1Type = {
     MdtConstraintTypeLinear1, "Linear1", sizeof(MdtLinear1), 1, nullptr, reset, addRows,
-    nullptr, nullptr};
+    nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Linear1, kLinear1Type)

@@ -60,7 +60,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 namespace karma::mdt {
 extern const ConstraintType kPrismaticType = {
     MdtConstraintTypePrismatic, "Prismatic", sizeof(MdtPrismatic), 7, nullptr, reset, addRows,
-    nullptr, nullptr};
+    nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Prismatic, kPrismaticType)

@@ -13,6 +13,11 @@ extern const ConstraintType kConeLimitType;
 extern const ConstraintType kLinear1Type;
 extern const ConstraintType kLinear2Type;
 extern const ConstraintType kFixedPathType;
+extern const ConstraintType kCarWheelType;
+extern const ConstraintType kSpringType;
+extern const ConstraintType kSkeletalType;
+extern const ConstraintType kSpring6Type;
+extern const ConstraintType kRPROJointType;
 extern const ConstraintType kContactType;
 extern const ConstraintType kContactGroupType;
 
@@ -20,7 +25,8 @@ const ConstraintType *const *allConstraintTypes() {
   static const ConstraintType *const all[] = {
       &kBSJointType,  &kHingeType,   &kPrismaticType, &kUniversalType,
       &kAngular3Type, &kConeLimitType, &kLinear1Type, &kLinear2Type,
-      &kFixedPathType, &kContactType, &kContactGroupType, nullptr};
+      &kFixedPathType, &kCarWheelType, &kSpringType, &kSkeletalType, &kSpring6Type, &kRPROJointType,
+      &kContactType, &kContactGroupType, nullptr};
   return all;
 }
 

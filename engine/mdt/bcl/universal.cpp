@@ -66,7 +66,7 @@ void setBodyCrossAxis(MdtConstraint *c, int i, const MeVector3 d) {
 namespace karma::mdt {
 extern const ConstraintType kUniversalType = {
     MdtConstraintTypeUniversal, "Universal", sizeof(MdtUniversal), 4, nullptr, reset, addRows,
-    nullptr, nullptr};
+    nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Universal, kUniversalType)

@@ -1,0 +1,71 @@
+// pair_iterator.cpp: handing the current events to the caller in chunks.
+//
+// Each call fills the chunk from the iterator's position: goodbyes first (so
+// that the memory they hold is released first), then hellos and stayings,
+// which share what is left. When both remain, each gets at least half of the
+// remaining room; one takes it all once the other is exhausted. A chunk of
+// size 1 therefore still makes progress. The return value is true while
+// events remain: call again with the same iterator.
+#include "axis_sort_space.h"
+
+#include "MeMessage.h"
+
+#include <algorithm>
+
+namespace karma::mcd {
+
+void AxisSortSpace::PairIteratorBegin(PairIterator *iter) const {
+  if (!iter) {
+    MeWarning(0, "McdSpacePairIteratorBegin: iterator is NULL");
+    return;
+  }
+  *iter = PairIterator{};
+  iter->generation = generation_;
+}
+
+bool AxisSortSpace::GetPairs(PairIterator *iter, PairChunk *chunk) {
+  return FillChunk(iter, chunk, true, "McdSpaceGetPairs");
+}
+
+bool AxisSortSpace::GetTransitions(PairIterator *iter, PairChunk *chunk) {
+  return FillChunk(iter, chunk, false, "McdSpaceGetTransitions");
+}
+
+bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withStaying, const char *api) {
+  if (!iter || !chunk || !chunk->array || chunk->size < 1) {
+    MeWarning(0, "%s: NULL iterator or container, or a container of no size; no pairs", api);
+    return false;
+  }
+  chunk->goodbyeFirst = chunk->goodbyeEnd = chunk->helloFirst = chunk->helloEnd = chunk->stayingEnd = 0;
+  if (!RequireOutside(api)) return false;
+  if (iter->generation != generation_) {
+    MeWarning(0, "%s: the iterator was not begun for the current pairs (call McdSpacePairIteratorBegin "
+                 "after McdSpaceEndChanges); no pairs", api);
+    return false;
+  }
+  const int goodbyesLeft = static_cast<int>(goodbyes_.size()) - iter->nextGoodbye;
+  const int hellosLeft = static_cast<int>(hellos_.size()) - iter->nextHello;
+  const int stayingsLeft = withStaying ? static_cast<int>(stayings_.size()) - iter->nextStaying : 0;
+
+  const int g = std::min(goodbyesLeft, chunk->size);
+  const int room = chunk->size - g;
+  const int h = std::min(hellosLeft, room - std::min(stayingsLeft, room / 2));
+  const int s = std::min(stayingsLeft, room - h);
+
+  const PairRecord **out = chunk->array;
+  for (int i = 0; i < g; ++i) *out++ = goodbyes_[static_cast<std::size_t>(iter->nextGoodbye + i)];
+  for (int i = 0; i < h; ++i) *out++ = hellos_[static_cast<std::size_t>(iter->nextHello + i)];
+  for (int i = 0; i < s; ++i) *out++ = stayings_[static_cast<std::size_t>(iter->nextStaying + i)];
+  iter->nextGoodbye += g;
+  iter->nextHello += h;
+  iter->nextStaying += s;
+
+  chunk->goodbyeFirst = 0;
+  chunk->goodbyeEnd = g;
+  chunk->helloFirst = g;
+  chunk->helloEnd = g + h;
+  chunk->stayingEnd = g + h + s;
+  return goodbyesLeft - g + hellosLeft - h + stayingsLeft - s > 0;
+}
+
+}  // namespace karma::mcd

@@ -1,0 +1,108 @@
+// pair_table.cpp: the overlap hash (linear probing with backward-shift
+// deletion, so no tombstones) and the fixed pool of pair records.
+//
+// OverlapTable invariants: a hash slot sits at its home or after it in the
+// probe sequence with no free slot in between; slots_ and dense_ hold the
+// same keys, each slot's index naming its entry in dense_.
+#include "pair_table.h"
+
+namespace karma::mcd {
+
+std::size_t OverlapTable::Home(std::uint64_t key) const {
+  // 64-bit mix (splitmix64 finaliser): slot pairs are dense small integers.
+  key ^= key >> 30;
+  key *= 0xbf58476d1ce4e5b9ull;
+  key ^= key >> 27;
+  key *= 0x94d049bb133111ebull;
+  key ^= key >> 31;
+  return static_cast<std::size_t>(key) & (slots_.size() - 1);
+}
+
+void OverlapTable::Reserve(int entries) {
+  std::size_t cap = 16;
+  while (cap < 2 * static_cast<std::size_t>(entries > 0 ? entries : 1)) cap *= 2;
+  slots_.assign(cap, Slot{OverlapEntry::kEmpty, -1});
+  dense_.clear();
+  dense_.reserve(static_cast<std::size_t>(entries > 0 ? entries : 1));
+}
+
+std::size_t OverlapTable::SlotOf(std::uint64_t key) const {
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t i = Home(key);
+  while (slots_[i].key != key && slots_[i].key != OverlapEntry::kEmpty) i = (i + 1) & mask;
+  return i;
+}
+
+OverlapEntry *OverlapTable::Find(std::uint64_t key) {
+  const Slot &slot = slots_[SlotOf(key)];
+  return slot.key == key ? &dense_[static_cast<std::size_t>(slot.index)] : nullptr;
+}
+
+OverlapEntry &OverlapTable::FindOrAdd(std::uint64_t key) {
+  if (2 * (dense_.size() + 1) > slots_.size()) Grow();
+  Slot &slot = slots_[SlotOf(key)];
+  if (slot.key != key) {
+    slot = Slot{key, static_cast<int>(dense_.size())};
+    dense_.push_back(OverlapEntry{key, -1, false});
+  }
+  return dense_[static_cast<std::size_t>(slot.index)];
+}
+
+void OverlapTable::Erase(std::uint64_t key) {
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t i = SlotOf(key);
+  if (slots_[i].key != key) return;
+  // Keep dense_ packed: the last entry moves into the erased one's place.
+  const int index = slots_[i].index;
+  const std::uint64_t lastKey = dense_.back().key;
+  if (lastKey != key) {
+    dense_[static_cast<std::size_t>(index)] = dense_.back();
+    slots_[SlotOf(lastKey)].index = index;
+  }
+  dense_.pop_back();
+  // Backward shift: pull later slots of the run into the hole when their
+  // home does not lie cyclically in (hole, position].
+  std::size_t hole = i;
+  for (std::size_t j = (i + 1) & mask; slots_[j].key != OverlapEntry::kEmpty; j = (j + 1) & mask) {
+    const std::size_t home = Home(slots_[j].key);
+    const bool homeInGap = hole <= j ? (hole < home && home <= j) : (hole < home || home <= j);
+    if (!homeInGap) {
+      slots_[hole] = slots_[j];
+      hole = j;
+    }
+  }
+  slots_[hole] = Slot{OverlapEntry::kEmpty, -1};
+}
+
+void OverlapTable::Grow() {
+  slots_.assign(slots_.size() * 2, Slot{OverlapEntry::kEmpty, -1});
+  for (std::size_t d = 0; d < dense_.size(); ++d) {
+    slots_[SlotOf(dense_[d].key)] = Slot{dense_[d].key, static_cast<int>(d)};
+  }
+}
+
+void PairPool::Create(int count) {
+  records_.assign(static_cast<std::size_t>(count), PairRecord{});
+  free_.clear();
+  free_.reserve(static_cast<std::size_t>(count));
+  for (int i = count - 1; i >= 0; --i) {
+    records_[static_cast<std::size_t>(i)].index = i;
+    free_.push_back(i);
+  }
+}
+
+PairRecord *PairPool::Acquire() {
+  if (free_.empty()) return nullptr;
+  PairRecord &r = records_[static_cast<std::size_t>(free_.back())];
+  free_.pop_back();
+  return &r;
+}
+
+void PairPool::Release(PairRecord *r) {
+  const int index = r->index;
+  *r = PairRecord{};
+  r->index = index;
+  free_.push_back(index);
+}
+
+}  // namespace karma::mcd

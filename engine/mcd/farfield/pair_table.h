@@ -1,0 +1,104 @@
+// pair_table.h: the two pair stores of the axis-sort farfield.
+//
+// OverlapTable: every pair of proxies whose intervals overlap on all sorted
+// axes (in the axes' rank order, see endpoint_axis.h), whether or not it is
+// reported (frozen-frozen, disabled and culled pairs are kept so that an
+// unfreeze or an enable can say hello without a search). The entries are
+// packed in one array (walked once per step, in O(entries)) and found
+// through an open-addressing hash keyed by the two slots (lower slot in the
+// high half). It grows as more pairs overlap; only the reported records
+// below are capped.
+//
+// PairPool: the PairRecords the space reports, exactly pairCount of them
+// (the guide's pairCount). A record keeps its index and address from its
+// hello to its goodbye; it returns to the pool when the change block after
+// its goodbye begins, and is only then handed to a new pair.
+#ifndef KARMA_MCD_FARFIELD_PAIR_TABLE_H
+#define KARMA_MCD_FARFIELD_PAIR_TABLE_H
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace karma::mcd {
+
+// Where a reported pair is in its life cycle in the current events.
+enum class PairState : std::uint8_t { Free, Hello, Staying, Goodbye };
+
+// One reported pair. proxyA was inserted before proxyB (serialA < serialB);
+// userA/userB are their user pointers (copied, so they remain readable in a
+// goodbye after the proxy was removed).
+struct PairRecord {
+  int index = 0;  // stable position in the pool, [0, pairCount)
+  int proxyA = -1, proxyB = -1;
+  void *userA = nullptr, *userB = nullptr;
+  std::uint32_t serialA = 0, serialB = 0;
+  PairState state = PairState::Free;
+
+  // The deterministic order of reported pairs: by the proxies' insertion
+  // serials, never by addresses.
+  std::uint64_t OrderKey() const { return (std::uint64_t{serialA} << 32) | serialB; }
+};
+
+inline std::uint64_t SlotPairKey(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(a < b ? a : b);
+  const auto hi = static_cast<std::uint32_t>(a < b ? b : a);
+  return (std::uint64_t{lo} << 32) | hi;
+}
+
+struct OverlapEntry {
+  std::uint64_t key;     // SlotPairKey, or kEmpty
+  int record;            // PairRecord index when reported, else -1
+  bool overlapping;      // false: overlap ended this block, awaiting its goodbye
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  int SlotLo() const { return static_cast<int>(key >> 32); }
+  int SlotHi() const { return static_cast<int>(key & 0xffffffffu); }
+};
+
+class OverlapTable {
+ public:
+  void Reserve(int entries);
+  int Size() const { return static_cast<int>(dense_.size()); }
+  // The entry for key, or nullptr.
+  OverlapEntry *Find(std::uint64_t key);
+  // The entry for key, added (record -1, overlapping false) if absent. The
+  // reference lives until the next addition.
+  OverlapEntry &FindOrAdd(std::uint64_t key);
+  // Removes key's entry; the last entry moves into its place.
+  void Erase(std::uint64_t key);
+  // Dense access for a full walk in O(Size()): entries [0, Size()).
+  OverlapEntry &At(int i) { return dense_[static_cast<std::size_t>(i)]; }
+  std::span<const OverlapEntry> Entries() const { return dense_; }
+
+ private:
+  struct Slot {
+    std::uint64_t key;  // OverlapEntry::kEmpty when free
+    int index;          // into dense_
+  };
+  std::size_t Home(std::uint64_t key) const;
+  std::size_t SlotOf(std::uint64_t key) const;  // its slot, or a free one
+  void Grow();
+
+  std::vector<OverlapEntry> dense_;  // the entries, packed
+  std::vector<Slot> slots_;          // power-of-two size, load <= 1/2
+};
+
+class PairPool {
+ public:
+  void Create(int count);
+  int Capacity() const { return static_cast<int>(records_.size()); }
+  int InUse() const { return Capacity() - static_cast<int>(free_.size()); }
+  // A free record, or nullptr when all pairCount records are in use.
+  PairRecord *Acquire();
+  void Release(PairRecord *r);
+  PairRecord &At(int index) { return records_[static_cast<std::size_t>(index)]; }
+  const PairRecord &At(int index) const { return records_[static_cast<std::size_t>(index)]; }
+
+ private:
+  std::vector<PairRecord> records_;  // never reallocated after Create
+  std::vector<int> free_;            // LIFO; lowest indices handed out first
+};
+
+}  // namespace karma::mcd
+
+#endif

@@ -1,0 +1,58 @@
+// box_plane.cpp: box (model1) against plane (model2).
+//
+// Each of the 8 corners k = c + sum_i sigma_i h_i a_i (a_i = box axes, rows
+// of its TM; sigma_i = +-1) has height h_k = (k - o) . n over the plane
+// (normal n = row 2 of the plane TM, point o = row 3). Every corner with
+// h_k <= tolerance is a contact: position k - h_k/2 n (midway between the
+// corner and the plane), normal +n, separation h_k, dims vertex(0)/face(2).
+// A box resting flat gives its 4 lower corners; an edge 2; a corner 1. When
+// more corners touch than the buffer holds, the deepest are kept.
+#include "nearfield.h"
+
+#include <algorithm>
+
+using namespace karma::mcd;
+
+namespace {
+
+int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
+    MeVector3 half;
+    McdBoxGetRadii(p->model1->instance.geometry, half);
+    const MeMatrix4Ptr box = ModelTM(p->model1), plane = ModelTM(p->model2);
+    const MeReal *n = plane[2];
+    const MeReal tol = ContactTolerance(p->model1->framework);
+    MeVector3 corner[8];
+    MeReal height[8];
+    int touching[8], count = 0;
+    for (int k = 0; k < 8; ++k) {
+        MeVector3Copy(corner[k], box[3]);
+        for (int i = 0; i < 3; ++i)
+            MeVector3MultiplyAdd(corner[k], ((k >> i) & 1) ? half[i] : -half[i], box[i]);
+        MeVector3 d;
+        MeVector3Subtract(d, corner[k], plane[3]);
+        height[k] = MeVector3Dot(d, n);
+        if (height[k] <= tol) touching[count++] = k;
+    }
+    if (count == 0) return 0;
+    // Deepest first; ties keep corner order, so the result is deterministic.
+    std::stable_sort(touching, touching + count,
+                     [&](int a, int b) { return height[a] < height[b]; });
+    for (int j = 0; j < count; ++j) {
+        const int k = touching[j];
+        MeVector3 pos;
+        MeVector3Copy(pos, corner[k]);
+        MeVector3MultiplyAdd(pos, -height[k] / 2, n);
+        if (!Emit(r, pos, n, height[k], 0, 2)) break;
+    }
+    MeVector3Copy(r->normal, n);
+    r->touch = 1;
+    return 1;
+}
+
+}  // namespace
+
+extern "C" void MEAPI McdBoxPlaneRegisterInteraction(McdFrameworkID fw) {
+    McdInteractions fns{};
+    fns.intersectFn = Intersect;
+    RegisterInteractionQuietly(fw, kMcdGeometryTypeBox, kMcdGeometryTypePlane, fns);
+}
