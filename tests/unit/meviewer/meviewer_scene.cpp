@@ -6,7 +6,8 @@
 // The golden driver adds -platform, -trajectory and -out; the trajectory
 // holds no bodies (the scenes are still) and exists because every golden
 // run writes one. Scenes: rectangle2d groundplane box cone cylinder sphere
-// square torus frustum line nativeline custom wireframe lighting texture text help menu perfbar ase.
+// square torus frustum line nativeline custom wireframe lighting light_ambient
+// light_directional light_point texture text help menu perfbar ase.
 #include "MeViewer.h"
 
 #include <karma/golden/KarmaTrajectory.h>
@@ -128,6 +129,35 @@ bool Build(const std::string &s) {
     for (int i = 1; i < 4; ++i) RGraphicSphereCreate(rc, 0.8, kWhite, tm[i]);
     RGraphicGroundPlaneCreate(rc, 10, 8, kWhite, -0.8);
     Camera(7, 0.2, 0.5);
+  } else if (s == "light_ambient" || s == "light_directional" || s == "light_point") {
+    // One light mode at a time on a white sphere over a plane.
+    RLightSwitchOff(rc, kRDirect1);
+    RLightSwitchOff(rc, kRDirect2);
+    if (s == "light_ambient") {
+      rc->m_rgbAmbientLightColor[0] = 0.6f, rc->m_rgbAmbientLightColor[1] = 0.5f, rc->m_rgbAmbientLightColor[2] = 0.2f;
+    } else {
+      RLightSwitchOff(rc, kRAmbient);
+    }
+    if (s == "light_directional") {
+      RLightSwitchOn(rc, kRDirect1);
+      rc->m_DirectLight1.m_Direction[0] = 1, rc->m_DirectLight1.m_Direction[1] = -1,
+      rc->m_DirectLight1.m_Direction[2] = -0.5f;
+      RLightSwitchOn(rc, kRDirect2);
+      rc->m_DirectLight2.m_rgbDiffuse[0] = 0.1f, rc->m_DirectLight2.m_rgbDiffuse[1] = 0.1f,
+      rc->m_DirectLight2.m_rgbDiffuse[2] = 0.6f;
+      rc->m_DirectLight2.m_Direction[0] = -1, rc->m_DirectLight2.m_Direction[1] = 0.2f,
+      rc->m_DirectLight2.m_Direction[2] = 0;
+    }
+    if (s == "light_point") {
+      RLightSwitchOn(rc, kRPoint);
+      rc->m_PointLight.m_Position[0] = 1.5f, rc->m_PointLight.m_Position[1] = 0.5f, rc->m_PointLight.m_Position[2] = 1.5f;
+      rc->m_PointLight.m_AttenuationConstant = 0.5f;
+      rc->m_PointLight.m_AttenuationLinear = 0.2f;
+      rc->m_PointLight.m_AttenuationQuadratic = 0.2f;
+    }
+    RGraphicSphereCreate(rc, 1, kWhite, nullptr);
+    RGraphicGroundPlaneCreate(rc, 8, 8, kWhite, -1);
+    Camera(6, 0.3, 0.45);
   } else if (s == "texture") {
     char checker[] = "checkerboard";
     RGraphic *plane = RGraphicGroundPlaneCreate(rc, 8, 2, kWhite, -1);
