@@ -4,6 +4,8 @@
 // returns too many triangles, and the other shapes on the floor.
 #include "nearfield_support.h"
 
+#include <random>
+
 using namespace mcd_test;
 
 namespace {
@@ -176,6 +178,36 @@ TEST_F(FloorFixture, StoolOnTheTriangleFloor) {
   EXPECT_EQ(h.count(), 32);
   EXPECT_NEAR(h.deepest(), -0.01, kEps);
   for (int i = 0; i < h.count(); ++i) EXPECT_NE(h.contacts[i].element1.ptr, nullptr);
+}
+
+TEST_F(FloorFixture, TurnedListAndRandomPoses) {
+  // The list's model turned so its floor faces world +y: triangles go to world.
+  floor->rotate(1, 0, 0, (MeReal)(-ME_PI / 2));
+  floor->moveTo(0, 1, 0);
+  Placed ball(McdSphereCreate(fw, 1), 2, (MeReal)1.8, -2);
+  Hit h(ball.model, floor->model);
+  ASSERT_EQ(h.count(), 1);
+  EXPECT_NEAR(h.contacts[0].normal[1], 1, kEps);
+  EXPECT_NEAR(h.contacts[0].separation, -0.2, kEps);
+  // Random poses of every shape near the turned floor: sane and mirrored.
+  MeVector3 c[8];
+  for (int i = 0; i < 8; ++i) MeVector3Set(c[i], (i & 1) ? 0.4f : -0.4f, (i & 2) ? 0.6f : -0.6f, (i & 4) ? 0.3f : -0.3f);
+  McdGeometryID geoms[] = {McdSphereCreate(fw, (MeReal)0.5), McdBoxCreate(fw, 1, (MeReal)0.6, (MeReal)1.4),
+                           McdCylinderCreate(fw, (MeReal)0.4, 1), McdSphylCreate(fw, (MeReal)0.3, 1),
+                           McdConvexMeshCreateHull(fw, c, 8, 0)};
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int touching = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    gFlags[0] = gFlags[1] = (trial / 5) % 32;  // every flag combination
+    Placed m(geoms[trial % 5], (MeReal)(5 * u(rng)), (MeReal)(1 + 0.8 * u(rng)), (MeReal)(5 * u(rng)));
+    m.rotate((MeReal)u(rng), (MeReal)u(rng), (MeReal)u(rng) + 2, (MeReal)(3 * u(rng)));
+    Hit t(m.model, floor->model);
+    expectSane(t);
+    touching += t.touch;
+    expectMirrored(m.model, floor->model, 1e-5);
+  }
+  EXPECT_GT(touching, 40);
 }
 
 }  // namespace
