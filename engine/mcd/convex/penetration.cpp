@@ -70,6 +70,39 @@ bool CcdNormal(const Shape &a, const Shape &b, double tol, V *n, bool *met) {
     return false;
 }
 
+// The point of a feature (polygon, segment or point, as Feature gives it)
+// closest to p.
+V ClosestOnFeature(const V *f, int k, V p) {
+    auto onSegment = [](V a, V b, V x) {
+        const V e = b - a;
+        const double l2 = Dot(e, e);
+        const double t = l2 > 0 ? std::fmin(1.0, std::fmax(0.0, Dot(x - a, e) / l2)) : 0;
+        return a + t * e;
+    };
+    if (k == 1) return f[0];
+    if (k == 2) return onSegment(f[0], f[1], p);
+    const V n = Unit(Cross(f[1] - f[0], f[2] - f[0]));
+    const V q = p - Dot(p - f[0], n) * n;
+    bool inside = true;
+    for (int i = 0; i < k && inside; ++i) inside = Dot(Cross(f[(i + 1) % k] - f[i], q - f[i]), n) >= 0;
+    if (inside) return q;
+    V best = f[0];
+    for (int i = 0; i < k; ++i) {
+        const V c = onSegment(f[i], f[(i + 1) % k], p);
+        if (Len(c - p) < Len(best - p)) best = c;
+    }
+    return best;
+}
+
+// The point of a sphere's or sphyl's core segment closest to x.
+V CoreClosest(const Shape &s, V x) {
+    if (s.kind == Kind::Sphere) return s.t;
+    const V a = s.t + s.hh * s.axis[2], b = s.t - s.hh * s.axis[2], e = b - a;
+    const double l2 = Dot(e, e);
+    const double t = l2 > 0 ? std::fmin(1.0, std::fmax(0.0, Dot(x - a, e) / l2)) : 0;
+    return a + t * e;
+}
+
 }  // namespace
 
 bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep) {
@@ -106,6 +139,25 @@ bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep) 
                 if (Len(c) < 1e-9 * a.scale * b.scale) continue;
                 consider(Dot(c, n0) < 0 ? -c : c);
             }
+    }
+    // A rounded core (sphere, sphyl) against the other's supporting feature:
+    // the normal runs through the closest points (a few refinements).
+    const bool roundA = a.kind == Kind::Sphere || a.kind == Kind::Sphyl;
+    const bool roundB = b.kind == Kind::Sphere || b.kind == Kind::Sphyl;
+    for (int it = 0; it < 3 && (roundA || roundB); ++it) {
+        V f[16];
+        int dims;
+        const V n0 = bestN;
+        if (roundA) {
+            const int k = Feature(b, n0, f, &dims);
+            const V q = ClosestOnFeature(f, k, CoreClosest(a, Support(b, n0)));
+            consider(CoreClosest(a, q) - q);
+        }
+        if (roundB) {
+            const int k = Feature(a, -n0, f, &dims);
+            const V q = ClosestOnFeature(f, k, CoreClosest(b, Support(a, -n0)));
+            consider(q - CoreClosest(b, q));
+        }
     }
     if (!(best <= tol) || !std::isfinite(best)) return false;
     *n = bestN;

@@ -178,6 +178,19 @@ TEST(McdConvexNearfield, SphereSphylAgainstHull) {
   EXPECT_NEAR(h.contacts[0].normal[2], 1, kEps);
   EXPECT_NEAR(h.contacts[0].position[2], 0.95, kEps);
   expectMirrored(ball.model, hull.model, kEps);
+  // On an edge: the hull turned 45 degrees about x, its top edge along x at
+  // z = sqrt 2; the normal runs from the edge's closest point to the centre.
+  hull.rotate(1, 0, 0, (MeReal)(ME_PI / 4));
+  const double top = std::sqrt(2.0);
+  ball.moveTo((MeReal)0.3, (MeReal)0.1, (MeReal)(top + 0.4));
+  Hit e(ball.model, hull.model);
+  ASSERT_EQ(e.count(), 1);
+  const double dist = std::hypot(0.1, 0.4);
+  EXPECT_NEAR(e.contacts[0].separation, dist - 0.5, kEps);
+  EXPECT_NEAR(e.contacts[0].normal[1], 0.1 / dist, kEps);
+  EXPECT_NEAR(e.contacts[0].normal[2], 0.4 / dist, kEps);
+  EXPECT_NEAR(e.contacts[0].position[0], 0.3, kEps);
+  hull.rotate(1, 0, 0, 0);
   Placed caps(McdSphylCreate(fw, (MeReal)0.25, 1), 0, 0, (MeReal)1.2);
   caps.rotate(0, 1, 0, (MeReal)(ME_PI / 2));  // lying along x
   Hit s(caps.model, hull.model);
