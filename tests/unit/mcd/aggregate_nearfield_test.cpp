@@ -4,6 +4,8 @@
 // element tags and contactMaxCount.
 #include "nearfield_support.h"
 
+#include <random>
+
 using namespace mcd_test;
 
 namespace {
@@ -107,6 +109,29 @@ TEST(McdAggregateNearfield, NestedAndAggregateAgainstAggregate) {
   // Apart: nothing.
   b.moveTo(0, 0, 5);
   EXPECT_EQ(Hit(b.model, st.model).touch, 0);
+}
+
+TEST(McdAggregateNearfield, RandomPosesSaneAndMirrored) {
+  Framework fw(16, 64);
+  Stool stool(fw);
+  MeVector3 c[8];
+  for (int i = 0; i < 8; ++i) MeVector3Set(c[i], (i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.3f : -0.3f, (i & 4) ? 0.4f : -0.4f);
+  McdGeometryID others[] = {McdSphereCreate(fw, (MeReal)0.5), McdBoxCreate(fw, 1, 1, 1),
+                            McdConvexMeshCreateHull(fw, c, 8, 0), McdCylinderCreate(fw, (MeReal)0.3, 1),
+                            McdSphylCreate(fw, (MeReal)0.2, 1), stool.g};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int touching = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    Placed a(stool.g, 0, 0, 0), b(others[trial % 6], (MeReal)(1.3 * u(rng)), (MeReal)(1.3 * u(rng)), (MeReal)(1.2 * u(rng)));
+    a.rotate((MeReal)u(rng), (MeReal)u(rng), (MeReal)u(rng) + 2, (MeReal)(3 * u(rng)));
+    b.rotate((MeReal)u(rng) + 2, (MeReal)u(rng), (MeReal)u(rng), (MeReal)(3 * u(rng)));
+    Hit h(a.model, b.model);
+    expectSane(h);
+    touching += h.touch;
+    expectMirrored(a.model, b.model, 1e-5);
+  }
+  EXPECT_GT(touching, 30);
 }
 
 }  // namespace
