@@ -17,4 +17,6 @@
 #include "McdContact.h"
 #include "McdModelPair.h"
 #include "McdInteraction.h"
+#include "McdLineSegment.h"
+#include "McdSafeTime.h"
 #endif
