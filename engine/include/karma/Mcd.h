@@ -16,5 +16,6 @@
 #include "McdModel.h"
 #include "McdContact.h"
 #include "McdModelPair.h"
+#include "McdSpace.h"
 #include "McdInteraction.h"
 #endif
