@@ -124,3 +124,7 @@ TEST(MstUniverse, BadInput) {
     EXPECT_EQ(MstBridgeCreate(s.u->frame, 0), nullptr);
     MstUniverseDestroy(nullptr);
 }
+
+extern "C" int mst_c_api_check(void);
+
+TEST(MstUniverse, CProgramLandsABallOnThePlane) { EXPECT_EQ(mst_c_api_check(), 1); }
