@@ -85,3 +85,41 @@ TEST(MstScene, RestitutionOneBouncesBackToTheDropHeight) {
     std::printf("[ figures  ] restitution 0.5: bounce to %.4f (e^2 h = 0.25)\n", half);
     EXPECT_NEAR(half, 0.25, 0.25 * 0.05);
 }
+
+namespace {
+// Three balls touching in a row on the ground go to sleep together; then
+// the program wakes the first. Returns the steps until the last is awake.
+int StepsToWakeTheNeighbour(bool keepFrozenPairs, int *groupsAsleep) {
+    Scene s;
+    McdSpaceSetKeepFrozenPairs(s.u->space, keepFrozenPairs);
+    McdModelID a = s.ball((MeReal)0.5, 0, 0, (MeReal)0.5);
+    s.ball((MeReal)0.5, 1, 0, (MeReal)0.5);
+    McdModelID b = s.ball((MeReal)0.5, 2, 0, (MeReal)0.5);
+    MdtBodyID ba = McdModelGetBody(a), bb = McdModelGetBody(b);
+    for (int i = 0; i < 1000 && (MdtBodyIsEnabled(ba) || MdtBodyIsEnabled(bb)); ++i) s.step();
+    EXPECT_FALSE(MdtBodyIsEnabled(ba) || MdtBodyIsEnabled(bb));
+    s.step(5);  // asleep for a while: frozen pairs kept or said goodbye
+    EXPECT_EQ(McdSpaceModelIsFrozen(a) + McdSpaceModelIsFrozen(b), 2);
+    *groupsAsleep = (int)MdtWorldGetConstraintCount(s.u->world);
+    MdtBodyEnable(ba);
+    EXPECT_EQ(McdSpaceModelIsFrozen(a), 0);  // the handler unfroze it at once
+    int steps = 0;
+    while (!MdtBodyIsEnabled(bb) && steps < 10) {
+        s.step();
+        ++steps;
+    }
+    EXPECT_EQ(McdSpaceModelIsFrozen(b), 0);
+    return steps;
+}
+}  // namespace
+
+TEST(MstScene, KeptFrozenPairsWakeASleepingGroupAtOnce) {
+    int kept = 0, dropped = 0;
+    EXPECT_EQ(StepsToWakeTheNeighbour(true, &kept), 1);
+    EXPECT_EQ(kept, 10);  // 5 groups (2 ball-ball, 3 ball-ground) + their 5 contacts (slots)
+    const int later = StepsToWakeTheNeighbour(false, &dropped);
+    EXPECT_EQ(dropped, 0);  // the plain rule: every frozen pair said goodbye
+    EXPECT_EQ(later, 2);    // the middle ball wakes first, then its pair with the last says hello
+    std::printf("[ figures  ] neighbour awake after %d step(s) with frozen pairs kept, %d without\n", 1,
+                later);
+}
