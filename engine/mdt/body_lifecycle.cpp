@@ -70,14 +70,18 @@ void MEAPI MdtBodyEnable(const MdtBodyID body) {
   if (body->enabled) return;
   body->enabled = TRUE;
   body->idleTime = 0;
-  ++body->world->priv->enabledCount;
+  MdtWorldPrivate *p = body->world->priv;
+  ++p->enabledCount;
+  if (p->bodyEnableCB) p->bodyEnableCB(body, TRUE, p->bodyEnableData);
 }
 
 void MEAPI MdtBodyDisable(const MdtBodyID body) {
   ME_REQUIRE_ARG(body != nullptr, "MdtBodyDisable", "body is NULL");
   if (!body->enabled) return;
   body->enabled = FALSE;
-  --body->world->priv->enabledCount;
+  MdtWorldPrivate *p = body->world->priv;
+  --p->enabledCount;
+  if (p->bodyEnableCB) p->bodyEnableCB(body, FALSE, p->bodyEnableData);
 }
 
 MeBool MEAPI MdtBodyIsEnabled(const MdtBodyID body) {

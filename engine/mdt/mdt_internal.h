@@ -38,6 +38,7 @@ struct MdtBody {
   MeBool fastSpinEnabled;
   MeBool enabled;
   void *userData;
+  void *collisionModel;  // the bridge's slot (bridge/mdt_bridge.h); never read here
   MeI32 sortKey;
   std::uint64_t serial;  // creation order within the world, for tie-breaks
   MeReal idleTime;       // seconds spent below every auto-disable threshold
@@ -62,6 +63,8 @@ struct MdtWorldPrivate {
   std::uint64_t nextConstraintSerial;
   karma::mdt::StepScratch *scratch;  // step work arrays, reused across steps
   MdtContactImportanceCBPtr importance;
+  MdtBodyEnableCallbackPtr bodyEnableCB;  // called by MdtBodyEnable / MdtBodyDisable
+  void *bodyEnableData;
   unsigned int maxBodies;
   unsigned int maxConstraints;
   unsigned int enabledCount;

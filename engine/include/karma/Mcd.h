@@ -16,5 +16,8 @@
 #include "McdModel.h"
 #include "McdContact.h"
 #include "McdModelPair.h"
+#include "McdSpace.h"
 #include "McdInteraction.h"
+#include "McdLineSegment.h"
+#include "McdSafeTime.h"
 #endif

@@ -87,6 +87,28 @@ MEPUBLIC void MEAPI McdSphylSphylRegisterInteraction(McdFrameworkID framework);
 MEPUBLIC void MEAPI McdSphylBoxRegisterInteraction(McdFrameworkID framework);
 MEPUBLIC void MEAPI McdCylinderPlaneRegisterInteraction(McdFrameworkID framework);
 MEPUBLIC void MEAPI McdSphylPlaneRegisterInteraction(McdFrameworkID framework);
+/* General convex pairs (libccd GJK/EPA plus a clipped contact manifold):
+ * convex mesh against sphere, box, cylinder, sphyl, convex mesh; convex mesh
+ * against plane (vertices below it); box-cylinder, cylinder-cylinder,
+ * cylinder-sphyl. Aggregates against every type, child by child (element1
+ * of each contact is the child McdGeometryInstance). Sphere, box,
+ * cylinder, sphyl and convex mesh against a triangle list, honouring the
+ * McdTriangleFlags (element2 is the McdUserTriangle). */
+MEPUBLIC void MEAPI McdConvexMeshSphereRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdConvexMeshBoxRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdConvexMeshCylinderRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdConvexMeshSphylRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdConvexMeshConvexMeshRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdConvexMeshPlaneRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdBoxCylinderRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdCylinderCylinderRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdCylinderSphylRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdAggregateRegisterInteractions(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdSphereTriangleListRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdBoxTriangleListRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdCylinderTriangleListRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdSphylTriangleListRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdConvexMeshTriangleListRegisterInteraction(McdFrameworkID framework);
 
 /* Prepares a pair for queries: caches the interaction for the models'
  * geometry types (none: the pair is still valid and tests report nothing)

@@ -149,6 +149,18 @@ typedef MeReal(MEAPI *MdtContactImportanceCBPtr)(struct MdtContact *contact);
 MEPUBLIC void MEAPI MdtWorldSetContactImportanceCB(const MdtWorldID world,
                                                    MdtContactImportanceCBPtr cb);
 
+/* Called whenever a body of the world changes between enabled and disabled:
+ * MdtBodyEnable / MdtBodyDisable by the program, waking by a constraint in
+ * a step, auto-disable, an overflowing body (not MdtBodyDestroy). The bridge
+ * (MstSetWorldHandlers) uses it to unfreeze and freeze the body's collision
+ * model. One callback per world; NULL removes it. */
+typedef void(MEAPI *MdtBodyEnableCallbackPtr)(MdtBodyID body, MeBool enabled, void *data);
+MEPUBLIC void MEAPI MdtWorldSetBodyEnableCallback(const MdtWorldID world,
+                                                  MdtBodyEnableCallbackPtr cb, void *data);
+/* The callback set (NULL if none) and, when data is not NULL, its data. */
+MEPUBLIC MdtBodyEnableCallbackPtr MEAPI MdtWorldGetBodyEnableCallback(const MdtWorldID world,
+                                                                      void **data);
+
 /* Stabilisation of light bodies between large constraint forces (a light
  * link holding a heavy load): the constraint response sees each body's
  * inertia increased by h^2 times its geometric stiffness, factor times

@@ -68,6 +68,24 @@ void MEAPI McdPrimitivesRegisterInteractions(McdFrameworkID fw) {
     McdSphylBoxRegisterInteraction(fw);
     McdCylinderPlaneRegisterInteraction(fw);
     McdSphylPlaneRegisterInteraction(fw);
+    // General convex pairs through libccd with contact manifolds
+    // (nearfield/convex_*.cpp), aggregates child by child
+    // (nearfield/aggregate_any.cpp) and triangle lists (nearfield/trilist.cpp).
+    McdConvexMeshSphereRegisterInteraction(fw);
+    McdConvexMeshBoxRegisterInteraction(fw);
+    McdConvexMeshCylinderRegisterInteraction(fw);
+    McdConvexMeshSphylRegisterInteraction(fw);
+    McdConvexMeshConvexMeshRegisterInteraction(fw);
+    McdConvexMeshPlaneRegisterInteraction(fw);
+    McdBoxCylinderRegisterInteraction(fw);
+    McdCylinderCylinderRegisterInteraction(fw);
+    McdCylinderSphylRegisterInteraction(fw);
+    McdAggregateRegisterInteractions(fw);
+    McdSphereTriangleListRegisterInteraction(fw);
+    McdBoxTriangleListRegisterInteraction(fw);
+    McdCylinderTriangleListRegisterInteraction(fw);
+    McdSphylTriangleListRegisterInteraction(fw);
+    McdConvexMeshTriangleListRegisterInteraction(fw);
 }
 
 int MEAPI McdPrimitivesGetTypeCount(void) { return kMcdGeometryBuiltInTypes; }

@@ -9,6 +9,7 @@
 #include "nearfield_test_support.h"
 
 using namespace mcd_test;
+using namespace mcd_test::prim;
 
 namespace {
 

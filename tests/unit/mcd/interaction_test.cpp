@@ -191,7 +191,8 @@ int MEAPI UserIntersect(McdModelPair *p, McdIntersectResult *r) {
 }
 
 TEST(McdInteraction, UserInteractionIsMirroredAutomatically) {
-  Framework fw;
+  Framework fw(32, 64, 1, false);  // types only: the built-in box-cylinder would take (box, cylinder)
+  McdPrimitivesRegisterTypes(fw);
   McdInteractions fns{};
   fns.helloFn = UserHello;
   fns.intersectFn = UserIntersect;

@@ -9,7 +9,9 @@
 
 #include "mcd_test_support.h"
 
-namespace mcd_test {
+// In their own namespace: the convex tests' nearfield_support.h has other
+// Placed / Hit types in mcd_test, and both link into mcd_test.
+namespace mcd_test::prim {
 
 // A model of geometry g at (x, y, z), optionally rotated by `angle` about
 // `axis`; destroyed with the object.
@@ -219,4 +221,4 @@ struct Lcg {
   }
 };
 
-}  // namespace mcd_test
+}  // namespace mcd_test::prim

@@ -1,0 +1,43 @@
+// space_internal.h: the McdSpace wrapper around the farfield core
+// (farfield/axis_sort_space.h). Not installed.
+//
+// Invariants
+//  - A model in a space has model->space == the space and
+//    model->spaceIndex == its ProxyId; the proxy's user pointer is the model.
+//  - pairs[i] is the McdModelPair of the core's PairRecord with index i
+//    (pairCount of them): one McdModelPair per record, so its identity runs
+//    from hello to goodbye. EndChanges (re)initialises the pair of every
+//    hello record: model1 = the model inserted first, userData and
+//    responseData NULL, m_spaceData = the space, m_spaceIndex = i.
+//  - McdSpaceGetPairs fills a container through `chunk` (record pointers)
+//    and maps each record to pairs[record->index].
+#pragma once
+
+#include "McdSpace.h"
+#include "axis_sort_space.h"
+#include "mcd_internal.h"
+
+#include <vector>
+
+struct McdSpace {
+    karma::mcd::AxisSortSpace *core;
+    McdFramework *framework;
+    McdModelPair *pairs;  // pairCount, MeMemoryAPI
+    int pairCount;
+    McdSpaceAABBFnPtr aabbFn;
+    std::vector<const karma::mcd::PairRecord *> chunk;
+};
+
+namespace karma::mcd {
+
+// The space of a model that is in one, else a warning naming fn and NULL.
+McdSpace *SpaceOf(McdModelID model, const char *fn);
+// The model's AABB as the space sees it (the AABB function or the cache).
+void SpaceAabb(const McdSpace *space, McdModelID model, MeReal min[3], MeReal max[3]);
+// The core's AABB callback (user = the model, data = the space):
+// McdModelUpdate, then SpaceAabb.
+void UpdateAndReadAabb(void *user, void *data, MeReal min[3], MeReal max[3]);
+// Initialises the McdModelPairs of the hellos of the last EndChanges.
+void InitHelloPairs(McdSpace *space);
+
+}  // namespace karma::mcd
