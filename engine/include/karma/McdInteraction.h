@@ -74,6 +74,19 @@ MEPUBLIC const McdInteractions *MEAPI McdFrameworkGetInteraction(McdFrameworkID 
 MEPUBLIC void MEAPI McdSphereSphereRegisterInteraction(McdFrameworkID framework);
 MEPUBLIC void MEAPI McdSpherePlaneRegisterInteraction(McdFrameworkID framework);
 MEPUBLIC void MEAPI McdBoxPlaneRegisterInteraction(McdFrameworkID framework);
+/* Analytic primitive pairs: sphere-box, sphere-cylinder, sphere-sphyl and
+ * sphyl-sphyl (one contact; two for parallel overlapping sphyls), box-box
+ * (separating axes, then a clipped face manifold of up to 8 points, or one
+ * edge-edge point), sphyl-box (up to 2 when lying flat on a face),
+ * cylinder-plane (rim points: 8 standing, 2 lying) and sphyl-plane (1-2). */
+MEPUBLIC void MEAPI McdSphereBoxRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdSphereCylinderRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdSphereSphylRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdBoxBoxRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdSphylSphylRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdSphylBoxRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdCylinderPlaneRegisterInteraction(McdFrameworkID framework);
+MEPUBLIC void MEAPI McdSphylPlaneRegisterInteraction(McdFrameworkID framework);
 /* General convex pairs (libccd GJK/EPA plus a clipped contact manifold):
  * convex mesh against sphere, box, cylinder, sphyl, convex mesh; convex mesh
  * against plane (vertices below it); box-cylinder, cylinder-cylinder,

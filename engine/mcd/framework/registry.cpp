@@ -59,6 +59,15 @@ void MEAPI McdPrimitivesRegisterInteractions(McdFrameworkID fw) {
     McdSphereSphereRegisterInteraction(fw);
     McdSpherePlaneRegisterInteraction(fw);
     McdBoxPlaneRegisterInteraction(fw);
+    // Analytic primitive pairs (nearfield/: sphere, box, cylinder, sphyl, plane).
+    McdSphereBoxRegisterInteraction(fw);
+    McdSphereCylinderRegisterInteraction(fw);
+    McdSphereSphylRegisterInteraction(fw);
+    McdBoxBoxRegisterInteraction(fw);
+    McdSphylSphylRegisterInteraction(fw);
+    McdSphylBoxRegisterInteraction(fw);
+    McdCylinderPlaneRegisterInteraction(fw);
+    McdSphylPlaneRegisterInteraction(fw);
     // General convex pairs through libccd with contact manifolds
     // (nearfield/convex_*.cpp), aggregates child by child
     // (nearfield/aggregate_any.cpp) and triangle lists (nearfield/trilist.cpp).
@@ -93,6 +102,8 @@ void MEAPI McdSphereBoxPlaneRegisterInteractions(McdFrameworkID fw) {
     McdSphereSphereRegisterInteraction(fw);
     McdSpherePlaneRegisterInteraction(fw);
     McdBoxPlaneRegisterInteraction(fw);
+    McdSphereBoxRegisterInteraction(fw);
+    McdBoxBoxRegisterInteraction(fw);
 }
 
 MeBool MEAPI McdFrameworkIsTypeRegistered(McdFrameworkID fw, int typeId) {

@@ -143,7 +143,8 @@ TEST(McdInteraction, BoxRestingFlatOnPlaneHasFourContacts) {
 TEST(McdInteraction, UnregisteredPairsAreIgnored) {
   Framework fw;
   Body ground(McdPlaneCreate(fw), 0, 0, 0);
-  Body can(McdCylinderCreate(fw, 1, 2), 0, 0, 0);  // deep in the plane, but no test yet
+  Body can(McdCylinderCreate(fw, 1, 2), 0, 0, 0);  // deep in the plane, but no test
+  McdFrameworkSetInteraction(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypePlane, nullptr);
   WarningCapture w;
   Query t(can.model, ground.model);
   EXPECT_EQ(t.touch, 0);

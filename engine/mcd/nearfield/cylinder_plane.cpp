@@ -1,0 +1,63 @@
+// cylinder_plane.cpp: cylinder (model1) against plane (model2).
+//
+// The cylinder (axis a, radius R, half height H) touches a plane (normal n,
+// point o) with its rims: the circles e +- R (cos phi u + sin phi v) around
+// the cap centres e = c +- H a, where u is the unit direction of -(n - (n.a)
+// a) (the way down the plane within the cap; any perpendicular of a when the
+// cap is parallel to the plane) and v = a x u. A rim point p has height
+// h = (p - o) . n. Eight points on each rim, starting at the lowest (phi =
+// 0), are candidates; each with h <= tolerance is a contact at p - h/2 n,
+// normal +n, separation h (rim edge on plane face). So a cylinder standing
+// on its end gives 8, lying on its side 2 (the lowest point of each rim) and
+// tilted 1 or 2 (more when deep). The deepest are kept when the buffer is
+// short.
+#include "prim_math.h"
+
+#include <algorithm>
+
+using namespace karma::mcd;
+using namespace karma::mcd::prim;
+
+namespace {
+
+constexpr int kRimPoints = 8;
+
+int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
+    McdGeometry *g = p->model1->instance.geometry;
+    const MeReal R = McdCylinderGetRadius(g), H = McdCylinderGetHeight(g) / 2;
+    const Frame cyl(p->model1), plane(p->model2);
+    const V3 n = plane.axis[2], a = cyl.axis[2];
+    const MeReal tol = ContactTolerance(p->model1->framework);
+    V3 u = Dot(n, a) * a - n;
+    const MeReal ulen = Norm(u);
+    u = ulen > (MeReal)1e-6 ? (1 / ulen) * u : AnyPerpendicular(a);
+    const V3 v = Cross(a, u);
+    V3 pts[2 * kRimPoints];
+    MeReal h[2 * kRimPoints];
+    int order[2 * kRimPoints], count = 0;
+    const MeReal cap[2] = {-H, H};
+    for (int e = 0; e < 2; ++e) {
+        const V3 centre = cyl.o + cap[e] * a;
+        for (int k = 0; k < kRimPoints; ++k) {
+            const MeReal phi = (MeReal)(2 * ME_PI) * (MeReal)k / kRimPoints;
+            const int i = e * kRimPoints + k;
+            pts[i] = centre + R * (std::cos(phi) * u + std::sin(phi) * v);
+            h[i] = Dot(pts[i] - plane.o, n);
+            if (h[i] <= tol) order[count++] = i;
+        }
+    }
+    std::stable_sort(order, order + count, [&](int x, int y) { return h[x] < h[y]; });
+    for (int j = 0; j < count; ++j) {
+        const int i = order[j];
+        if (!EmitV(r, pts[i] - (MeReal)0.5 * h[i] * n, n, h[i], 1, 2)) break;
+    }
+    return Finish(r, n);
+}
+
+}  // namespace
+
+extern "C" void MEAPI McdCylinderPlaneRegisterInteraction(McdFrameworkID fw) {
+    McdInteractions fns{};
+    fns.intersectFn = Intersect;
+    RegisterInteractionQuietly(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypePlane, fns);
+}

@@ -1,0 +1,205 @@
+// box_box_test.cpp: box against box: resting manifolds (at the corners of
+// the overlap), the 45-degree octagon, buffer reduction, deep overlap,
+// corner on a face, edge-edge, separation found only on an edge axis,
+// coincident boxes, both argument orders.
+#include <algorithm>
+#include <set>
+#include <utility>
+
+#include "nearfield_test_support.h"
+
+using namespace mcd_test;
+using namespace mcd_test::prim;
+
+namespace {
+
+const double kEps = 4e-6;
+
+// The contacts' (x, y) rounded to 1e-4, as a set.
+std::set<std::pair<long, long>> corners(const Hit &h) {
+  std::set<std::pair<long, long>> s;
+  for (int i = 0; i < h.count(); ++i)
+    s.insert({std::lround(h.c[i].position[0] * 1e4), std::lround(h.c[i].position[1] * 1e4)});
+  return s;
+}
+
+void expectMirrored(McdModelID a, McdModelID b) {
+  Hit f(a, b), r(b, a);
+  ASSERT_EQ(f.count(), r.count());
+  for (int i = 0; i < f.count(); ++i) {
+    EXPECT_EQ(f.c[i].separation, r.c[i].separation);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(f.c[i].position[k], r.c[i].position[k]);
+      EXPECT_EQ(f.c[i].normal[k], -r.c[i].normal[k]);
+    }
+  }
+}
+
+TEST(McdBoxBox, BoxRestingOnBoxHasFourContactsAtTheCorners) {
+  Framework fw;
+  Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);  // top face z = 1, |x|, |y| <= 2
+  Placed top(McdBoxCreate(fw, 2, 2, 2), (MeReal)0.5, (MeReal)0.3, (MeReal)1.99);
+  Hit h(top.model, base.model);
+  ASSERT_EQ(h.touch, 1);
+  ASSERT_EQ(h.count(), 4);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(h.c[i].separation, -0.01, kEps);
+    EXPECT_NEAR(h.c[i].normal[2], 1, kEps);
+    EXPECT_NEAR(h.c[i].position[2], 0.995, kEps);
+  }
+  const std::set<std::pair<long, long>> want = {{-5000, -7000}, {-5000, 13000}, {15000, -7000},
+                                                {15000, 13000}};
+  EXPECT_EQ(corners(h), want);
+  EXPECT_NEAR(h.r.normal[2], 1, kEps);
+  expectMirrored(top.model, base.model);
+  // Reversed: normals down.
+  Hit rev(base.model, top.model);
+  ASSERT_EQ(rev.count(), 4);
+  EXPECT_NEAR(rev.c[0].normal[2], -1, kEps);
+  // Exactly touching still counts; lifted clear does not.
+  top.move((MeReal)0.5, (MeReal)0.3, 2);
+  EXPECT_EQ(Hit(top.model, base.model).count(), 4);
+  top.move((MeReal)0.5, (MeReal)0.3, (MeReal)2.001);
+  EXPECT_EQ(Hit(top.model, base.model).touch, 0);
+}
+
+TEST(McdBoxBox, OverhangingBoxContactsAtTheCornersOfTheOverlap) {
+  Framework fw;
+  Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);
+  Placed top(McdBoxCreate(fw, 2, 2, 2), (MeReal)1.5, 0, (MeReal)1.98);  // x in [0.5, 2.5]
+  Hit h(top.model, base.model);
+  ASSERT_EQ(h.count(), 4);
+  const std::set<std::pair<long, long>> want = {{5000, -10000}, {5000, 10000}, {20000, -10000},
+                                                {20000, 10000}};
+  EXPECT_EQ(corners(h), want);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(h.c[i].separation, -0.02, kEps);
+  // Same-size boxes exactly stacked: the four shared corners.
+  Placed twin(McdBoxCreate(fw, 4, 4, 2), 0, 0, (MeReal)1.995);
+  Hit t(twin.model, base.model);
+  ASSERT_EQ(t.count(), 4);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(std::fabs(t.c[i].position[0]), 2, kEps);
+    EXPECT_NEAR(std::fabs(t.c[i].position[1]), 2, kEps);
+    EXPECT_NEAR(t.c[i].separation, -0.005, kEps);
+  }
+}
+
+TEST(McdBoxBox, TurnedBoxGivesTheOctagonAndReducesToTheBuffer) {
+  Framework fw;
+  Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);
+  // Half side 1.8 turned 45 degrees: corners at 2.55 along x and y, clipped
+  // by |x|, |y| <= 2 into an octagon.
+  Placed top(McdBoxCreate(fw, (MeReal)3.6, (MeReal)3.6, 2), 0, 0, (MeReal)1.99, {0, 0, 1},
+             (MeReal)(ME_PI / 4));
+  Hit h(top.model, base.model);
+  ASSERT_EQ(h.count(), 8);
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_NEAR(std::fmax(std::fabs(h.c[i].position[0]), std::fabs(h.c[i].position[1])), 2, 1e-5);
+    EXPECT_NEAR(h.c[i].separation, -0.01, kEps);
+  }
+  Hit four(top.model, base.model, 4);
+  ASSERT_EQ(four.count(), 4);
+  // The four kept span the octagon: their bounding box is nearly the whole.
+  double lo[2] = {9, 9}, hi[2] = {-9, -9};
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = std::fmin(lo[k], four.c[i].position[k]);
+      hi[k] = std::fmax(hi[k], four.c[i].position[k]);
+    }
+  EXPECT_GT((hi[0] - lo[0]) * (hi[1] - lo[1]), 8.0);
+  // Small turned box fully on the face: its 4 corners.
+  Placed small(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)1.99, {0, 0, 1}, (MeReal)(ME_PI / 4));
+  Hit s(small.model, base.model);
+  ASSERT_EQ(s.count(), 4);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(std::hypot(s.c[i].position[0], s.c[i].position[1]), std::sqrt(2.0), 1e-5);
+}
+
+TEST(McdBoxBox, DeepOverlapAndTiltedOntoAnEdge) {
+  Framework fw;
+  Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);
+  Placed top(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)1.5);  // 0.5 deep
+  Hit h(top.model, base.model);
+  ASSERT_EQ(h.count(), 4);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(h.c[i].separation, -0.5, kEps);
+  EXPECT_NEAR(h.r.normal[2], 1, kEps);
+  // Tilted 0.3 rad about y: the lowest edge 0.03 below z = 1 gives 2 contacts.
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  top.turn({0, 1, 0}, (MeReal)0.3);
+  top.move(0, 0, (MeReal)(1 - 0.03 + c + s));
+  Hit e(top.model, base.model);
+  ASSERT_EQ(e.count(), 2);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(e.c[i].separation, -0.03, 1e-5);
+    EXPECT_NEAR(std::fabs(e.c[i].position[1]), 1, 1e-5);
+    EXPECT_NEAR(e.c[i].normal[2], 1, kEps);
+  }
+  expectMirrored(top.model, base.model);
+}
+
+TEST(McdBoxBox, CornerOnAFaceGivesOneContact) {
+  Framework fw;
+  Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);  // top face z = 1
+  // A unit-half cube turned about (1, -1, 0) by acos(1/sqrt 3): a body
+  // diagonal vertical, so a corner sqrt 3 below the centre, 0.01 deep.
+  const double r3 = std::sqrt(3.0);
+  Placed cube(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)(1 + r3 - 0.01), {1, -1, 0},
+              (MeReal)std::acos(1 / r3));
+  Hit h(cube.model, base.model);
+  ASSERT_EQ(h.count(), 1);
+  EXPECT_NEAR(h.c[0].separation, -0.01, 1e-5);
+  EXPECT_NEAR(h.c[0].normal[2], 1, kEps);
+  EXPECT_NEAR(h.c[0].position[0], 0, 1e-5);
+  EXPECT_NEAR(h.c[0].position[1], 0, 1e-5);
+  EXPECT_NEAR(h.c[0].position[2], 0.995, 1e-5);
+  EXPECT_EQ(h.c[0].dims, (MeI16)(0 | (2 << 8)));  // cube corner on the base's face
+  expectMirrored(cube.model, base.model);
+  cube.move(0, 0, (MeReal)(1 + r3 + 0.01));
+  EXPECT_EQ(Hit(cube.model, base.model).touch, 0);
+}
+
+TEST(McdBoxBox, EdgeAgainstEdgeGivesOneContact) {
+  Framework fw;
+  const double r2 = std::sqrt(2.0);
+  // Lower box turned 45 degrees about y: top edge along y at z = sqrt 2.
+  // Upper box turned 45 degrees about x: bottom edge along x at z - sqrt 2.
+  Placed low(McdBoxCreate(fw, 2, 2, 2), 0, 0, 0, {0, 1, 0}, (MeReal)(ME_PI / 4));
+  Placed up(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)(2 * r2 - 0.01), {1, 0, 0},
+            (MeReal)(ME_PI / 4));
+  Hit h(up.model, low.model);
+  ASSERT_EQ(h.count(), 1);
+  EXPECT_NEAR(h.c[0].separation, -0.01, 1e-5);
+  EXPECT_NEAR(h.c[0].normal[2], 1, 1e-5);
+  EXPECT_NEAR(h.c[0].position[0], 0, 1e-5);
+  EXPECT_NEAR(h.c[0].position[1], 0, 1e-5);
+  EXPECT_NEAR(h.c[0].position[2], r2 - 0.005, 1e-5);
+  EXPECT_EQ(h.c[0].dims, (MeI16)(1 | (1 << 8)));
+  expectMirrored(up.model, low.model);
+  // Lifted 0.01 clear: only the edge axis x cross y separates them.
+  up.move(0, 0, (MeReal)(2 * r2 + 0.01));
+  EXPECT_EQ(Hit(up.model, low.model).touch, 0);
+  EXPECT_EQ(Hit(low.model, up.model).touch, 0);
+}
+
+TEST(McdBoxBox, CoincidentAndParallelBoxesGiveFiniteResults) {
+  Framework fw;
+  McdGeometryID g = McdBoxCreate(fw, 1, 2, 3);
+  Placed a(g, 1, 1, 1), b(g, 1, 1, 1);
+  Hit h(a.model, b.model);
+  ASSERT_EQ(h.touch, 1);
+  ASSERT_GE(h.count(), 1);
+  for (int i = 0; i < h.count(); ++i) {
+    EXPECT_NEAR(MeVector3Magnitude(h.c[i].normal), 1, kEps);
+    EXPECT_TRUE(std::isfinite(h.c[i].separation));
+    EXPECT_NEAR(h.c[i].separation, -1, kEps);  // the thinnest direction, x: 0.5 + 0.5
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(h.c[i].position[k]));
+  }
+  // Same orientation, offset along x only: face contacts, s = 1 - 1.
+  b.move((MeReal)1.99, 1, 1);
+  Hit p(b.model, a.model);
+  ASSERT_EQ(p.count(), 4);
+  EXPECT_NEAR(p.c[0].separation, -0.01, kEps);
+  EXPECT_NEAR(p.c[0].normal[0], 1, kEps);
+}
+
+}  // namespace
