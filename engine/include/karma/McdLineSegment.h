@@ -19,6 +19,7 @@
 #include "MePrecision.h"
 #include "MeMath.h"
 #include "McdModel.h"
+#include "McdSpace.h"
 
 ME_EXTERN_C_BEGIN
 
@@ -39,6 +40,23 @@ typedef int(MEAPI *McdLineSegIntersectEnableCallback)(McdModelID model, void *fi
 MEPUBLIC unsigned int MEAPI McdLineSegIntersect(const McdModelID cm, MeVector3Ptr inOrig,
                                                 MeVector3Ptr inDest,
                                                 McdLineSegIntersectResult *outOverlap);
+
+/* Space-wide queries (valid only outside a change block: inside one they
+ * warn and report nothing). The first hit over every model of the space; */
+MEPUBLIC int MEAPI McdSpaceGetLineSegFirstIntersection(McdSpaceID space, MeVector3Ptr inOrig,
+                                                       MeVector3Ptr inDest,
+                                                       McdLineSegIntersectResult *outResult);
+/* every hit, one per model, nearest first, at most inMaxListSize; returns
+ * how many were written; */
+MEPUBLIC int MEAPI McdSpaceGetLineSegIntersections(McdSpaceID space, MeVector3Ptr inOrig,
+                                                   MeVector3Ptr inDest,
+                                                   McdLineSegIntersectResult *outList,
+                                                   int inMaxListSize);
+/* the first hit among the models for which filterCB returns non-zero. */
+MEPUBLIC int MEAPI McdSpaceGetLineSegFirstEnabledIntersection(
+    McdSpaceID space, MeVector3Ptr inOrig, MeVector3Ptr inDest,
+    McdLineSegIntersectEnableCallback filterCB, void *filterData,
+    McdLineSegIntersectResult *outResult);
 
 ME_EXTERN_C_END
 #endif

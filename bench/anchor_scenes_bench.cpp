@@ -1,0 +1,52 @@
+// anchor_scenes_bench.cpp: the five anchor scenes of ../shared/bench/SCENES.md
+// through Mst, in microseconds per step (collision + solve + integration,
+// summed over a run and divided by its steps; building the scene is not
+// timed), with the figures that file asks for as counters:
+//   stable       1 when no NaN, every body under 50 m/s and the scene's check met
+//   penetration  deepest contact penetration after the last step (mm)
+//   car_v, car_x chassis velocity (m/s) and position (m) at 5 s (analytic 16.18, 40.45)
+//   joint_err    ragdoll: largest joint gap over the run (mm)
+// Run e.g.  build/bench/bench/anchor_scenes_bench --benchmark_repetitions=5
+// (Google Benchmark then reports the median and spread of the runs).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+
+#include "anchor_scene.h"
+
+namespace {
+
+using karma::scenes::AnchorScene;
+
+template <std::unique_ptr<AnchorScene> (*Make)()>
+void BM_Scene(benchmark::State &state) {
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::unique_ptr<AnchorScene> scene = Make();
+    state.ResumeTiming();
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < scene->steps(); ++i) scene->step();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.PauseTiming();
+    const karma::scenes::SceneFigures f = scene->finish();
+    state.counters["us_per_step"] = seconds * 1e6 / f.steps;
+    state.counters["stable"] = f.stable() ? 1 : 0;
+    state.counters["penetration_mm"] = f.penetration * 1e3;
+    if (scene->name() == std::string("car")) {
+      state.counters["car_v"] = f.carVelocity;
+      state.counters["car_x"] = f.carPosition;
+    }
+    if (scene->name() == std::string("ragdoll")) state.counters["joint_err_mm"] = f.jointErrorMax * 1e3;
+    scene.reset();
+    state.ResumeTiming();
+  }
+}
+
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeCar)->Name("car")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeTopple)->Name("topple")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeStack21)->Name("stack21")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeRagdoll)->Name("ragdoll")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakePile1000)->Name("pile1000")->Iterations(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,69 @@
+// Each anchor scene run to its end through Mst: no NaN, no body above
+// 50 m/s, and the scene's expectation (SCENES.md) met. The figures are
+// printed so a failure shows how far off the scene was.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "anchor_scene.h"
+
+namespace {
+
+using karma::scenes::AnchorScene;
+using karma::scenes::SceneFigures;
+
+SceneFigures runAndReport(AnchorScene &scene) {
+  const SceneFigures f = scene.run();
+  std::printf("%s: %d steps, finite %d, max speed %.2f m/s, penetration %.2f mm; %s\n",
+              scene.name(), f.steps, f.finite ? 1 : 0, f.maxSpeed, f.penetration * 1e3,
+              f.detail.c_str());
+  return f;
+}
+
+TEST(AnchorScenes, CarAcceleratesAsRollingWithoutSlipPredicts) {
+  auto scene = karma::scenes::MakeCar();
+  const SceneFigures f = runAndReport(*scene);
+  EXPECT_TRUE(f.stable()) << f.detail;
+  // Analytic (SCENES.md): v(5 s) = 16.18 m/s, x(5 s) = 40.45 m; the check
+  // allows 5%. The chassis rides at 0.6 m less the 18.4 mm static sag.
+  EXPECT_NEAR(f.carVelocity, 16.18, 0.05 * 16.18);
+  EXPECT_NEAR(f.carPosition, 40.45, 0.05 * 40.45);
+  EXPECT_NEAR(f.carRideHeight, 0.582, 0.01);
+}
+
+TEST(AnchorScenes, ToppleStacksAllStand) {
+  auto scene = karma::scenes::MakeTopple();
+  const SceneFigures f = runAndReport(*scene);
+  EXPECT_TRUE(f.stable()) << f.detail;
+  EXPECT_LT(f.penetration, 0.01);
+}
+
+TEST(AnchorScenes, Stack21Stands) {
+  auto scene = karma::scenes::MakeStack21();
+  const SceneFigures f = runAndReport(*scene);
+  EXPECT_TRUE(f.stable()) << f.detail;
+  EXPECT_LT(f.penetration, 0.01);
+}
+
+// DISABLED: an open defect found when the capsule-plane pair landed
+// (2026-11-30). The rag doll lands whole (joint error 43 mm at the impact)
+// but, lying on the ground, its joint error grows from step ~110 and it
+// explodes by step ~150. A single capsule on the plane rests correctly, so
+// the fault is in joints + many contacts (docs/NOTES.md). Run it with
+// --gtest_also_run_disabled_tests.
+TEST(AnchorScenes, DISABLED_RagdollStaysConnected) {
+  auto scene = karma::scenes::MakeRagdoll();
+  const SceneFigures f = runAndReport(*scene);
+  EXPECT_TRUE(f.stable()) << f.detail;
+  EXPECT_LT(f.jointErrorEnd, 0.02);
+}
+
+// DISABLED: pile1000 costs over a second per step today (minutes per run),
+// too slow for the test suite; the benchmark runs it (docs/NOTES.md).
+TEST(AnchorScenes, DISABLED_Pile1000LandsWithNothingLost) {
+  auto scene = karma::scenes::MakePile1000();
+  const SceneFigures f = runAndReport(*scene);
+  EXPECT_TRUE(f.stable()) << f.detail;
+}
+
+}  // namespace
