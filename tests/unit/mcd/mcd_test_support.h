@@ -2,6 +2,8 @@
 // helpers for the Mcd tests.
 #pragma once
 
+#include "support/warning_capture.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,26 +14,7 @@
 
 namespace mcd_test {
 
-// While alive, warnings are recorded instead of printed.
-class WarningCapture {
- public:
-  WarningCapture() : previous_(MeSetWarningHandler(&WarningCapture::handler)) { log().clear(); }
-  ~WarningCapture() { MeSetWarningHandler(previous_); }
-  WarningCapture(const WarningCapture &) = delete;
-  WarningCapture &operator=(const WarningCapture &) = delete;
-  static std::vector<std::string> &log() {
-    static std::vector<std::string> messages;
-    return messages;
-  }
-  size_t count() const { return log().size(); }
-  std::string last() const { return log().empty() ? std::string() : log().back(); }
-  bool lastMentions(const std::string &what) const { return last().find(what) != std::string::npos; }
-  void clear() { log().clear(); }
-
- private:
-  static void MEAPI handler(int, const char *message) { log().emplace_back(message); }
-  MeMessageHandler previous_;
-};
+using karma_test::WarningCapture;  // warnings recorded while alive
 
 // A framework with every built-in type and interaction, terminated at the
 // end of the test.

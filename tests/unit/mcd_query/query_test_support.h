@@ -1,6 +1,8 @@
 // query_test_support.h: a framework with models placed by the test.
 #pragma once
 
+#include "support/warning_capture.h"
+
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -50,23 +52,6 @@ class Scene {
   std::vector<std::unique_ptr<Tm>> tms_;
 };
 
-// Records warnings while alive.
-class Warnings {
- public:
-  Warnings() : previous_(MeSetWarningHandler(&Warnings::handler)) { log().clear(); }
-  ~Warnings() { MeSetWarningHandler(previous_); }
-  Warnings(const Warnings &) = delete;
-  Warnings &operator=(const Warnings &) = delete;
-  static std::vector<std::string> &log() {
-    static std::vector<std::string> messages;
-    return messages;
-  }
-  size_t count() const { return log().size(); }
-  std::string last() const { return log().empty() ? std::string() : log().back(); }
-
- private:
-  static void MEAPI handler(int, const char *message) { log().emplace_back(message); }
-  MeMessageHandler previous_;
-};
+using Warnings = karma_test::WarningCapture;  // warnings recorded while alive
 
 }  // namespace mcd_query_test

@@ -1,6 +1,8 @@
 // mdt_test_support.h: warning capture and small helpers for the Mdt tests.
 #pragma once
 
+#include "support/warning_capture.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,25 +13,7 @@
 
 namespace mdt_test {
 
-// While alive, warnings are recorded instead of printed.
-class WarningCapture {
- public:
-  WarningCapture() : previous_(MeSetWarningHandler(&WarningCapture::handler)) { log().clear(); }
-  ~WarningCapture() { MeSetWarningHandler(previous_); }
-  WarningCapture(const WarningCapture &) = delete;
-  WarningCapture &operator=(const WarningCapture &) = delete;
-  static std::vector<std::string> &log() {
-    static std::vector<std::string> messages;
-    return messages;
-  }
-  size_t count() const { return log().size(); }
-  std::string last() const { return log().empty() ? std::string() : log().back(); }
-  void clear() { log().clear(); }
-
- private:
-  static void MEAPI handler(int, const char *message) { log().emplace_back(message); }
-  MeMessageHandler previous_;
-};
+using karma_test::WarningCapture;  // warnings recorded while alive
 
 // A world destroyed at the end of the test.
 struct World {
