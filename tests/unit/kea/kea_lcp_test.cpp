@@ -77,7 +77,6 @@ Owned RandomBoxed(int n, unsigned seed) {
   return o;
 }
 
-
 double MaxAbs(const std::vector<double> &v) {
   double m = 0;
   for (double x : v) m = std::max(m, std::fabs(x));

@@ -176,7 +176,6 @@ double MaxAbs(const std::vector<MeReal> &v) {
   return m;
 }
 
-
 }  // namespace
 
 TEST(KeaSparse, SmallProblemsMatchExhaustiveEnumeration) {
