@@ -94,6 +94,26 @@ void AnchorScene::step() {
   afterStep();
 }
 
+double AnchorScene::kineticEnergy() const {
+  double energy = 0;
+  for (McdModelID m : bodies_) {
+    MdtBodyID b = McdModelGetBody(m);
+    MeVector3 v, w, wb;
+    MdtBodyGetLinearVelocity(b, v);
+    MdtBodyGetAngularVelocity(b, w);
+    MeMatrix4 tm;
+    MdtBodyGetTransform(b, tm);
+    for (int i = 0; i < 3; ++i) wb[i] = MeVector3Dot(tm[i], w);  // body frame (rows: axes)
+    MeMatrix3 I;
+    MdtBodyGetInertiaTensor(b, I);
+    double rotational = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) rotational += (double)wb[i] * I[i][j] * wb[j];
+    energy += 0.5 * MdtBodyGetMass(b) * MeVector3Dot(v, v) + 0.5 * rotational;
+  }
+  return energy;
+}
+
 SceneFigures AnchorScene::run() {
   while (done_ < steps_) step();
   return finish();

@@ -48,6 +48,8 @@ class AnchorScene {
   // One step: the scene's own forces, then MstUniverseStep(1/60), then the
   // bookkeeping of the figures (finite, max speed, joint error).
   void step();
+  // Kinetic energy of every dynamic body, (1/2) m v.v + (1/2) w.Iw w, in J.
+  double kineticEnergy() const;
   // Runs the remaining steps and evaluates the expectation.
   SceneFigures run();
   // Evaluates the expectation and the final figures now.

@@ -5,14 +5,16 @@
 //
 //   F   = accumulated force - cL v                 (linear damping as drag)
 //   v'  = v + h (g + F/m) + J/m                    (J: accumulated impulse)
-//   tau = accumulated torque - cA w - w x (Iw w)   (Iw = R^T Ib R, world frame)
-//   w'  = w + Iw^-1 (h tau + Ja)                   (Ja: angular impulse)
+//   tau = accumulated torque - cA w                (Iw = R^T Ib R, world frame)
+//   w'  = w + Iw^-1 (h tau + Ja) + dw_gyro         (Ja: angular impulse)
 //   x'  = x + h v'
 //   q'  = q turned by w' over h (MeQuaternionFiniteRotation; exact for
 //         constant w'). With a fast-spin axis a in use, see advanceBody.
 //
-// The gyroscopic term w x (Iw w) is explicit, except for bodies with a
-// fast-spin axis (see gyroscopicStep). Constraint impulses are added
+// The gyroscopic term w x (Iw w) is linearly implicit for every body (see
+// gyroscopicStep): explicitly it feeds any body spinning about an axis of
+// unequal inertia (a capsule rolling on the ground, a wheel) at h Omega
+// near 1. Constraint impulses are added
 // between the velocity prediction and the position update (step.cpp):
 //   v' = vPred + M^-1 J^T lambda.
 #include "MeMessage.h"
@@ -41,7 +43,7 @@ void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 te
 
 namespace {
 
-// The gyroscopic velocity change of a fast spinner, linearly implicit.
+// The gyroscopic velocity change, linearly implicit (every body).
 //
 // Explicitly, dw = -h Iw^-1 (w x Iw w). For a wheel spinning at S about a
 // (inertia Is about a, Ia across), the part of w across a then turns at
@@ -53,7 +55,11 @@ namespace {
 // whose cross-axis factor is 1 / sqrt(1 + (h Omega)^2) <= 1: stable at any
 // spin, exact as h -> 0, and the spin about a principal axis is untouched
 // (w x Iw w = 0 there). The matrix is always invertible (its symmetric part
-// is Iw).
+// is Iw). The price: the free wobble of a spinner is damped by that factor
+// (it should precess at constant size), negligible while h Omega << 1.
+// Before 2026-11-30 the term was explicit unless the body had a fast-spin
+// axis; a rag doll's capsule limb rolling on the ground then spun itself
+// up and tore the doll apart (tests/unit/scenes, RagdollStaysConnected).
 void gyroscopicStep(const MdtBody *b, MECONSTMATRIX MeMatrix3 Iw, MeReal h, MeVector3 dw) {
   const MeReal *w = b->angularVelocity;
   MeVector3 L, f;
@@ -92,20 +98,15 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
   MeVector3MultiplyAdd(b->vPred, b->invMass, b->impulse);
 
   // Angular velocity.
-  MeVector3 L, gyro, tau;
+  MeVector3 tau;
   MeVector3Copy(tau, b->torque);
   MeVector3MultiplyAdd(tau, -b->angularDamping, b->angularVelocity);
-  if (!b->fastSpinEnabled) {
-    applyBodyTensor(L, b, b->inertia, b->angularVelocity);
-    MeVector3Cross(gyro, b->angularVelocity, L);
-    MeVector3Subtract(tau, tau, gyro);
-  }
   MeVector3MultiplyScalar(tmp, tau, h);
   MeVector3Add(tmp, tmp, b->angularImpulse);
   MeVector3 dw;
   applyBodyTensor(dw, b, b->invInertia, tmp);
   MeVector3Add(b->wPred, b->angularVelocity, dw);
-  if (b->fastSpinEnabled) {
+  {
     MeMatrix3 Iw;  // world-frame inertia
     for (int k = 0; k < 3; ++k) {
       MeVector3 e = {0, 0, 0};
