@@ -38,6 +38,11 @@ void MEAPI MdtWorldSetGamma(const MdtWorldID world, const MeReal gamma) {
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
   ME_REQUIRE_ARG(realFinite(gamma) && gamma >= 0, fn,
                  "gamma must be finite and >= 0, got %g; ignored", (double)gamma);
+  if (gamma > 1)
+    MeWarning(0,
+              "%s: gamma %g > 1 over-corrects every step (gamma is the fraction of the error "
+              "corrected per step; a rate r in 1/s is gamma = r * h)",
+              fn, (double)gamma);
   world->params.gamma = gamma;
 }
 

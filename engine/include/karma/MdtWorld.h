@@ -104,7 +104,12 @@ MEPUBLIC void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize);
 MEPUBLIC void MEAPI MdtWorldSetGravity(const MdtWorldID world, const MeReal gx, const MeReal gy,
                                        const MeReal gz);
 MEPUBLIC void MEAPI MdtWorldGetGravity(const MdtWorldID world, MeVector3 g);
-/* Epsilon must be >= 0, gamma >= 0. */
+/* Epsilon must be >= 0, gamma >= 0.
+ * Gamma is the fraction of each constraint's error corrected per step (the
+ * correcting velocity is gamma * error / h; default 0.2; 0.1 to 0.8 works
+ * well). A rate in 1/s converts as gamma = rate * h, as QuadBike's
+ * MdtWorldSetGamma(world, timeStep * 10) does. Above 1 every step
+ * over-corrects: accepted, with a warning. */
 MEPUBLIC void MEAPI MdtWorldSetEpsilon(const MdtWorldID world, const MeReal epsilon);
 MEPUBLIC MeReal MEAPI MdtWorldGetEpsilon(const MdtWorldID world);
 MEPUBLIC void MEAPI MdtWorldSetGamma(const MdtWorldID world, const MeReal gamma);

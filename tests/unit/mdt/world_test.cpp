@@ -81,6 +81,19 @@ TEST(MdtWorld, SettersAndRejections) {
   EXPECT_NE(cap.last().find("MdtWorldCreate"), std::string::npos);
 }
 
+TEST(MdtWorld, GammaAboveOneIsKeptWithAWarning) {
+  // Gamma is a fraction per step; the guide's stacking sample writes 5 (a
+  // rate): accepted, but the caller is told it over-corrects.
+  World w(1);
+  WarningCapture cap;
+  MdtWorldSetGamma(w, 1);
+  EXPECT_EQ(cap.count(), 0u);
+  MdtWorldSetGamma(w, 5);
+  EXPECT_EQ(cap.count(), 1u);
+  EXPECT_NE(cap.last().find("r * h"), std::string::npos);
+  EXPECT_EQ(MdtWorldGetGamma(w), 5);
+}
+
 TEST(MdtWorld, PoolExhaustionReturnsNullWithOneWarning) {
   World w(2);
   WarningCapture cap;
