@@ -1,0 +1,124 @@
+// tutorial_record.cpp: see tutorial_record.h. A thin layer over the golden
+// toolkit's KarmaTrajectoryWriter: sampling, the options, the atexit end.
+#include "tutorial_record.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include <karma/golden/KarmaTrajectory.h>
+
+struct TutorialRecord {
+  KarmaTrajectoryWriter *writer = nullptr;
+  std::vector<MdtBodyID> bodies;
+  MeReal timeStep = 0;
+  int every = 1;
+  long steps = 0;
+  long lastWritten = -1;  // the last frame written, -1 before Start
+  char program[64] = {};
+  char step[64] = {};
+  char sampling[64] = {};
+  const char *path = nullptr;
+};
+
+namespace {
+
+TutorialRecord *active = nullptr;  // the one record; ended by atexit
+
+const char *OptionValue(int argc, char **argv, const char *name) {
+  const char *value = nullptr;
+  for (int i = 1; i + 1 < argc; ++i)
+    if (!std::strcmp(argv[i], name)) value = argv[i + 1];
+  return value;
+}
+
+void WriteFrame(TutorialRecord *rec) {
+  if (!rec->writer) return;
+  KarmaTrajectoryWriterBeginFrame(rec->writer, rec->steps, (MeReal)rec->steps * rec->timeStep);
+  for (MdtBodyID b : rec->bodies) {
+    MeVector3 x, v, w;
+    MeVector4 q;
+    MdtBodyGetPosition(b, x);
+    MdtBodyGetQuaternion(b, q);
+    MdtBodyGetLinearVelocity(b, v);
+    MdtBodyGetAngularVelocity(b, w);
+    KarmaTrajectoryWriterAddBody(rec->writer, x, q, v, w);
+  }
+  KarmaTrajectoryWriterEndFrame(rec->writer);
+  rec->lastWritten = rec->steps;
+}
+
+void Finish() {
+  TutorialRecord *rec = active;
+  if (!rec) return;
+  active = nullptr;
+  if (rec->writer) {
+    if (rec->lastWritten >= 0 && rec->lastWritten != rec->steps) WriteFrame(rec);
+    char hash[KARMA_GOLDEN_HASH_TEXT_SIZE];
+    KarmaGoldenFormatHash(KarmaTrajectoryWriterHash(rec->writer), hash);
+    std::printf("state hash: %s\n", hash);
+    std::fflush(stdout);
+    if (const char *error = KarmaTrajectoryWriterError(rec->writer))
+      std::fprintf(stderr, "%s: trajectory: %s\n", rec->program, error);
+    KarmaTrajectoryWriterDestroy(rec->writer);
+  }
+  delete rec;
+}
+
+}  // namespace
+
+extern "C" {
+
+TutorialRecord *TutorialRecordCreate(int argc, char **argv, const char *program, const char *step,
+                                     MeReal timeStep, int every) {
+  if (active) {
+    std::fprintf(stderr, "%s: a tutorial record already exists\n", program);
+    return nullptr;
+  }
+  const char *platform = OptionValue(argc, argv, "-platform");
+  if (platform && std::strcmp(platform, "reference") != 0) {
+    std::fprintf(stderr, "%s: no platform backend '%s' (available: reference)\n", program, platform);
+    std::exit(2);
+  }
+  auto *rec = new (std::nothrow) TutorialRecord;
+  if (!rec) return nullptr;
+  std::snprintf(rec->program, sizeof rec->program, "%s", program);
+  std::snprintf(rec->step, sizeof rec->step, "%s", step ? step : "main");
+  rec->every = every < 1 ? 1 : every;
+  rec->timeStep = timeStep;
+  std::snprintf(rec->sampling, sizeof rec->sampling, "every %dth step and the last", rec->every);
+  rec->path = OptionValue(argc, argv, "-trajectory");
+  active = rec;
+  std::atexit(Finish);
+  return rec;
+}
+
+void TutorialRecordAddBody(TutorialRecord *rec, MdtBodyID body) {
+  if (!rec || !body) return;
+  if (rec->lastWritten >= 0) {
+    std::fprintf(stderr, "%s: TutorialRecordAddBody after TutorialRecordStart; ignored\n", rec->program);
+    return;
+  }
+  rec->bodies.push_back(body);
+}
+
+void TutorialRecordStart(TutorialRecord *rec) {
+  if (!rec || rec->lastWritten >= 0) return;
+  KarmaTrajectoryInfo info = {rec->program, rec->step, "reference", rec->sampling, rec->timeStep,
+                              (int)rec->bodies.size()};
+  rec->writer = KarmaTrajectoryWriterCreate(rec->path, &info);
+  if (rec->writer && KarmaTrajectoryWriterError(rec->writer))
+    std::fprintf(stderr, "%s: trajectory: %s\n", rec->program, KarmaTrajectoryWriterError(rec->writer));
+  WriteFrame(rec);
+}
+
+void TutorialRecordStep(TutorialRecord *rec) {
+  if (!rec) return;
+  ++rec->steps;
+  if (rec->lastWritten >= 0 && rec->steps % rec->every == 0) WriteFrame(rec);
+}
+
+long TutorialRecordSteps(const TutorialRecord *rec) { return rec ? rec->steps : 0; }
+
+}  // extern "C"
