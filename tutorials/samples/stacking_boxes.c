@@ -67,6 +67,9 @@ int main(int argc, const char *argv[]) {
   MdtContactParamsSetSecondaryFrictionModel(box_ground, MdtFrictionModelNormalForce);
   MdtContactParamsSetType(box_ground, MdtContactTypeFriction2D);
   MdtContactParamsSetFriction(box_ground, (MeReal)0.4);
+  /* The normal-force model reads the coefficient, which SetFriction (the
+   * box model's force limit, in newtons) leaves at 0: set it too. */
+  MdtContactParamsSetFrictionCoefficient(box_ground, (MeReal)0.4);
   MdtContactParamsSetRestitution(box_ground, (MeReal)0.01);
   box_box = MstBridgeGetContactParams(bridge, boxMaterial, boxMaterial);
   MdtContactParamsSetType(box_box, MdtContactTypeFriction2D);
