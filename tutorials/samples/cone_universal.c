@@ -55,14 +55,14 @@ int main(int argc, const char *argv[]) {
 
   RGraphicSphereCreate(rc, (MeReal)0.4, orange, MdtBodyGetTransformPtr(body_));
   rod_ = RNLineCreate(rc, a, b, white, NULL);
-  /* The cone: apex at the joint, opening along +x, 2.5 m long. The
+  /* The cone: apex at the joint, opening along +x, 2 m long. The
    * graphic's axis is z, apex up: turn z onto -x. */
   MeMatrix3MakeRotationY(R, (MeReal)(-ME_PI / 2));
   MeMatrix4TMMakeFromRotationAndPosition(coneTM, R, -2, 0, 0);
-  RGraphicSetWireframe(RGraphicConeCreate(rc, (MeReal)2.5 * MeSqrt(3), 0, (MeReal)2.5, cyan, coneTM), 1);
+  RGraphicSetWireframe(RGraphicConeCreate(rc, 2 * MeSqrt(3), 0, 2, cyan, coneTM), 1);
   SampleGround(rc, 16, (MeReal)-5.5);
 
-  SampleCamera(rc, 0, (MeReal)-1.5, 0, 12, (MeReal)0.35, (MeReal)0.15);
+  SampleCamera(rc, 0, (MeReal)-1.5, 0, 12, (MeReal)0.1, (MeReal)0.25);
   SampleRecordBody(body_);
   SampleRun(argc, argv, "cone_universal", (MeReal)1 / 60, NULL, Follow);
   return 0;

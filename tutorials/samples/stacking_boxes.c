@@ -101,7 +101,7 @@ int main(int argc, const char *argv[]) {
     SampleRecordBody(box_[i]);
   }
 
-  SampleCamera(rc, 0, 5, 0, 16, (MeReal)0.5, (MeReal)0.15);
+  SampleCamera(rc, 0, 4, 0, 12, (MeReal)0.5, (MeReal)0.15);
   SampleRun(argc, argv, "stacking_boxes", h, NULL, Shade);
   return 0;
 }

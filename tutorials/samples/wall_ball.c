@@ -99,7 +99,7 @@ int main(int argc, const char *argv[]) {
     SampleRecordBody(ball_[i]);
   }
 
-  SampleCamera(rc, 1, 0, 0, 15, (MeReal)-0.35, (MeReal)0.7);
+  SampleCamera(rc, 1, 0, 0, 14, (MeReal)0.25, (MeReal)0.8);
   SampleRun(argc, argv, "wall_ball", (MeReal)1 / 60, NULL, ClearPassing);
   return 0;
 }
