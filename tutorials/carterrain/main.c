@@ -45,7 +45,7 @@ static void Follow(void) {
   at[0] = tm[3][0], at[1] = tm[3][1], at[2] = tm[3][2];
   RCameraSetLookAt(rc, at);
   /* theta is measured about y from +z; behind the car is -forward. */
-  RCameraSetView(rc, 13, MeAtan2(-tm[0][0], -tm[0][2]) + (MeReal)0.6, (MeReal)0.4);
+  RCameraSetView(rc, 16, MeAtan2(-tm[0][0], -tm[0][2]) + (MeReal)0.6, (MeReal)0.45);
 }
 
 static void MEAPI tick(RRender *r, void *userdata) {
@@ -78,7 +78,7 @@ int main(int argc, const char *argv[]) {
   atexit(cleanup);
   if (!CarTerrainCreate(&car, "terrain2")) return 1;
 
-  ground = HeightFieldCreateGraphic(rc, &car.terrain, grass, 4, NULL);
+  ground = HeightFieldCreateGraphic(rc, &car.terrain, grass, 8, NULL);
   RGraphicSetTexture(rc, ground, "checkerboard");
   RGraphicBoxCreate(rc, CAR_CHASSIS_LENGTH, CAR_CHASSIS_HEIGHT, CAR_CHASSIS_WIDTH, paint,
                     MdtBodyGetTransformPtr(car.chassisBody));
