@@ -9,9 +9,19 @@
 
 #include <karma/golden/KarmaTrajectory.h>
 
+// One body's state as the trajectory records it.
+struct BodyState {
+  MeVector3 x, v, w;
+  MeVector4 q;
+};
+
 struct TutorialRecord {
   KarmaTrajectoryWriter *writer = nullptr;
   std::vector<MdtBodyID> bodies;
+  // The state after the latest step when it was not written: the atexit
+  // end writes it from here, since the program's own cleanup may already
+  // have destroyed the bodies.
+  std::vector<BodyState> latest;
   MeReal timeStep = 0;
   int every = 1;
   long steps = 0;
@@ -33,18 +43,21 @@ const char *OptionValue(int argc, char **argv, const char *name) {
   return value;
 }
 
-void WriteFrame(TutorialRecord *rec) {
+void Capture(const TutorialRecord *rec, std::vector<BodyState> &out) {
+  out.resize(rec->bodies.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    MdtBodyID b = rec->bodies[i];
+    MdtBodyGetPosition(b, out[i].x);
+    MdtBodyGetQuaternion(b, out[i].q);
+    MdtBodyGetLinearVelocity(b, out[i].v);
+    MdtBodyGetAngularVelocity(b, out[i].w);
+  }
+}
+
+void WriteFrame(TutorialRecord *rec, const std::vector<BodyState> &states) {
   if (!rec->writer) return;
   KarmaTrajectoryWriterBeginFrame(rec->writer, rec->steps, (MeReal)rec->steps * rec->timeStep);
-  for (MdtBodyID b : rec->bodies) {
-    MeVector3 x, v, w;
-    MeVector4 q;
-    MdtBodyGetPosition(b, x);
-    MdtBodyGetQuaternion(b, q);
-    MdtBodyGetLinearVelocity(b, v);
-    MdtBodyGetAngularVelocity(b, w);
-    KarmaTrajectoryWriterAddBody(rec->writer, x, q, v, w);
-  }
+  for (const BodyState &s : states) KarmaTrajectoryWriterAddBody(rec->writer, s.x, s.q, s.v, s.w);
   KarmaTrajectoryWriterEndFrame(rec->writer);
   rec->lastWritten = rec->steps;
 }
@@ -54,7 +67,7 @@ void Finish() {
   if (!rec) return;
   active = nullptr;
   if (rec->writer) {
-    if (rec->lastWritten >= 0 && rec->lastWritten != rec->steps) WriteFrame(rec);
+    if (rec->lastWritten >= 0 && rec->lastWritten != rec->steps) WriteFrame(rec, rec->latest);
     char hash[KARMA_GOLDEN_HASH_TEXT_SIZE];
     KarmaGoldenFormatHash(KarmaTrajectoryWriterHash(rec->writer), hash);
     std::printf("state hash: %s\n", hash);
@@ -110,13 +123,16 @@ void TutorialRecordStart(TutorialRecord *rec) {
   rec->writer = KarmaTrajectoryWriterCreate(rec->path, &info);
   if (rec->writer && KarmaTrajectoryWriterError(rec->writer))
     std::fprintf(stderr, "%s: trajectory: %s\n", rec->program, KarmaTrajectoryWriterError(rec->writer));
-  WriteFrame(rec);
+  Capture(rec, rec->latest);
+  WriteFrame(rec, rec->latest);
 }
 
 void TutorialRecordStep(TutorialRecord *rec) {
   if (!rec) return;
   ++rec->steps;
-  if (rec->lastWritten >= 0 && rec->steps % rec->every == 0) WriteFrame(rec);
+  if (rec->lastWritten < 0) return;
+  Capture(rec, rec->latest);
+  if (rec->steps % rec->every == 0) WriteFrame(rec, rec->latest);
 }
 
 long TutorialRecordSteps(const TutorialRecord *rec) { return rec ? rec->steps : 0; }

@@ -14,8 +14,9 @@
  *   TutorialRecordStep(rec);
  *
  * The program ends however it likes (RRun ends through exit()): an atexit
- * handler writes the last step's frame if it was not sampled, the final
- * hash, and prints the hash. A failure to write the file is reported on
+ * handler writes the last step's frame if it was not sampled (from a copy
+ * taken at that step, so the program's own atexit cleanup may run first
+ * and destroy the bodies), the final hash, and prints the hash. A failure to write the file is reported on
  * stderr; the exit status cannot change from atexit, so it is the golden
  * test that fails, on the incomplete file.
  *
