@@ -21,7 +21,9 @@
  * iteration is the approximate handling the contract describes: it is not
  * guaranteed to converge, but does in practice (friction bounds only grow or
  * shrink with their normal force, which changes little once the contact set
- * is right); the iteration cap bounds it either way.
+ * is right); the iteration cap bounds it either way. After 10 rounds the
+ * bound update is relaxed by half (kea_activeset_core.h), which turns the
+ * usual failure, a 2-cycle of the bounds, into convergence.
  *
  * A warm start (last step's lambda) gives the initial sets: rows at a finite
  * bound start clamped there, the rest free. A good guess usually needs one

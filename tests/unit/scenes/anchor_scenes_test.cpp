@@ -74,11 +74,22 @@ TEST(AnchorScenes, RagdollOnTheGroundOnlyLosesEnergy) {
   EXPECT_LT(previous, 0.25 * landed);
 }
 
-// DISABLED: pile1000 costs over a second per step today (minutes per run),
-// too slow for the test suite; the benchmark runs it (docs/NOTES.md).
-TEST(AnchorScenes, DISABLED_Pile1000LandsWithNothingLost) {
+// pile1000 runs its first 90 steps (1.5 s), not its 600: by then every box
+// has landed (the top layer, dropped from 6.9 m, touches down at ~1.2 s) and
+// the columns are falling into one heap, so "no box below the ground or
+// lost" and the speed bound are checked through the violent part. The
+// settled heap after ~100 steps is one partition of ~13000 rows whose exact
+// solve costs a few hundred ms per step (docs/NOTES.md): the full run is the
+// benchmark's (anchor_scenes_bench --benchmark_filter=pile1000).
+TEST(AnchorScenes, Pile1000LandsWithNothingLost) {
   auto scene = karma::scenes::MakePile1000();
-  const SceneFigures f = runAndReport(*scene);
+  constexpr int kSteps = 90;
+  for (int i = 0; i < kSteps; ++i) scene->step();
+  const SceneFigures f = scene->finish();
+  std::printf("%s: %d of %d steps, finite %d, max speed %.2f m/s, penetration %.2f mm; %s\n",
+              scene->name(), f.steps, scene->steps(), f.finite ? 1 : 0, f.maxSpeed,
+              f.penetration * 1e3, f.detail.c_str());
+  EXPECT_EQ(f.steps, kSteps);
   EXPECT_TRUE(f.stable()) << f.detail;
 }
 
