@@ -79,9 +79,9 @@ void InitialiseMaterials(void) {
 }
 
 void QuadBikeRideInputs(MeReal t, MeReal *throttle, MeReal *brake, MeReal *steering) {
-  *throttle = t >= 1 && t < 6 ? (MeReal)0.6 : 0;
-  *steering = t >= 3 && t < 5 ? (MeReal)0.6 : 0;
-  *brake = t >= 6 ? 1 : 0;
+  *throttle = t >= 1 && t < (MeReal)4.5 ? (MeReal)0.4 : 0;
+  *steering = t >= (MeReal)2.5 && t < (MeReal)4.5 ? (MeReal)0.4 : 0;
+  *brake = t >= (MeReal)4.5 ? 1 : 0;
 }
 
 MeReal QuadBikeTime(void) { return (MeReal)ticks * timeStep; }

@@ -171,10 +171,12 @@ void QuadBikeStartPosition(MeVector3 startPos);
 MeReal QuadBikeTime(void);
 
 /* The scripted ride, as a function of time:
- *   0 - 1 s  standing still (the suspension settles)
- *   1 - 6 s  throttle 0.6
- *   3 - 5 s  steering 0.6 to the left
- *   6 s on   brake 1 */
+ *   0 - 1 s    standing still (the suspension settles)
+ *   1 - 4.5 s  throttle 0.4
+ *   2.5 - 4.5 s  steering 0.4 to the left (the front wheels turn 0.2 rad)
+ *   4.5 s on   brake 1
+ * The goldens keep frames 0, 120, 240, 360: the start, driving straight at
+ * 2 s, turning at 4 s, stopped at 6 s. */
 void QuadBikeRideInputs(MeReal t, MeReal *throttle, MeReal *brake, MeReal *steering);
 
 /* Every body this step has, in a fixed order (chassis, wheels, handlebars,

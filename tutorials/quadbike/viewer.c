@@ -253,7 +253,7 @@ int main(int argc, const char *argv[]) {
 
   printf("QuadBike step %d: %s\n  terrain: %s; %s\n", QUADBIKE_STEP, stepText[QUADBIKE_STEP],
          options.useTriList ? "height field (terrain2.bmp)" : "flat plane",
-         options.ride ? "the scripted ride drives (throttle 1-6 s, steer 3-5 s, brake from 6 s)"
+         options.ride ? "the scripted ride drives (throttle 1-4.5 s, steer left 2.5-4.5 s, brake from 4.5 s)"
                       : "keys: Up throttle, Down brake, Left/Right steer, Space centre");
   if (!QuadBikeCreate(&options)) {
     fprintf(stderr, "quadbike: could not create the Karma universe\n");
