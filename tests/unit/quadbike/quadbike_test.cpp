@@ -262,7 +262,9 @@ void RideKeepsTheRiderOn(int useTriList) {
   // On the flat the brakes hold the bike. On a slope it creeps: the wheel
   // contacts' friction is the guide's slip model (PASTE_02: force = slip
   // velocity / slip), which yields in proportion to the load.
-  if (!useTriList) EXPECT_LT(MeVector3Magnitude(v), (MeReal)0.05) << "the brake holds the bike";
+  if (!useTriList) {
+    EXPECT_LT(MeVector3Magnitude(v), (MeReal)0.05) << "the brake holds the bike";
+  }
   EXPECT_TRUE(finite);
   EXPECT_LT(worst, 0.01);
   EXPECT_GT(minHead, 0.8);
