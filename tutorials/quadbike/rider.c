@@ -8,7 +8,7 @@
 /* The rider sitting on the bike, in the bike's start frame (x forward, y
  * up, z to the right; the chassis box's centre at 0, its top at y = 0.2).
  * Key points: ankles A (0, 0.15), knees K (0.2, 0.6), hips H (-0.3, 0.45),
- * shoulders S (0, 1.0, +-0.25), neck (0, 1.05), elbows E (0.375, 0.9375,
+ * shoulders S (0, 1.0, +-0.25), neck (0, 1.04), elbows E (0.375, 0.9375,
  * +-0.25), grips W (0.55, 0.55, +-0.25) on the handlebars. Each limb is a
  * box whose long side (x) runs between its two joints, turned about z by
  * limbAng[0]. Masses are left at MdtBodyCreate's default (1 kg). */
@@ -17,7 +17,7 @@ const RiderData riderData = {
     {
         {(MeReal)0.1, (MeReal)0.375, 0},                   /* LOWER_LEGS: A-K */
         {(MeReal)-0.05, (MeReal)0.525, 0},                 /* UPPER_LEGS: K-H */
-        {(MeReal)-0.15, (MeReal)0.725, 0},                 /* TORSO: H-neck */
+        {(MeReal)-0.15, (MeReal)0.725, 0},                 /* TORSO: H to the shoulders */
         {(MeReal)0.03, (MeReal)1.18, 0},                   /* HEAD */
         {(MeReal)0.1875, (MeReal)0.96875, (MeReal)0.25},   /* R_UPPER_ARM: S-E */
         {(MeReal)0.4625, (MeReal)0.74375, (MeReal)0.25},   /* R_LOWER_ARM: E-W */
