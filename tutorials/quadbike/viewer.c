@@ -34,6 +34,7 @@ static RGraphic *caption[2];
 static HeightField drawnField; /* the terrain's shape before step 5 loads it */
 static TutorialRecord *record;
 static MeMatrix4 startTM, hBarStemTM;
+static MeMatrix4 groundTileTM[5][5]; /* the flat ground's tiles */
 
 /* What each step adds, for the caption. */
 static const char *const stepText[20] = {
@@ -104,10 +105,21 @@ static void CreateTerrainGraphics(void) {
       hf = &drawnField;
     }
     g = HeightFieldCreateGraphic(rc, hf, sand, 16, NULL);
+    if (g) RGraphicSetTexture(rc, g, "checkerboard");
   } else {
-    g = RGraphicGroundPlaneCreate(rc, 240, 60, white, 0);
+    /* A ground plane carries one copy of the texture, so the flat ground
+     * is 5 x 5 tiles of 48 m, each with its own copy (6 m squares). */
+    int i, k;
+    for (i = 0; i < 5; ++i)
+      for (k = 0; k < 5; ++k) {
+        MeMatrix4TMMakeIdentity(groundTileTM[i][k]);
+        MeMatrix4TMSetPosition(groundTileTM[i][k], (MeReal)(48 * (i - 2)), 0, (MeReal)(48 * (k - 2)));
+        g = RGraphicGroundPlaneCreate(rc, 48, 8, white, 0);
+        if (!g) continue;
+        RGraphicSetTransformPtr(g, groundTileTM[i][k]);
+        RGraphicSetTexture(rc, g, "checkerboard");
+      }
   }
-  if (g) RGraphicSetTexture(rc, g, "checkerboard");
 }
 
 static void CreateVehicleGraphics(void) {
