@@ -244,6 +244,15 @@ int main(int argc, const char *argv[]) {
   int i, n, headless = 0, scripted = 0, noride;
 
   for (i = 1; i < argc; ++i) {
+    if (!strcmp(argv[i], "-help"))
+      printf("QuadBike step %d (tutorials/quadbike/README.md). Options of the program:\n"
+             "  -flat          the flat plane%s\n"
+             "  -terrain       the height field from terrain2.bmp%s\n"
+             "  -noride        no scripted ride: drive with the keys\n"
+             "  -trajectory F  write the golden trajectory to F\n"
+             "With -frames N and no -keys/-keyfile/-noride the scripted ride drives.\n"
+             "Keys: Up throttle, Down brake, Left/Right steer a notch, Space centre.\n\n",
+             QUADBIKE_STEP, USE_TRI_LIST ? "" : " (the default)", USE_TRI_LIST ? " (the default)" : "");
     if (!strcmp(argv[i], "-frames")) headless = 1;
     if (!strcmp(argv[i], "-keys") || !strcmp(argv[i], "-keyfile")) scripted = 1;
   }
