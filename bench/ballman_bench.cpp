@@ -5,9 +5,9 @@
 // of tutorials/ballman (ballman_sim), so the ratio compares like with like
 // on the same machine at the same moment.
 //
-//   friction_models   the golden tests' script (the doll falls down the
-//                     stairs; the push at frame 130 sends it into the
-//                     boxes; 300 frames of 4 substeps) once per model:
+//   friction_models   a scripted run (the doll falls down the stairs; the
+//                     push at frame 130 sends it into the boxes; 300
+//                     frames of 4 substeps) once per model:
 //                     dynamics time per frame (MdtWorldStep: Kea's solve
 //                     and the integration) mean and peak, Kea's iterations
 //                     and rows per substep, and the ratios high / cheap.

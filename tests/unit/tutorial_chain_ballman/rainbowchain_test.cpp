@@ -62,7 +62,7 @@ TEST(RainbowChain, JointErrorStaysUnder5mmAsItFallsAndLands) {
 
 TEST(RainbowChain, JointErrorStaysUnder5mmWhenPulledAndReset) {
   // The golden test's script: a pull on the end ball, then a reset.
-  const ChainRun r = RunChain(480, 200, 330, 20, -10, 400);
+  const ChainRun r = RunChain(360, 150, 250, 20, -10, 300);
   std::printf("rainbowchain (pulled, reset): joint error max %.3f mm\n", r.worstError * 1e3);
   EXPECT_TRUE(r.finite);
   EXPECT_LT(r.worstError, 0.005);
