@@ -50,10 +50,14 @@ DollRun RunDoll(bool highQuality, int frames, int propelAt = -1) {
   return r;
 }
 
-// The 4 s falls, run once for the tests that read them.
+// The 4 s falls, each run once per process for the tests that read it.
 const DollRun &Fall(bool highQuality) {
-  static const DollRun cheap = RunDoll(false, 240), hq = RunDoll(true, 240);
-  return highQuality ? hq : cheap;
+  if (highQuality) {
+    static const DollRun hq = RunDoll(true, 240);
+    return hq;
+  }
+  static const DollRun cheap = RunDoll(false, 240);
+  return cheap;
 }
 
 TEST(Ballman, TenBodiesNineJointsConnectedAtTheStart) {
