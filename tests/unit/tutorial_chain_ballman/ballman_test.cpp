@@ -50,16 +50,6 @@ DollRun RunDoll(bool highQuality, int frames, int propelAt = -1) {
   return r;
 }
 
-// The 4 s falls, each run once per process for the tests that read it.
-const DollRun &Fall(bool highQuality) {
-  if (highQuality) {
-    static const DollRun hq = RunDoll(true, 240);
-    return hq;
-  }
-  static const DollRun cheap = RunDoll(false, 240);
-  return cheap;
-}
-
 TEST(Ballman, TenBodiesNineJointsConnectedAtTheStart) {
   Ballman *b = BallmanCreate();
   ASSERT_NE(b, nullptr);
@@ -71,31 +61,26 @@ TEST(Ballman, TenBodiesNineJointsConnectedAtTheStart) {
   BallmanDestroy(b);
 }
 
-TEST(Ballman, FallsDownTheStairsInOnePieceWithCheapFriction) {
-  // 4 s: off the landing, down the five steps, onto the floor.
-  const DollRun &r = Fall(false);
-  std::printf("ballman cheap: joint error max %.2f mm; torso ends at (%.2f, %.2f, %.2f)\n", r.worstError * 1e3,
-              r.torsoEnd[0], r.torsoEnd[1], r.torsoEnd[2]);
-  EXPECT_TRUE(r.finite);
-  EXPECT_LT(r.worstError, 0.02);
-  EXPECT_LT(r.torsoEnd[1], 0.5);  // down on the floor (it started at 2.6 m)
-  EXPECT_GT(r.torsoEnd[0], 2.5);  // past the foot of the stairs
-}
-
-TEST(Ballman, FallsDownTheStairsInOnePieceWithHighQualityFriction) {
-  const DollRun &r = Fall(true);
+TEST(Ballman, FallsDownTheStairsInOnePieceWithEitherFrictionModel) {
+  // 4 s: off the landing, down the five steps (and onto the floor).
+  const DollRun cheap = RunDoll(false, 240), hq = RunDoll(true, 240);
+  std::printf("ballman cheap: joint error max %.2f mm; torso ends at (%.2f, %.2f, %.2f)\n",
+              cheap.worstError * 1e3, cheap.torsoEnd[0], cheap.torsoEnd[1], cheap.torsoEnd[2]);
   std::printf("ballman high quality: joint error max %.2f mm; torso ends at (%.2f, %.2f, %.2f)\n",
-              r.worstError * 1e3, r.torsoEnd[0], r.torsoEnd[1], r.torsoEnd[2]);
-  EXPECT_TRUE(r.finite);
-  EXPECT_LT(r.worstError, 0.02);
-  EXPECT_LT(r.torsoEnd[1], 1.5);  // well down from the landing
-  EXPECT_GT(r.torsoEnd[0], 0.5);  // and off it
-}
-
-TEST(Ballman, CoulombFrictionHoldsTheDollWhereViscousFrictionLetsItSlide) {
+              hq.worstError * 1e3, hq.torsoEnd[0], hq.torsoEnd[1], hq.torsoEnd[2]);
+  for (const DollRun *r : {&cheap, &hq}) {
+    EXPECT_TRUE(r->finite);
+    EXPECT_LT(r->worstError, 0.02);
+  }
+  // Cheap: down on the floor (the torso started at 2.6 m), past the foot
+  // of the stairs.
+  EXPECT_LT(cheap.torsoEnd[1], 0.5);
+  EXPECT_GT(cheap.torsoEnd[0], 2.5);
+  // High quality: well down from the landing, and off it.
+  EXPECT_LT(hq.torsoEnd[1], 1.5);
+  EXPECT_GT(hq.torsoEnd[0], 0.5);
   // Viscous friction (the cheap model) cannot hold a body still: it slides
   // at slip x force. Coulomb friction stops the doll on the steps.
-  const DollRun &cheap = Fall(false), &hq = Fall(true);
   EXPECT_GT(cheap.torsoEnd[0], hq.torsoEnd[0] + 0.5);
 }
 
