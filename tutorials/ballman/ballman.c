@@ -94,6 +94,9 @@ static void MEAPI tick(RRender *r, void *userdata) {
     TutorialRecordStep(record);
 }
 
+/* Registered before the record is created: atexit handlers run in reverse
+ * order, so the record's own handler (which reads the bodies to write the
+ * last frame) runs first and the universe is destroyed after it. */
 static void MEAPI_CDECL cleanup(void) {
     RRenderContextDestroy(rc);
     BallmanDestroy(ballman);
@@ -119,6 +122,7 @@ int main(int argc, const char *argv[]) {
 
     ballman = BallmanCreate();
     if (!ballman) return 1;
+    atexit(cleanup);
     record = TutorialRecordCreate(argc, (char **)argv, "ballman", "main", kBallmanStep, 10);
     if (!record) return 1;
     for (i = 0; i < BALLMAN_PARTS; ++i) TutorialRecordAddBody(record, McdModelGetBody(ballman->part[i]));
@@ -170,7 +174,6 @@ int main(int argc, const char *argv[]) {
     ShowModel();
 
     TutorialRecordStart(record);
-    atexit(cleanup);
     RRun(rc, tick, 0);
     return 0; /* not reached */
 }

@@ -92,6 +92,9 @@ static void MEAPI tick(RRender *r, void *userdata) {
     TutorialRecordStep(record);
 }
 
+/* Registered before the record is created: atexit handlers run in reverse
+ * order, so the record's own handler (which reads the bodies to write the
+ * last frame) runs first and the universe is destroyed after it. */
 static void MEAPI_CDECL cleanup(void) {
     RRenderContextDestroy(rc);
     RainbowChainDestroy(chain);
@@ -114,6 +117,7 @@ int main(int argc, const char *argv[]) {
 
     chain = RainbowChainCreate();
     if (!chain) return 1;
+    atexit(cleanup);
     record = TutorialRecordCreate(argc, (char **)argv, "rainbowchain", "main", kChainStep, 10);
     if (!record) return 1;
     for (i = 0; i < NBALLS; i++) TutorialRecordAddBody(record, McdModelGetBody(chain->ball[i]));
@@ -145,7 +149,6 @@ int main(int argc, const char *argv[]) {
     RGraphicSetTexture(rc, planeG, "checkerboard");
 
     TutorialRecordStart(record);
-    atexit(cleanup);
     RRun(rc, tick, 0);
     return 0; /* not reached */
 }
