@@ -49,9 +49,10 @@ TEST(RainbowChain, StartsStraightAndJoined) {
 }
 
 TEST(RainbowChain, JointErrorStaysUnder5mmAsItFallsAndLands) {
-  // 8 s: the swing, the landing on the ground, the chain coming to rest.
-  const ChainRun r = RunChain(480);
-  std::printf("rainbowchain: joint error max %.3f mm over 480 steps, lowest centre %.3f m\n", r.worstError * 1e3,
+  // 5 s: the swing, the landing on the ground (at about 1 s), the chain
+  // swinging on the floor.
+  const ChainRun r = RunChain(300);
+  std::printf("rainbowchain: joint error max %.3f mm over 300 frames, lowest centre %.3f m\n", r.worstError * 1e3,
               r.lowest);
   EXPECT_TRUE(r.finite);
   EXPECT_LT(r.worstError, 0.005);
