@@ -1,5 +1,6 @@
 /* ballman_sim.c: Ballman's world. See ballman_sim.h. */
 #include "ballman_sim.h"
+#include "joint_gap.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -335,12 +336,7 @@ MeReal BallmanJointError(const Ballman *b) {
     MeReal worst = 0;
     int i;
     for (i = 0; i < BALLMAN_JOINTS; ++i) {
-        MeVector3 p0, p1;
-        MdtConstraintID c = MdtSkeletalQuaConstraint(b->joint[i]);
-        MeReal d;
-        MdtConstraintBodyGetPosition(c, 0, p0);
-        MdtConstraintBodyGetPosition(c, 1, p1);
-        d = MeVector3Distance(p0, p1);
+        const MeReal d = TutorialJointGap(MdtSkeletalQuaConstraint(b->joint[i]));
         if (d > worst) worst = d;
     }
     return worst;

@@ -4,6 +4,7 @@
  * PASTE_04). The window, graphics and keys are in viewer.c, which calls
  * tick() once per frame. */
 #include "quadbike.h"
+#include "joint_gap.h"
 
 #include <stddef.h>
 
@@ -163,24 +164,16 @@ int QuadBikeBodies(MdtBodyID bodies[14]) {
   return n;
 }
 
-static MeReal JointError(MdtConstraintID c) {
-  MeVector3 p0, p1, d;
-  MdtConstraintBodyGetPosition(c, 0, p0);
-  MdtConstraintBodyGetPosition(c, 1, p1);
-  MeVector3Subtract(d, p1, p0);
-  return MeVector3Magnitude(d);
-}
-
 MeReal QuadBikeRiderJointError(void) {
   MeReal worst = 0, e;
   int i;
   for (i = 0; i < NUM_JOINTS; ++i) {
     if (!rider.joint[i]) continue;
-    e = JointError(rider.joint[i]);
+    e = TutorialJointGap(rider.joint[i]);
     if (e > worst) worst = e;
   }
   if (quadBike.hBarJoint) {
-    e = JointError(MdtHingeQuaConstraint(quadBike.hBarJoint));
+    e = TutorialJointGap(MdtHingeQuaConstraint(quadBike.hBarJoint));
     if (e > worst) worst = e;
   }
   return worst;

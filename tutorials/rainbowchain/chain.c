@@ -1,6 +1,7 @@
 /* chain.c: RainbowChain's world: a universe, a ground plane, ten balls on
  * one shared sphere geometry, eleven ball-and-socket joints. */
 #include "chain.h"
+#include "joint_gap.h"
 
 #include <stdlib.h>
 
@@ -121,12 +122,7 @@ MeReal RainbowChainJointError(const RainbowChain *c) {
     MeReal worst = 0;
     int i;
     for (i = 0; i < RC_NBALLS; ++i) {
-        MeVector3 p0, p1;
-        MdtConstraintID j = MdtBSJointQuaConstraint(c->joint[i]);
-        MeReal d;
-        MdtConstraintBodyGetPosition(j, 0, p0);
-        MdtConstraintBodyGetPosition(j, 1, p1);
-        d = MeVector3Distance(p0, p1);
+        const MeReal d = TutorialJointGap(MdtBSJointQuaConstraint(c->joint[i]));
         if (d > worst) worst = d;
     }
     return worst;

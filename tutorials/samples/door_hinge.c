@@ -23,17 +23,14 @@ int main(int argc, const char *argv[]) {
   MdtWorldID world = SampleWorld(1, 1);
   MdtBodyID door;
   MeVector3 doorPosition;
-  MeMatrix3 I = {{0}};
+  MeMatrix3 I;
   const MeReal m = 2;
 
   MdtWorldSetGravity(world, 0, (MeReal)-9.81, 0);
   door = MdtBodyCreate(world);
   MdtBodySetPosition(door, 0, 0, -7);
   MdtBodySetMass(door, m);
-  /* The inertia of a solid box of these sides. */
-  I[0][0] = m / 12 * (doorSize[1] * doorSize[1] + doorSize[2] * doorSize[2]);
-  I[1][1] = m / 12 * (doorSize[0] * doorSize[0] + doorSize[2] * doorSize[2]);
-  I[2][2] = m / 12 * (doorSize[0] * doorSize[0] + doorSize[1] * doorSize[1]);
+  SampleBoxInertia(m, doorSize, I);
   MdtBodySetInertiaTensor(door, I);
   /* The kick: 5 rad/s about y; damping slows the swing. */
   MdtBodySetAngularVelocity(door, 0, 5, 0);

@@ -32,16 +32,14 @@ int main(int argc, const char *argv[]) {
   MdtBodyID door;
   MdtLimitID hingeLimit;
   MeVector3 p;
-  MeMatrix3 I = {{0}};
+  MeMatrix3 I;
   const MeReal m = 2;
 
   MdtWorldSetGravity(world, 0, (MeReal)-9.81, 0);
   door = MdtBodyCreate(world);
   MdtBodySetPosition(door, 0, 0, -7);
   MdtBodySetMass(door, m);
-  I[0][0] = m / 12 * (doorSize[1] * doorSize[1] + doorSize[2] * doorSize[2]);
-  I[1][1] = m / 12 * (doorSize[0] * doorSize[0] + doorSize[2] * doorSize[2]);
-  I[2][2] = m / 12 * (doorSize[0] * doorSize[0] + doorSize[1] * doorSize[1]);
+  SampleBoxInertia(m, doorSize, I);
   MdtBodySetInertiaTensor(door, I);
   MdtBodyEnable(door);
 

@@ -100,6 +100,15 @@ void SampleCamera(RRender *rc, MeReal x, MeReal y, MeReal z, MeReal distance, Me
   RCameraSetView(rc, distance, theta, phi);
 }
 
+void SampleBoxInertia(MeReal m, const MeReal size[3], MeMatrix3 I) {
+  int i, j;
+  for (i = 0; i < 3; ++i)
+    for (j = 0; j < 3; ++j) I[i][j] = 0;
+  I[0][0] = m / 12 * (size[1] * size[1] + size[2] * size[2]);
+  I[1][1] = m / 12 * (size[0] * size[0] + size[2] * size[2]);
+  I[2][2] = m / 12 * (size[0] * size[0] + size[1] * size[1]);
+}
+
 void SampleRecordBody(MdtBodyID body) {
   if (recordedCount_ < SAMPLE_MAX_RECORDED) recorded_[recordedCount_++] = body;
 }

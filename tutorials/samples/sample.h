@@ -51,6 +51,11 @@ RGraphic *SampleConvexMeshGraphic(RRender *rc, McdConvexMeshID mesh, const float
 void SampleCamera(RRender *rc, MeReal x, MeReal y, MeReal z, MeReal distance, MeReal theta,
                   MeReal phi);
 
+/* The inertia tensor of a solid box of mass m and full side lengths
+ * size[0..2] about its centre: diag(m/12 (y^2 + z^2), m/12 (x^2 + z^2),
+ * m/12 (x^2 + y^2)). */
+void SampleBoxInertia(MeReal m, const MeReal size[3], MeMatrix3 I);
+
 /* Adds a body to the recorded set (before SampleRun). */
 void SampleRecordBody(MdtBodyID body);
 
