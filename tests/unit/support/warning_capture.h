@@ -23,6 +23,12 @@ class WarningCapture {
   size_t count() const { return log().size(); }
   std::string last() const { return log().empty() ? std::string() : log().back(); }
   bool lastMentions(const std::string &what) const { return last().find(what) != std::string::npos; }
+  // Whether any message recorded so far mentions `what`.
+  bool saw(const std::string &what) const {
+    for (const std::string &m : log())
+      if (m.find(what) != std::string::npos) return true;
+    return false;
+  }
   void clear() { log().clear(); }
 
  private:
