@@ -13,6 +13,13 @@
  *               vertex, 1 edge, 2 face): low byte model1, high byte model2
  *   element1/2  which part of model1/model2 made the contact (the child
  *               instance of an aggregate, a triangle of a triangle list...)
+ *   feature     the identity of the pair of features (face, edge, vertex of
+ *               each shape, and the part of an aggregate or triangle list)
+ *               that made the contact: distinct among the contacts of one
+ *               intersection, and the same value step after step while the
+ *               two shapes keep touching through the same features. 0 means
+ *               "no identity": the bridge then matches the contact to the
+ *               last step's by position (see engine/mst/contact_cache.h).
  */
 #ifndef KARMA_MCDCONTACT_H
 #define KARMA_MCDCONTACT_H
@@ -37,6 +44,7 @@ typedef struct McdContact {
     MeI16 spare;
     McdContactElement element1;
     McdContactElement element2;
+    MeU32 feature;
 } McdContact;
 
 /* Filled by McdIntersect. The caller provides `contacts` and

@@ -36,6 +36,7 @@ inline bool Emit(McdIntersectResult *r, const MeVector3 position, const MeVector
     c.spare = 0;
     c.element1.ptr = nullptr;
     c.element2.ptr = nullptr;
+    c.feature = 0;
     return true;
 }
 
