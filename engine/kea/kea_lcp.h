@@ -177,6 +177,18 @@ struct SparseLcpProblem {
  * (see kea_sparse.cpp for how the sparsity is used). */
 KeaResult KeaSolveSparse(const SparseLcpProblem &problem, const KeaOptions &options);
 
+/* Scratch a caller keeps from one solve to the next (e.g. one per world), so
+ * that repeated solves of problems no larger than earlier ones allocate
+ * nothing: every array only grows. Opaque; create with KeaWorkspaceCreate. */
+struct KeaWorkspace;
+KeaWorkspace *KeaWorkspaceCreate();
+void KeaWorkspaceDestroy(KeaWorkspace *workspace);
+
+/* The same solve with the caller's workspace; the answer goes to `result`,
+ * whose vectors keep their capacity from call to call. */
+void KeaSolveSparse(const SparseLcpProblem &problem, const KeaOptions &options,
+                    KeaWorkspace &workspace, KeaResult &result);
+
 /* The exact method (see kea_activeset.cpp). */
 KeaResult KeaSolveActiveSet(const LcpProblem &problem, const KeaOptions &options);
 

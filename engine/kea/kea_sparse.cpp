@@ -346,6 +346,15 @@ KeaResult SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *
 
 }  // namespace
 
+struct KeaWorkspace {};
+KeaWorkspace *KeaWorkspaceCreate() { return new KeaWorkspace; }
+void KeaWorkspaceDestroy(KeaWorkspace *workspace) { delete workspace; }
+
+void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &,
+                    KeaResult &result) {
+  result = KeaSolveSparse(p, o);
+}
+
 KeaResult KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o) {
   static const char *const kName = "KeaSolveSparse";
   if (!detail::ValidateSparse(p, o, kName)) return detail::BadInputResult(p.n);
