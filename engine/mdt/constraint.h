@@ -35,7 +35,9 @@
 //
 // A constraint writes its rows in a fixed order and the same number every
 // step as long as nothing about it changes, so last step's impulses can warm
-// start the solver row by row.
+// start the solver row by row. Contacts instead carry their own impulses
+// (normal, and friction as a tangent vector) from step to step, because a
+// contact group's rows come and go with its contacts (Row::warm).
 // =============================================================================
 #pragma once
 
@@ -64,6 +66,12 @@ struct Row {
   RowRole role;
   MeReal depth;     // contact rows: penetration, for capping (shallowest go first)
   MdtConstraint *contact;  // contact rows: the contact they belong to
+  // Warm start: the impulse the solver starts this row from. A type that
+  // keeps its own memory (contacts: per contact, in the contact's frame)
+  // sets `warm` and `warmSet`; for the others the step uses the
+  // constraint's row-by-row memory (MdtConstraint::warm).
+  MeReal warm;
+  bool warmSet;
 };
 
 // The step's view of the world, handed to every constraint.

@@ -70,6 +70,7 @@ struct MdtWorldPrivate {
   unsigned int enabledCount;
   MeReal lengthScale;
   MeReal massScale;
+  MeReal lastStepSize;         // of the last MdtWorldStep, 0 before the first
   std::uint64_t nextSerial;
 };
 

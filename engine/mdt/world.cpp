@@ -115,9 +115,11 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   ME_REQUIRE_ARG(realFinite(stepSize) && stepSize > 0, fn,
                  "stepSize must be positive and finite, got %g", (double)stepSize);
   ME_REQUIRE_ARG(MeVector3AllFinite(world->params.gravity), fn, "gravity is not finite");
+  world->priv->lastStepSize = stepSize;
   StepScratch &s = *world->priv->scratch;
   s.stats = MdtWorldStepStats{};
   s.partitionRows.clear();
+  s.arena.reset();
   buildPartitions(world, s);
   StepContext ctx;
   ctx.h = stepSize;
@@ -127,10 +129,14 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   for (const Partition &part : s.partitions) {
     s.stats.bodies += part.bodyCount;
     s.stats.constraints += part.constraintCount;
-    solvePartition(world, s, part, ctx);
-    if (autoDisablePartition(world, s, part, stepSize)) ++s.stats.sleeping;
+    if (stepPartition(world, s, part, ctx)) ++s.stats.sleeping;
   }
   s.stats.partitions = (int)s.partitions.size();
+}
+
+MeReal MEAPI MdtWorldGetLastStepSize(const MdtWorldID world) {
+  ME_REQUIRE_ARG_RET(world != nullptr, 0, "MdtWorldGetLastStepSize", "world is NULL");
+  return world->priv->lastStepSize;
 }
 
 void MEAPI MdtWorldGetStepStats(const MdtWorldID world, MdtWorldStepStats *stats) {

@@ -3,15 +3,28 @@
 //
 // Per hello or staying pair:
 //   skip       both models frozen (the group keeps its contacts), or no body
-//   intersect  McdIntersect into the bridge's buffer; the group's old
-//              contacts are destroyed (contacts are re-made every step)
-//   convert    on touch: Intersect CB; the group on first touch; one
-//              MdtContact per collision contact with the materials' params
-//              (PerContact CB); PerPair CB; enabled iff it has contacts
+//   intersect  McdIntersect into the bridge's buffer, reporting contacts up
+//              to a speculative margin ahead of touching (below)
+//   convert    on touch: Intersect CB; the group on first touch; this
+//              step's contacts matched to the group's (contact_cache.h:
+//              a contact reported again keeps its MdtContact and impulses),
+//              each with the materials' params (PerContact CB); PerPair CB;
+//              the group enabled iff it has contacts
 // Body order: model1's body is body 0 unless model1 has none, in which
 // case model2's body is body 0 and every normal is negated (collision
 // normals point from model2 towards model1; MdtContact pushes body 0 along
 // +normal).
+//
+// Speculative margin. Contacts are asked for up to
+//     margin = tolerance + h * (|v1 - v2| + |w1| rho1 + |w2| rho2 + |g| h)
+// apart, with h the world's last step size, v, w the bodies' velocities and
+// rho how far a turn of a model moves its surface per radian (TurnReach):
+// the most the gap can close in the coming step. A contact found
+// apart has a negative penetration, and its normal row lets the gap close
+// within the step but no further (engine/mdt/bcl/contact.cpp).
+#include <cmath>
+
+#include "contact_cache.h"
 #include "mst_internal.h"
 
 using namespace karma::mst;
@@ -22,6 +35,56 @@ void ClearContacts(MdtContactGroupID g) {
     while (MdtContactID c = MdtContactGroupGetFirstContact(g)) MdtContactGroupDestroyContact(g, c);
 }
 
+// How far a turn of the model about its origin can move its surface
+// towards another shape, per radian: at most rho_out - rho_in, the largest
+// and smallest distances from the origin to the surface. Bounded here from
+// the geometry's own box (half its diagonal, less half its smallest side);
+// a sphere turning about its centre does not move its surface at all.
+MeReal TurnReach(McdModelID m) {
+    McdGeometryID g = McdModelGetGeometry(m);
+    if (McdGeometryGetType(g) == kMcdGeometryTypeSphere) return 0;
+    MeMatrix4 identity;
+    MeMatrix4TMMakeIdentity(identity);
+    MeVector3 lo, hi, d;
+    McdGeometryGetAABB(g, identity, lo, hi);
+    MeVector3Subtract(d, hi, lo);
+    const MeReal smallest = d[0] < d[1] ? (d[0] < d[2] ? d[0] : d[2]) : (d[1] < d[2] ? d[1] : d[2]);
+    const MeReal r = (MeReal)0.5 * (MeVector3Magnitude(d) - smallest);
+    return std::isfinite(r) && r > 0 ? r : 0;
+}
+
+// The most the two models' gap can close in the coming step (see the top).
+MeReal ClosingDistance(McdModelID m1, McdModelID m2, MdtWorldID world) {
+    const MeReal h = MdtWorldGetLastStepSize(world);
+    if (!(h > 0)) return 0;
+    MeVector3 v = {0, 0, 0}, g;
+    MeReal angular = 0;
+    const McdModelID models[2] = {m1, m2};
+    for (int k = 0; k < 2; ++k) {
+        MdtBodyID b = McdModelGetBody(models[k]);
+        if (!b || !MdtBodyIsEnabled(b)) continue;
+        MeVector3 vb, wb;
+        MdtBodyGetLinearVelocity(b, vb);
+        MdtBodyGetAngularVelocity(b, wb);
+        MeVector3MultiplyAdd(v, k == 0 ? 1 : -1, vb);
+        angular += MeVector3Magnitude(wb) * TurnReach(models[k]);
+    }
+    MdtWorldGetGravity(world, g);
+    const MeReal speed = MeVector3Magnitude(v) + angular + MeVector3Magnitude(g) * h;
+    const MeReal closing = h * speed;
+    return std::isfinite(closing) ? closing : 0;
+}
+
+// McdIntersect with the contact tolerance raised by `extra` for this call.
+int IntersectWithMargin(McdModelPair *pair, McdIntersectResult *r, MeReal extra) {
+    McdFrameworkID fw = McdModelGetFramework(pair->model1);
+    const MeReal tolerance = McdFrameworkGetContactTolerance(fw);
+    if (extra > 0) McdFrameworkSetContactTolerance(fw, tolerance + extra);
+    const int touch = McdIntersect(pair, r);
+    if (extra > 0) McdFrameworkSetContactTolerance(fw, tolerance);
+    return touch;
+}
+
 void Collide(McdModelPair *pair, MdtWorldID world, MstBridge *b) {
     McdModelID m1 = pair->model1, m2 = pair->model2;
     if (McdSpaceModelIsFrozen(m1) && McdSpaceModelIsFrozen(m2)) return;
@@ -29,38 +92,32 @@ void Collide(McdModelPair *pair, MdtWorldID world, MstBridge *b) {
     if (!b1 && !b2) return;
     const bool flip = b1 == nullptr;
     auto group = static_cast<MdtContactGroupID>(pair->responseData);
-    if (group) ClearContacts(group);
 
     McdIntersectResult r{};
     r.contacts = b->contacts;
     r.contactMaxCount = kContactBuffer;
     int count = 0;
     MaterialEntry *e = nullptr;
-    if (McdIntersect(pair, &r) && r.contactCount > 0) {
+    if (IntersectWithMargin(pair, &r, ClosingDistance(m1, m2, world)) && r.contactCount > 0) {
         e = Entry(b, McdModelGetMaterial(m1), McdModelGetMaterial(m2), "MstHandleCollisions");
         if (!e) e = &b->materials[0];  // (warned) an unknown material acts as the default
         count = (e->intersectCB && !e->intersectCB(&r)) ? 0 : r.contactCount;
     }
+    if (count > kContactBuffer) count = kContactBuffer;
     if (count > 0 && !group) {
         group = MdtContactGroupCreate(world);
         if (!group) return;  // the constraint pool is full (it warned)
         MdtContactGroupSetBodies(group, flip ? b2 : b1, flip ? nullptr : b2);
         pair->responseData = group;
     }
-    const MeReal sign = flip ? -1 : 1;
-    for (int i = 0; i < count && i < kContactBuffer; ++i) {
-        const McdContact &cc = r.contacts[i];
-        MdtContactID c = MdtContactGroupCreateContact(group);
-        if (!c) break;
-        MdtContactSetPosition(c, cc.position[0], cc.position[1], cc.position[2]);
-        MdtContactSetNormal(c, sign * cc.normal[0], sign * cc.normal[1], sign * cc.normal[2]);
-        MdtContactSetPenetration(c, -cc.separation);
-        MdtContactSetParams(c, &e->params);
-        if (e->perContactCB && !e->perContactCB(&r, &r.contacts[i], c))
-            MdtContactGroupDestroyContact(group, c);
-    }
-    if (group && count > 0 && e->perPairCB && !e->perPairCB(&r, group)) ClearContacts(group);
     if (!group) return;
+    if (count == 0) {
+        ClearContacts(group);
+    } else {
+        const MeReal reach = kMatchDistance * McdFrameworkGetLengthScale(McdModelGetFramework(m1));
+        MatchContacts(group, r.contacts, count, flip ? -1 : 1, e->params, reach, e->perContactCB, &r);
+        if (e->perPairCB && !e->perPairCB(&r, group)) ClearContacts(group);
+    }
     if (MdtContactGroupGetCount(group) > 0)
         MdtContactGroupEnable(group);
     else

@@ -152,6 +152,21 @@ MEPUBLIC void MEAPI MdtContactSetNext(const MdtContactID c, const MdtContactID n
 /* Normal force of the last step (>= 0 unless adhesive). */
 MEPUBLIC MeReal MEAPI MdtContactGetNormalForce(const MdtContactID c);
 
+/* ---- contact memory (an extension of this engine; not in Karma 1.2) --------
+ * A contact remembers the impulses of its last solve, the normal one and the
+ * friction one (as a world vector in its tangent plane), and the next solve
+ * starts from them: a collision bridge that keeps a contact alive from step
+ * to step (engine/mst/contact_cache.h) warm-starts the solver with it. The
+ * feature is the collision's identity for the contact (McdContact::feature),
+ * kept for that matching. */
+MEPUBLIC void MEAPI MdtContactSetFeature(const MdtContactID c, const MeU32 feature);
+MEPUBLIC MeU32 MEAPI MdtContactGetFeature(const MdtContactID c);
+/* Last solve's normal impulse (force times step, N s); its friction impulse
+ * into `friction` when not NULL. */
+MEPUBLIC MeReal MEAPI MdtContactGetImpulse(const MdtContactID c, MeVector3 friction);
+/* Forgets the impulses: the next solve starts this contact from zero. */
+MEPUBLIC void MEAPI MdtContactClearImpulse(const MdtContactID c);
+
 /* Enabled contacts touching a body (stand-alone or in enabled groups), in a
  * fixed order; NULL at the end. */
 MEPUBLIC MdtContactID MEAPI MdtBodyGetFirstContact(const MdtBodyID body);

@@ -100,6 +100,9 @@ MEPUBLIC void MEAPI MdtWorldDestroy(const MdtWorldID world);
 
 /* Advances every enabled body by stepSize seconds (> 0, finite). */
 MEPUBLIC void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize);
+/* The stepSize of the last MdtWorldStep, 0 before the first (an extension:
+ * the collision bridge sizes its speculative contacts with it). */
+MEPUBLIC MeReal MEAPI MdtWorldGetLastStepSize(const MdtWorldID world);
 
 MEPUBLIC void MEAPI MdtWorldSetGravity(const MdtWorldID world, const MeReal gx, const MeReal gy,
                                        const MeReal gz);

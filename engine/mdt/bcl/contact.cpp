@@ -3,14 +3,24 @@
 // Rows, at the contact point p (body 0's attachment point) with normal n
 // (from body 1 into body 0), in this order:
 //   normal     n . (v0 + w0 x r0 - v1 - w1 x r1) >= speed, force in
-//              [-maxAdhesive, inf), speed = max(gamma * depth / h,
+//              [-maxAdhesive, inf) (in [0, inf) while apart); softness =
+//              params.softness or epsilon;
+//              touching (depth >= 0): speed = max(gamma * depth / h,
 //              restitution * impact speed when the bodies approach faster
-//              than velThreshold); softness = params.softness or epsilon;
+//              than velThreshold);
+//              speculative (depth < 0, the shapes a gap g = -depth apart):
+//              speed = -g / h, so the bodies may close the gap within the
+//              step but no further (the row pushes only if they would);
+//              when they approach fast enough to close it within the step
+//              and restitution applies, speed = the restitution speed (the
+//              bounce starts up to g early instead of one step late);
 //   primary    along d1 (Friction1D and 2D), target speed slide1, softness
 //              slip1 / h (velocity = slip * force) or epsilon; force bound
 //              friction1 (Box) or frictionCoefficient1 * normal force
 //              (NormalForce, tied to the normal row);
 //   secondary  along d2 = n x d1 (Friction2D), likewise.
+// Warm start: each row starts from the contact's own memory of last step
+// (warmNormal; friction: warmFriction projected on d1 and d2).
 #include <cmath>
 
 #include "contact_internal.h"
@@ -27,6 +37,24 @@ void resetContact(MdtContact *c) {
   c->penetration = 0;
   c->next = nullptr;
   c->normalForce = 0;
+  c->feature = 0;
+  c->warmNormal = 0;
+  MeVector3Set(c->warmFriction, 0, 0, 0);
+}
+
+int contactRowCount(const MdtContact *c) { return 1 + (int)c->params.type; }
+
+int storeContactImpulses(MdtContact *c, const MeReal *impulse, int n) {
+  const int rows = contactRowCount(c) < n ? contactRowCount(c) : n;
+  c->warmNormal = rows > 0 ? impulse[0] : 0;
+  MeVector3Set(c->warmFriction, 0, 0, 0);
+  if (rows > 1) {
+    MeVector3 d1, d2;
+    contactDirections(c, d1, d2);
+    MeVector3MultiplyAdd(c->warmFriction, impulse[1], d1);
+    if (rows > 2) MeVector3MultiplyAdd(c->warmFriction, impulse[2], d2);
+  }
+  return rows;
 }
 
 void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2) {
@@ -51,6 +79,8 @@ void frictionRow(MdtContact *c, RowSink &sink, const StepContext &ctx, const Anc
   row.contact = c;
   row.depth = c->penetration;
   row.speed = slide;
+  row.warm = MeVector3Dot(c->warmFriction, d);
+  row.warmSet = true;
   if (slip > 0) row.softness = slip * ctx.invH;
   if (model == MdtFrictionModelNormalForce) {
     row.friction = normalRow;
@@ -78,14 +108,24 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
   n.role = RowRole::ContactNormal;
   n.contact = c;
   n.depth = c->penetration;
-  n.lo = prm.max_adhesive_force > 0 ? -prm.max_adhesive_force : 0;
+  // Adhesion holds touching bodies only: a speculative row never pulls.
+  n.lo = prm.max_adhesive_force > 0 && c->penetration >= 0 ? -prm.max_adhesive_force : 0;
   n.hi = MEINFINITY;
   if (prm.softness > 0) n.softness = prm.softness;
+  n.warm = c->warmNormal;
+  n.warmSet = true;
   const MeReal vrel = rowVelocity(c, n);  // > 0: separating
-  const MeReal correct = ctx.gamma * ctx.invH * c->penetration;
   const MeReal bounce =
       (prm.restitution > 0 && vrel < -prm.velThreshold) ? -prm.restitution * vrel : 0;
-  n.speed = bounce > correct ? bounce : correct;
+  if (c->penetration < 0) {
+    // Speculative: close the gap, no further; an impact within the step
+    // bounces at once.
+    const bool impact = -vrel * ctx.h >= -c->penetration;
+    n.speed = impact && bounce > 0 ? bounce : c->penetration * ctx.invH;
+  } else {
+    const MeReal correct = ctx.gamma * ctx.invH * c->penetration;
+    n.speed = bounce > correct ? bounce : correct;
+  }
   if (prm.type == MdtContactTypeFrictionZero) return;
   MeVector3 d1, d2;
   contactDirections(c, d1, d2);
@@ -107,7 +147,9 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }
 
 void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContext &ctx) {
-  as<MdtContact>(c)->normalForce = n > 0 ? impulse[0] * ctx.invH : 0;
+  auto *k = as<MdtContact>(c);
+  k->normalForce = n > 0 ? impulse[0] * ctx.invH : 0;
+  storeContactImpulses(k, impulse, n);
 }
 
 void destroy(MdtConstraint *c) {
@@ -192,6 +234,28 @@ MdtContactID MEAPI MdtContactGetNext(const MdtContactID c) {
 void MEAPI MdtContactSetNext(const MdtContactID c, const MdtContactID next) {
   if (!checkType(c, kContactType, "MdtContactSetNext")) return;
   c->next = next;
+}
+
+void MEAPI MdtContactSetFeature(const MdtContactID c, const MeU32 feature) {
+  if (!checkType(c, kContactType, "MdtContactSetFeature")) return;
+  c->feature = feature;
+}
+
+MeU32 MEAPI MdtContactGetFeature(const MdtContactID c) {
+  if (!checkType(c, kContactType, "MdtContactGetFeature")) return 0;
+  return c->feature;
+}
+
+MeReal MEAPI MdtContactGetImpulse(const MdtContactID c, MeVector3 friction) {
+  if (!checkType(c, kContactType, "MdtContactGetImpulse")) return 0;
+  if (friction) MeVector3Copy(friction, c->warmFriction);
+  return c->warmNormal;
+}
+
+void MEAPI MdtContactClearImpulse(const MdtContactID c) {
+  if (!checkType(c, kContactType, "MdtContactClearImpulse")) return;
+  c->warmNormal = 0;
+  MeVector3Set(c->warmFriction, 0, 0, 0);
 }
 
 MeReal MEAPI MdtContactGetNormalForce(const MdtContactID c) {

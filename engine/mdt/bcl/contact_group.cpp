@@ -38,7 +38,7 @@ void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContex
   for (MdtContact *k = g->first; k && r < n; k = k->next) {
     k->normalForce = impulse[r] * ctx.invH;
     g->normalForce += k->normalForce;
-    r += 1 + (int)k->params.type;  // FrictionZero 0, 1D 1, 2D 2 extra rows
+    r += storeContactImpulses(k, impulse + r, n - r);
   }
 }
 

@@ -13,6 +13,15 @@ struct MdtContact : MdtConstraint {
   MeReal penetration;
   MdtContact *next;     // the next contact of the pair / group
   MeReal normalForce;   // last step
+  // Identity of the collision features that made it (McdContact::feature),
+  // for the bridge's matching; 0 for contacts made by hand.
+  MeU32 feature;
+  // Memory for the next step's warm start: last step's normal impulse, and
+  // its friction impulse as a world vector in the tangent plane (so it
+  // survives a change of the friction directions: the new rows start from
+  // its projections onto them).
+  MeReal warmNormal;
+  MeVector3 warmFriction;
 };
 
 struct MdtContactGroup : MdtConstraint {
@@ -31,7 +40,13 @@ extern const ConstraintType kContactGroupType;
 void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx);
 // The friction directions in use: primary d1 and secondary d2 = n x d1.
 void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2);
-// Contact defaults (params, normal, penetration, no direction).
+// Contact defaults (params, normal, penetration, no direction, no memory).
 void resetContact(MdtContact *c);
+// Stores the impulses of one contact's rows (normal first, then friction in
+// the order addContactRows wrote them) as its warm-start memory; returns
+// the number of rows read.
+int storeContactImpulses(MdtContact *c, const MeReal *impulse, int n);
+// The number of rows addContactRows writes for c.
+int contactRowCount(const MdtContact *c);
 
 }  // namespace karma::mdt

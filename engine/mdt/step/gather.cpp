@@ -1,4 +1,5 @@
-// partition.cpp: gathering, partitioning and auto-disable (step stages 1-3).
+// gather.cpp: stage 1 of the step (step.h): the enabled bodies and
+// simulated constraints in sort-key order, and the partitions.
 #include <algorithm>
 #include <cmath>
 
@@ -82,11 +83,11 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
   }
   for (int i = 0; i < nb; ++i) s.adjStart[(size_t)i + 1] += s.adjStart[(size_t)i];
   s.adj.assign((size_t)s.adjStart[(size_t)nb], 0);
-  std::vector<int> fill(s.adjStart.begin(), s.adjStart.end() - 1);
+  s.adjFill.assign(s.adjStart.begin(), s.adjStart.end() - 1);
   for (int ci = 0; ci < nc; ++ci) {
     MdtConstraint *c = s.constraints[(size_t)ci];
     for (int k = 0; k < 2; ++k)
-      if (c->body[k]) s.adj[(size_t)fill[(size_t)c->body[k]->index]++] = ci;
+      if (c->body[k]) s.adj[(size_t)s.adjFill[(size_t)c->body[k]->index]++] = ci;
   }
 
   // Breadth-first search from each unvisited body in sorted order. Within a
@@ -94,7 +95,7 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
   s.partitions.clear();
   s.partBodies.clear();
   s.partConstraints.clear();
-  std::vector<MdtConstraint *> found;
+  std::vector<MdtConstraint *> &found = s.found;
   for (int start = 0; start < nb; ++start) {
     MdtBody *seed = s.bodies[(size_t)start];
     if (seed->mark >= 0) continue;
@@ -126,42 +127,6 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
     part.constraintCount = (int)s.partConstraints.size() - part.constraintStart;
     s.partitions.push_back(part);
   }
-}
-
-namespace {
-
-bool idle(const MdtBody *b, const MdtWorldParams &w) {
-  return MeVector3Magnitude(b->velocity) < w.velocityThreshold &&
-         MeVector3Magnitude(b->angularVelocity) < w.angularVelocityThreshold &&
-         MeVector3Magnitude(b->acceleration) < w.accelerationThreshold &&
-         MeVector3Magnitude(b->angularAcceleration) < w.angularAccelerationThreshold;
-}
-
-}  // namespace
-
-bool autoDisablePartition(MdtWorldID world, StepScratch &s, const Partition &part, MeReal h) {
-  const MdtWorldParams &w = world->params;
-  bool sleepy = true;
-  for (int i = 0; i < part.bodyCount; ++i) {
-    MdtBody *b = s.partBodies[(size_t)(part.bodyStart + i)];
-    if (idle(b, w))
-      b->idleTime += h;
-    else
-      b->idleTime = 0;
-    if (b->idleTime < w.aliveWindow) sleepy = false;
-  }
-  if (!w.autoDisable || !sleepy) return false;
-  // Asleep: at rest exactly, so waking up starts from rest. Constraint
-  // forces keep their last values.
-  for (int i = 0; i < part.bodyCount; ++i) {
-    MdtBody *b = s.partBodies[(size_t)(part.bodyStart + i)];
-    MdtBodyDisable(b);
-    MeVector3Set(b->velocity, 0, 0, 0);
-    MeVector3Set(b->angularVelocity, 0, 0, 0);
-    MeVector3Set(b->acceleration, 0, 0, 0);
-    MeVector3Set(b->angularAcceleration, 0, 0, 0);
-  }
-  return true;
 }
 
 }  // namespace karma::mdt

@@ -31,11 +31,12 @@ MdtConstraint *groupOf(MdtConstraint *contact) {
 
 }  // namespace
 
-void capRows(MdtWorldID world, StepScratch &s, int rowCount, int maxRows) {
+void capRows(MdtWorldID world, std::span<const Row> rows, std::span<char> keep, int maxRows) {
+  const int rowCount = (int)rows.size();
   MdtContactImportanceCBPtr importance = world->priv->importance;
   std::vector<Candidate> cand;
   for (int r = 0; r < rowCount; ++r) {
-    const Row &row = s.rows[(size_t)r];
+    const Row &row = rows[(size_t)r];
     if (row.role != RowRole::ContactNormal && row.role != RowRole::ContactFriction) continue;
     if (!row.contact) continue;
     Candidate c;
@@ -71,16 +72,16 @@ void capRows(MdtWorldID world, StepScratch &s, int rowCount, int maxRows) {
       if (left <= 1) continue;
       --left;
       // Its friction rows (if any survived) go with it.
-      const MdtConstraint *contact = s.rows[(size_t)c.row].contact;
+      const MdtConstraint *contact = rows[(size_t)c.row].contact;
       for (int r = 0; r < rowCount; ++r) {
-        const Row &row = s.rows[(size_t)r];
-        if (row.contact == contact && row.role == RowRole::ContactFriction && s.keep[(size_t)r]) {
-          s.keep[(size_t)r] = 0;
+        const Row &row = rows[(size_t)r];
+        if (row.contact == contact && row.role == RowRole::ContactFriction && keep[(size_t)r]) {
+          keep[(size_t)r] = 0;
           --kept;
         }
       }
     }
-    s.keep[(size_t)c.row] = 0;
+    keep[(size_t)c.row] = 0;
     --kept;
   }
 }

@@ -1,0 +1,36 @@
+// apply.cpp: stage 6 of the step (step.h). Each constraint's rows give the
+// impulse J^T lambda on its two bodies: added to the bodies' velocities,
+// stored as the constraint's force and torque (impulse / h), and kept as
+// its warm-start memory for the next step (row by row, up to kMaxWarmRows;
+// contacts keep theirs in their own frame through afterSolve). Rows that
+// capping dropped count as zero impulse.
+#include "step.h"
+
+namespace karma::mdt {
+
+void applyImpulses(StepScratch &s, const Partition &part, const PartitionRows &rows,
+                   std::span<const MeReal> lambda, const StepContext &ctx) {
+  std::span<MeReal> all = s.arena.take<MeReal>((size_t)rows.count);
+  for (int r = 0; r < rows.count; ++r) {
+    const int k = rows.solveIndex[(size_t)r];
+    all[(size_t)r] = k >= 0 ? lambda[(size_t)k] : 0;
+  }
+  for (int i = 0; i < part.constraintCount; ++i) {
+    MdtConstraint *c = s.partConstraints[(size_t)(part.constraintStart + i)];
+    const int r0 = rows.constraintRowStart[(size_t)i], r1 = rows.constraintRowStart[(size_t)i + 1];
+    MeVector3 imp[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    for (int r = r0; r < r1; ++r)
+      for (int q = 0; q < 4; ++q) MeVector3MultiplyAdd(imp[q], all[(size_t)r], rows.rows[(size_t)r].J[q]);
+    for (int k = 0; k < 2; ++k) {
+      MeVector3MultiplyScalar(c->force[k], imp[2 * k], ctx.invH);
+      MeVector3MultiplyScalar(c->torque[k], imp[2 * k + 1], ctx.invH);
+      MdtBody *bk = c->body[k];
+      if (bk && bk->enabled) applyImpulse(bk, imp[2 * k], imp[2 * k + 1]);
+    }
+    c->warmRows = r1 - r0 <= kMaxWarmRows ? r1 - r0 : 0;
+    for (int r = r0; r < r0 + c->warmRows; ++r) c->warm[r - r0] = all[(size_t)r];
+    if (c->type->afterSolve) c->type->afterSolve(c, all.data() + r0, r1 - r0, ctx);
+  }
+}
+
+}  // namespace karma::mdt

@@ -1,0 +1,110 @@
+// assemble.cpp: stage 4 of the step (step.h): the body-space problem
+// (problem.h) of a partition's kept rows.
+//
+//   body side   invMass and the world-frame inverse inertia of each body;
+//   row side    J, softness, and
+//     rhs   = speed - J v*            (v*: the predicted velocities),
+//     lo/hi = force bounds * h        (+-MEINFINITY stay unbounded),
+//     friction: the kept index of its normal row; if capping dropped the
+//               normal row, the friction row is pinned at zero instead;
+//     warm  = the row's own warm value (Row::warmSet: contacts), else the
+//             constraint's row-by-row memory when it wrote as many rows
+//             last step, else 0.
+#include "kernels.h"
+#include "step.h"
+
+namespace karma::mdt {
+
+namespace {
+
+int bodyIndex(const MdtBody *b) { return b && b->enabled ? b->index : -1; }
+
+void fillBodies(StepScratch &s, const Partition &part, BodySpaceProblem &p) {
+  std::span<MeReal> invMass = s.arena.take<MeReal>((size_t)part.bodyCount);
+  std::span<MeReal> invInertia = s.arena.take<MeReal>((size_t)part.bodyCount * 9);
+  for (int i = 0; i < part.bodyCount; ++i) {
+    const MdtBody *b = s.partBodies[(size_t)(part.bodyStart + i)];
+    invMass[(size_t)i] = b->invMass;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) invInertia[(size_t)(i * 9 + r * 3 + c)] = b->invInertiaWorld[r][c];
+  }
+  p.bodyCount = part.bodyCount;
+  p.invMass = invMass;
+  p.invInertia = invInertia;
+}
+
+// J v* of one row.
+MeReal rowVelocityPredicted(const Row &row, const MdtConstraint *c) {
+  const platform::Kernels &kern = platform::ActiveKernels();
+  MeReal jv = 0;
+  if (bodyIndex(c->body[0]) >= 0)
+    jv += kern.rowPairEntry(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
+  if (bodyIndex(c->body[1]) >= 0)
+    jv += kern.rowPairEntry(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
+  return jv;
+}
+
+}  // namespace
+
+BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const PartitionRows &rows,
+                                 const StepContext &ctx) {
+  BodySpaceProblem p;
+  fillBodies(s, part, p);
+  const size_t m = (size_t)rows.kept;
+  p.rowCount = rows.kept;
+  std::span<int> body0 = s.arena.take<int>(m), body1 = s.arena.take<int>(m);
+  std::span<int> friction = s.arena.take<int>(m);
+  std::span<MeReal> J = s.arena.take<MeReal>(m * 12);
+  std::span<MeReal> rhs = s.arena.take<MeReal>(m), softness = s.arena.take<MeReal>(m);
+  std::span<MeReal> lo = s.arena.take<MeReal>(m), hi = s.arena.take<MeReal>(m);
+  std::span<MeReal> mu = s.arena.take<MeReal>(m), warm = s.arena.take<MeReal>(m);
+  for (int i = 0; i < part.constraintCount; ++i) {
+    const MdtConstraint *c = s.partConstraints[(size_t)(part.constraintStart + i)];
+    const int r0 = rows.constraintRowStart[(size_t)i], r1 = rows.constraintRowStart[(size_t)i + 1];
+    const bool memoryFits = c->warmRows == r1 - r0;
+    for (int r = r0; r < r1; ++r) {
+      const int k = rows.solveIndex[(size_t)r];
+      if (k < 0) continue;
+      const size_t kk = (size_t)k;
+      const Row &row = rows.rows[(size_t)r];
+      body0[kk] = bodyIndex(c->body[0]);
+      body1[kk] = bodyIndex(c->body[1]);
+      for (int q = 0; q < 4; ++q)
+        for (int e = 0; e < 3; ++e) J[kk * 12 + (size_t)(q * 3 + e)] = row.J[q][e];
+      rhs[kk] = row.speed - rowVelocityPredicted(row, c);
+      softness[kk] = row.softness;
+      lo[kk] = row.lo <= -MEINFINITY ? -MEINFINITY : row.lo * ctx.h;
+      hi[kk] = row.hi >= MEINFINITY ? MEINFINITY : row.hi * ctx.h;
+      friction[kk] = -1;
+      mu[kk] = 0;
+      if (row.friction >= 0) {
+        const int normal = rows.solveIndex[(size_t)(r0 + row.friction)];
+        if (normal >= 0) {
+          friction[kk] = normal;
+          mu[kk] = row.mu;
+          p.anyFriction = true;
+        } else {
+          lo[kk] = hi[kk] = 0;  // its normal row was capped away
+        }
+      }
+      if (row.warmSet)
+        warm[kk] = row.warm;
+      else
+        warm[kk] = memoryFits && r - r0 < kMaxWarmRows ? c->warm[r - r0] : 0;
+      p.anyWarm = p.anyWarm || warm[kk] != 0;
+    }
+  }
+  p.body0 = body0;
+  p.body1 = body1;
+  p.J = J;
+  p.rhs = rhs;
+  p.softness = softness;
+  p.lo = lo;
+  p.hi = hi;
+  p.friction = friction;
+  p.mu = mu;
+  p.warm = warm;
+  return p;
+}
+
+}  // namespace karma::mdt

@@ -1,0 +1,74 @@
+// collect_rows.cpp: stage 3 of the step (step.h). Every constraint of the
+// partition writes its rows through the row protocol (constraint.h) into
+// one array, constraint after constraint. A constraint whose rows are not
+// all finite is dropped for this step (with a warning), so one bad joint
+// cannot poison the partition. Then matrix capping (capping.cpp) marks
+// the rows to leave out, and each kept row gets its index in the solve.
+#include <cmath>
+
+#include "MeMessage.h"
+#include "step.h"
+
+namespace karma::mdt {
+
+namespace {
+
+int rowCapacity(const MdtConstraint *c) {
+  return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows;
+}
+
+bool allFinite(const Row *rows, int n) {
+  bool finite = true;
+  for (int r = 0; r < n; ++r) {
+    const Row &row = rows[r];
+    for (int k = 0; k < 4; ++k) finite = finite && MeVector3AllFinite(row.J[k]);
+    finite = finite && std::isfinite(row.speed) && std::isfinite(row.softness);
+  }
+  return finite;
+}
+
+// Writes constraint c's rows at rows[n...]; returns how many it kept.
+int writeRows(MdtConstraint *c, Row *rows, const StepContext &ctx) {
+  RowSink sink(rows, rowCapacity(c));
+  c->type->addRows(c, sink, ctx);
+  if (sink.overflowed())
+    MeWarning(0, "MdtWorldStep: a %s wrote more rows than it declared; extra rows dropped",
+              c->type->name);
+  if (!allFinite(sink.rows(), sink.count())) {
+    MeWarning(0, "MdtWorldStep: a %s produced non-finite rows; it was skipped this step",
+              c->type->name);
+    return 0;
+  }
+  return sink.count();
+}
+
+}  // namespace
+
+PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &part,
+                          const StepContext &ctx) {
+  const int nc = part.constraintCount;
+  MdtConstraint *const *cons = s.partConstraints.data() + part.constraintStart;
+  int capacity = 0;
+  for (int i = 0; i < nc; ++i) capacity += rowCapacity(cons[i]);
+  PartitionRows out;
+  out.rows = s.arena.take<Row>((size_t)capacity);
+  out.constraintRowStart = s.arena.take<int>((size_t)nc + 1);
+  int n = 0;
+  out.constraintRowStart[0] = 0;
+  for (int i = 0; i < nc; ++i) {
+    n += writeRows(cons[i], out.rows.data() + n, ctx);
+    out.constraintRowStart[(size_t)i + 1] = n;
+  }
+  out.count = n;
+  out.rows = out.rows.first((size_t)n);
+  out.keep = s.arena.filled<char>((size_t)n, 1);
+  const int maxRows = world->params.maxMatrixSize;
+  if (maxRows > 0 && n > maxRows) capRows(world, out.rows, out.keep, maxRows);
+  out.solveIndex = s.arena.take<int>((size_t)n);
+  int m = 0;
+  for (int r = 0; r < n; ++r) out.solveIndex[(size_t)r] = out.keep[(size_t)r] ? m++ : -1;
+  out.kept = m;
+  return out;
+}
+
+}  // namespace karma::mdt

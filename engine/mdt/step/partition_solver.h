@@ -1,0 +1,46 @@
+// partition_solver.h: the interface between the step and its solvers. Not
+// installed.
+//
+// A partition solver receives one partition's body-space problem
+// (problem.h) and writes one impulse per row. It may take scratch from the
+// step arena (given back after the partition) and keep its own memory
+// across steps, but it must not allocate from the heap once problems stop
+// growing. Contract of the answer: the LCP of problem.h solved to the
+// settings' tolerance, or the best iterate found when a limit stops it
+// (report.solved false); on bad input, all impulses zero and
+// report.badInput. Solvers today: the exact active-set method (Kea) and
+// projected Gauss-Seidel (Kea's PGS), both on the assembled matrix A.
+#pragma once
+
+#include "arena.h"
+#include "problem.h"
+
+namespace karma::mdt {
+
+struct SolverSettings {
+  int maxIterations = 0;  // 0: the solver's default
+  MeReal tolerance = 0;   // 0: the solver's default
+};
+
+struct SolveReport {
+  int iterations = 0;
+  MeReal residual = 0;
+  bool solved = true;
+  bool badInput = false;
+};
+
+class PartitionSolver {
+ public:
+  virtual ~PartitionSolver() = default;
+  virtual const char *name() const = 0;
+  // lambda: rowCount values, written.
+  virtual SolveReport solve(const BodySpaceProblem &problem, const SolverSettings &settings,
+                            StepArena &arena, std::span<MeReal> lambda) = 0;
+};
+
+// The solvers the world can choose (MdtWorldSetKeaMethod): each lives as
+// long as the world's step scratch.
+PartitionSolver *CreateKeaActiveSetSolver();
+PartitionSolver *CreateKeaPgsSolver();
+
+}  // namespace karma::mdt

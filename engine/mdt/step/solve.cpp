@@ -1,0 +1,23 @@
+// solve.cpp: stage 5 of the step (step.h): the world's partition solver
+// (MdtWorldSetKeaMethod chooses which) finds the kept rows' impulses, and
+// the step stats record what it cost.
+#include "step.h"
+
+namespace karma::mdt {
+
+std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpaceProblem &problem) {
+  std::span<MeReal> lambda = s.arena.take<MeReal>((size_t)problem.rowCount);
+  if (problem.rowCount == 0) return lambda;
+  const MdtWorldParams &params = world->params;
+  PartitionSolver *solver = params.keaMethod == MdtKeaMethodPGS ? s.pgs : s.activeSet;
+  SolverSettings settings;
+  settings.maxIterations = params.keaMaxIterations;
+  settings.tolerance = params.keaTolerance;
+  const SolveReport report = solver->solve(problem, settings, s.arena, lambda);
+  s.stats.keaIterations += report.iterations;
+  if (!report.solved) ++s.stats.keaUnsolved;
+  if (report.residual > s.stats.keaResidual) s.stats.keaResidual = report.residual;
+  return lambda;
+}
+
+}  // namespace karma::mdt

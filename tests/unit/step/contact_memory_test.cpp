@@ -1,0 +1,116 @@
+// Contacts with memory (engine/mst/contact_cache.h): a contact the
+// collision reports again keeps its MdtContact, its place in the group and
+// its impulses; new contacts start from zero; lost ones go.
+#include <cmath>
+
+#include "step_scene.h"
+#include "support/warning_capture.h"
+
+namespace {
+
+using step_test::Contacts;
+using step_test::kG;
+using step_test::kH;
+using step_test::Scene;
+using karma_test::WarningCapture;
+
+// A 1 m box of `mass` kg resting on the ground, settled for `steps`.
+McdModelID RestingBox(Scene &s, MeReal mass, int steps) {
+  McdModelID b = s.box(1, 1, 1, 0, (MeReal)0.5, 0, mass);  // density = mass for 1 m^3
+  s.step(steps);
+  return b;
+}
+
+TEST(ContactMemory, ARestingBoxKeepsItsFourContactsAndTheirOrder) {
+  Scene s;
+  McdModelID b = RestingBox(s, 10, 30);
+  MdtContactID first[8], later[8];
+  const int n = Contacts(b, first, 8);
+  ASSERT_EQ(n, 4);
+  for (int i = 0; i < 50; ++i) {
+    s.step();
+    ASSERT_EQ(Contacts(b, later, 8), 4) << "step " << i;
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(later[k], first[k]) << "step " << i << ", contact " << k;
+  }
+}
+
+TEST(ContactMemory, TheImpulsesOfARestingBoxAreItsWeightShared) {
+  Scene s;
+  const MeReal mass = 10;
+  McdModelID b = RestingBox(s, mass, 60);
+  MdtContactID c[8];
+  const int n = Contacts(b, c, 8);
+  ASSERT_EQ(n, 4);
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    MeVector3 friction;
+    const MeReal normal = MdtContactGetImpulse(c[k], friction);
+    EXPECT_GT(normal, 0);
+    EXPECT_LT(MeVector3Magnitude(friction), 1e-3 * mass * kG * kH);  // nothing pushes sideways
+    EXPECT_NEAR(normal, MdtContactGetNormalForce(c[k]) * kH, 1e-5 * mass * kG * kH);
+    sum += normal;
+  }
+  // The four impulses carry the weight over the step: m g h, within 0.5%.
+  EXPECT_NEAR(sum, mass * kG * kH, 5e-3 * mass * kG * kH);
+}
+
+TEST(ContactMemory, ClearedImpulsesAreZeroAndTheNextStepRestoresThem) {
+  Scene s;
+  McdModelID b = RestingBox(s, 10, 60);
+  MdtContactID c[8];
+  ASSERT_EQ(Contacts(b, c, 8), 4);
+  const MeReal before = MdtContactGetImpulse(c[0], nullptr);
+  MdtContactClearImpulse(c[0]);
+  EXPECT_EQ(MdtContactGetImpulse(c[0], nullptr), 0);
+  s.step();
+  EXPECT_NEAR(MdtContactGetImpulse(c[0], nullptr), before, 1e-3 * std::fabs(before));
+}
+
+TEST(ContactMemory, ANewContactStartsFromZeroAndALostOneIsDestroyed) {
+  Scene s;
+  // A ball rolling off a block's edge: it loses the block, then meets the
+  // ground with a new contact.
+  McdModelID ball = s.ball((MeReal)0.25, 0, 3, 0);
+  s.step(1);
+  MdtContactID c[8];
+  EXPECT_EQ(Contacts(ball, c, 8), 0);  // in the air
+  int steps = 0;
+  while (Contacts(ball, c, 8) == 0 && steps < 200) {
+    s.step();
+    ++steps;
+  }
+  ASSERT_EQ(Contacts(ball, c, 8), 1);
+  // Its first solve started from zero, so its memory now is this step's.
+  EXPECT_GE(MdtContactGetImpulse(c[0], nullptr), 0);
+  MdtBodySetLinearVelocity(McdModelGetBody(ball), 0, 20, 0);  // thrown up
+  s.step(3);
+  EXPECT_EQ(Contacts(ball, c, 8), 0);
+}
+
+TEST(ContactMemory, FeaturesComeFromTheCollision) {
+  Scene s;
+  McdModelID b = RestingBox(s, 10, 10);
+  MdtContactID c[8];
+  ASSERT_EQ(Contacts(b, c, 8), 4);
+  // Each contact knows which features made it; a face-on-plane rest has a
+  // distinct identity per corner, or none at all (then position matches).
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (MdtContactGetFeature(c[i]) != 0) {
+        EXPECT_NE(MdtContactGetFeature(c[i]), MdtContactGetFeature(c[j]));
+      }
+}
+
+TEST(ContactMemory, BadArgumentsWarnAndDoNothing) {
+  WarningCapture warnings;
+  MeVector3 f = {1, 2, 3};
+  EXPECT_EQ(MdtContactGetImpulse(nullptr, f), 0);
+  EXPECT_EQ(f[0], 1);  // untouched
+  EXPECT_EQ(MdtContactGetFeature(nullptr), 0u);
+  MdtContactClearImpulse(nullptr);
+  MdtContactSetFeature(nullptr, 7);
+  EXPECT_EQ(warnings.count(), 4u);
+  EXPECT_TRUE(warnings.saw("MdtContactGetImpulse"));
+}
+
+}  // namespace
