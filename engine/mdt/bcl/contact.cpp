@@ -1,7 +1,8 @@
 // contact.cpp: the contact constraint.
 //
-// Rows, at the contact point p (body 0's attachment point) with normal n
-// (from body 1 into body 0), in this order:
+// Rows, at the contact point p (body 0's attachment point; against the world,
+// body 0's surface point p - (depth/2) n) with normal n (from body 1 into
+// body 0), in this order:
 //   normal     n . (v0 + w0 x r0 - v1 - w1 x r1) >= speed, force in
 //              [-maxAdhesive, inf) (in [0, inf) while apart); softness =
 //              params.softness or epsilon;
@@ -94,8 +95,15 @@ void frictionRow(MdtContact *c, RowSink &sink, const StepContext &ctx, const Anc
 }  // namespace
 
 void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
+  // Against the world, the body acts at its own surface point: the contact
+  // position lies midway between the surfaces, depth d apart along n, so
+  // body 0's point is p - (d/2) n. Friction then turns it about its true
+  // lever arm (a wheel sunk by the contact's softness still rolls with its
+  // radius). Between two bodies both act at p: equal and opposite impulses
+  // on one line keep the pair's angular momentum.
   Anchors a;
   attachmentPoint(c, 0, a.p[0]);
+  if (!c->body[1]) MeVector3MultiplyAdd(a.p[0], -(MeReal)0.5 * c->penetration, c->normal);
   MeVector3Copy(a.p[1], a.p[0]);
   for (int i = 0; i < 2; ++i) {
     MeVector3 x;

@@ -51,4 +51,14 @@ TEST(WarmStart, ARestingToppleSceneNeedsAboutOneSolveAPartition) {
   EXPECT_LE(solves, 2.0);
 }
 
+TEST(WarmStart, TheCarRollsAtTheSpeedRollingWithoutSlipPredicts) {
+  // SCENES.md: v(5 s) = 16.18 m/s. The wheels sink into the ground by the
+  // contacts' softness (about 8 mm at the default epsilon); acting at the
+  // wheel's own surface point, friction keeps the rolling radius 0.3 m.
+  auto scene = karma::scenes::MakeCar();
+  const karma::scenes::SceneFigures f = scene->run();
+  std::printf("car at 5 s: %s\n", f.detail.c_str());
+  EXPECT_NEAR(f.carVelocity, 16.18, 0.005 * 16.18);
+}
+
 }  // namespace
