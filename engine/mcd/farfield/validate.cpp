@@ -67,7 +67,7 @@ bool AxisSortSpace::Validate() const {
     for (const PairRecord *r : *list) {
       auto it = entries.find(SlotPairKey(r->proxyA, r->proxyB));
       if (it == entries.end() || it->second != r->index) return Fail("a reported record without its entry");
-      if (Rank(r->proxyA).Packed() >= Rank(r->proxyB).Packed()) return Fail("proxyA does not rank before proxyB");
+      if (r->Order().first >= r->Order().second) return Fail("proxyA does not rank before proxyB");
     }
   }
   if (pairs_.InUse() != static_cast<int>(goodbyes_.size() + hellos_.size() + stayings_.size())) {
