@@ -77,6 +77,13 @@ void PlaceInstance(McdGeometryInstance *inst, MECONSTMATRIX MeMatrix4 tm);
 // The touch tolerance of the framework (see McdFrameworkGetContactTolerance).
 MeReal ContactTolerance(const McdFramework *fw);
 
+// The key a model's pairs are ordered by: its own sort key once
+// McdModelSetSortKey was called, else its inherited key (0 by default).
+MeI32 EffectiveSortKey(const McdModel *m);
+// Hands the model's effective key to its space, if it is in one
+// (space_models.cpp).
+void RefreshSpaceSortKey(McdModel *m);
+
 }  // namespace karma::mcd
 
 // Aggregate layout (shared by aggregate.cpp, instance.cpp and mass code).
@@ -112,7 +119,10 @@ struct McdModel {
     MeReal *angularVelocity;
     void *space;
     int spaceIndex;
-    int sortKey;
+    int sortKey;                   // McdModelSetSortKey's key
+    int sortKeySet;                // 1 once McdModelSetSortKey was called
+    MeI32 inheritedSortKey;        // McdModelSetInheritedSortKey's key (Mst: the body's)
+    MeReal boundsPadding;          // McdModelSetBoundsPadding's margin, >= 0
     int updated;                   // 1 once McdModelUpdate cached an AABB
 };
 

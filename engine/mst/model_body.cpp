@@ -16,7 +16,9 @@ void MEAPI BodyEnableHandler(MdtBodyID body, MeBool enabled, void *) {
         McdSpaceUnfreezeModel(model);
     } else if (!McdSpaceModelIsFrozen(model)) {
         // Freeze it where the body came to rest (the space's AABB is from
-        // before this step's integration) when the space allows an update.
+        // before this step's integration) when the space allows an update;
+        // a model at rest needs no bounds padding beyond the tolerance.
+        McdModelSetBoundsPadding(model, 0);
         if (McdSpaceIsChanging(space)) McdSpaceUpdateModel(model);
         McdSpaceFreezeModel(model);
     }

@@ -39,5 +39,9 @@ MaterialEntry *Entry(MstBridge *b, MstMaterialID m1, MstMaterialID m2, const cha
 // its pairs and saying McdGoodbye to them, so the goodbyes that follow no
 // longer need the model or its body. Warns (naming fn) outside a block.
 bool RemoveModelAndItsContacts(McdModelID model, const char *fn);
+// Before a universe step of size h: each model in the universe's space
+// inherits its body's sort key and gets its bounds padding for the step
+// (the rules are in step_bounds.cpp).
+void PrepareModelsForStep(MstUniverseID u, MeReal h);
 
 }  // namespace karma::mst

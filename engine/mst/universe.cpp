@@ -1,5 +1,10 @@
 // universe.cpp: MstUniverseSizes and their defaults (Appendix A), creating,
 // stepping and destroying a universe, the getters.
+//
+// A step: the models take their bodies' sort keys and their bounds padding
+// for the step (PrepareModelsForStep, step_bounds.cpp), the space updates
+// every unfrozen model's box, the bridge turns the pairs into contacts, and
+// the world steps.
 #include "mst_internal.h"
 
 extern "C" {
@@ -66,6 +71,7 @@ void MEAPI MstUniverseDestroy(MstUniverseID u) {
 
 void MEAPI MstUniverseStep(MstUniverseID u, MeReal stepSize) {
     ME_REQUIRE_ARG(u != nullptr, "MstUniverseStep", "universe is NULL");
+    karma::mst::PrepareModelsForStep(u, stepSize);
     McdSpaceUpdateAll(u->space);
     MstBridgeUpdateContacts(u->bridge, u->space, u->world);
     MdtWorldStep(u->world, stepSize);

@@ -84,9 +84,31 @@ MEPUBLIC int MEAPI McdModelGetMaterial(McdModelID model);
 MEPUBLIC void MEAPI McdModelSetUserData(McdModelID model, void *data);
 MEPUBLIC void *MEAPI McdModelGetUserData(McdModelID model);
 
-/* Sort key in [0, 2^15 - 1] (determinism of the pair order); default 0. */
+/* Sort key in [0, 2^15 - 1]; default 0. A space orders its pairs, and the
+ * two models inside each pair (model1 first), by their models' keys; only
+ * between equal keys does the earlier insertion come first (the rule is in
+ * farfield/axis_sort_space.h, "Pair order"). Takes effect at the space's
+ * next McdSpaceEndChanges. */
 MEPUBLIC void MEAPI McdModelSetSortKey(McdModelID model, int key);
 MEPUBLIC int MEAPI McdModelGetSortKey(McdModelID model);
+/* Karma extension. The key a model is ordered by while McdModelSetSortKey
+ * has never been called on it (>= 0, default 0). MstUniverseStep gives each
+ * model with a body its body's key (MdtBodyGetSortKey) this way, so keys set
+ * on bodies alone also order the collision pairs; a key set on the model
+ * itself always wins. */
+MEPUBLIC void MEAPI McdModelSetInheritedSortKey(McdModelID model, MeI32 key);
+MEPUBLIC MeI32 MEAPI McdModelGetInheritedSortKey(McdModelID model);
+
+/* Karma extension. Bounds padding: the box a space sorts a model by is its
+ * AABB (or the space's AABB function's box) grown on every side by the
+ * framework's contact tolerance plus `margin` (>= 0, default 0), read at
+ * each McdSpaceUpdateModel / McdSpaceUpdateAll. So the space pairs models
+ * up to a gap of twice the tolerance (the nearfield reports contacts up to
+ * one tolerance), and up to the margins more. Before each step,
+ * MstUniverseStep sets the margin of each model with an enabled body to a
+ * bound on how far the model can move in that step (0 for the others). */
+MEPUBLIC void MEAPI McdModelSetBoundsPadding(McdModelID model, MeReal margin);
+MEPUBLIC MeReal MEAPI McdModelGetBoundsPadding(McdModelID model);
 
 /* Bodies. McdModelSetBody is implemented by Mst (see the top of the file). */
 MEPUBLIC void MEAPI McdModelSetBody(McdModelID model, MdtBodyID body);

@@ -1,15 +1,20 @@
 /* McdSpace.h: the collision farfield, an axis-sorted space of models.
  *
  * A space keeps the models inserted in it sorted along the chosen axes and
- * reports the pairs whose AABBs overlap (touching counts) as McdModelPairs:
+ * reports the pairs whose boxes overlap (touching counts) as McdModelPairs;
+ * a model's box is its AABB grown by the framework's contact tolerance and
+ * its bounds padding (McdModelSetBoundsPadding):
  *   hello    overlapping now, not at the previous McdSpaceEndChanges
  *   staying  overlapping now and before: the SAME McdModelPair as its hello
  *   goodbye  reported before, not now: the overlap ended, a model was
  *            removed, the pair was disabled or culled, or both models froze
  * Every hello is matched by exactly one goodbye; a goodbye pair is valid
  * until the next McdSpaceBeginChanges, after which the space reuses it.
- * A hello pair has model1 inserted before model2; userData and
- * responseData are NULL at hello.
+ * A hello pair has model1 before model2 in the space's order: the lower
+ * sort key (McdModelSetSortKey), or between equal keys the earlier
+ * insertion; the goodbye, hello and staying ranges each list their pairs in
+ * that order, by model1 then model2. userData and responseData are NULL at
+ * hello.
  *
  * Change blocks (the guide's validity tables). Inside a block
  * (McdSpaceIsChanging true): Insert*, RemoveModel, UpdateModel(s),

@@ -103,6 +103,26 @@ std::uint32_t AxisSortSpace::ProxySerial(ProxyId id) const {
   return IsProxy(id) ? proxies_[static_cast<std::size_t>(id)].serial : 0;
 }
 
+ProxyRank AxisSortSpace::Rank(ProxyId id) const {
+  if (!IsProxy(id)) return {};
+  const Proxy &p = proxies_[static_cast<std::size_t>(id)];
+  return {p.key, p.serial};
+}
+
+bool AxisSortSpace::SetKey(ProxyId id, std::uint32_t key) {
+  if (!CheckProxy(id, "McdModelSetSortKey")) return false;
+  Proxy &p = proxies_[static_cast<std::size_t>(id)];
+  if (p.key != key) {
+    p.key = key;
+    keysChanged_ = true;
+  }
+  return true;
+}
+
+std::uint32_t AxisSortSpace::Key(ProxyId id) const {
+  return IsProxy(id) ? proxies_[static_cast<std::size_t>(id)].key : 0;
+}
+
 bool AxisSortSpace::GetAabb(ProxyId id, MeReal min[3], MeReal max[3]) const {
   if (!CheckProxy(id, "McdModelGetAABB")) return false;
   const Proxy &p = proxies_[static_cast<std::size_t>(id)];

@@ -44,9 +44,23 @@
 // proxy produces the goodbyes of its pairs; destroying the space does not).
 // An overlap that starts and ends within one change block is never seen.
 //
-// Events are ordered deterministically: each list (goodbyes, hellos,
-// stayings) ascends by the proxies' insertion serials (PairRecord::OrderKey),
-// never by addresses, so two identical runs report identical sequences.
+// ## Pair order (sort keys)
+// Each proxy has a sort key (SetKey; the McdModel's sort key, default 0) and
+// an insertion serial. Its rank is the pair (key, serial), compared
+// lexicographically. Within a pair, proxyA is the one of lower rank (the
+// McdModelPair's model1). Each event list (goodbyes, hellos, stayings)
+// ascends by PairRecord::Order() = (rank of A, rank of B). So:
+//  - where the keys of the models differ, the order of the pairs and of the
+//    two models in a pair follow the keys alone: they depend neither on
+//    creation or insertion order nor on addresses;
+//  - serials decide only between equal keys (then the earlier insertion
+//    ranks first), so a space whose keys are all equal (all 0 by default)
+//    orders by insertion as it always did;
+//  - two identical runs report identical sequences.
+// A key change (SetKey) takes effect at the next EndChanges: the reported
+// pairs are re-ranked and the lists re-sorted; a reported pair whose two
+// proxies swap ranks says goodbye and hello again (a new record with the new
+// proxyA), because a pair's model order is fixed for the life of its record.
 //
 // ## Capacity
 // At most objectCount proxies at a time (a removed proxy's slot is reused
@@ -176,6 +190,9 @@ class AxisSortSpace {
   bool Freeze(ProxyId id);
   bool Unfreeze(ProxyId id);
   bool IsFrozen(ProxyId id) const;
+  // Anywhere; effective at the next EndChanges (see "Pair order"). Default 0.
+  bool SetKey(ProxyId id, std::uint32_t key);
+  std::uint32_t Key(ProxyId id) const;
   // Anywhere; effective at the next EndChanges. Default false.
   void SetKeepFrozenPairs(bool keep) { keepFrozenPairs_ = keep; }
   bool KeepFrozenPairs() const { return keepFrozenPairs_; }
@@ -190,6 +207,7 @@ class AxisSortSpace {
   bool IsProxy(ProxyId id) const;
   void *ProxyUser(ProxyId id) const;
   std::uint32_t ProxySerial(ProxyId id) const;
+  ProxyRank Rank(ProxyId id) const;  // {key, serial}
   bool GetAabb(ProxyId id, MeReal min[3], MeReal max[3]) const;
   void SetUserData(void *data) { userData_ = data; }
   void *UserData() const { return userData_; }
@@ -225,7 +243,7 @@ class AxisSortSpace {
   // events remain ("overflow: call again with the same iterator").
   bool GetPairs(PairIterator *iter, PairChunk *chunk);
   bool GetTransitions(PairIterator *iter, PairChunk *chunk);  // no stayings
-  // The current events, each list in OrderKey order.
+  // The current events, each list in Order() order.
   std::span<PairRecord *const> Goodbyes() const { return goodbyes_; }
   std::span<PairRecord *const> Hellos() const { return hellos_; }
   std::span<PairRecord *const> Stayings() const { return stayings_; }
@@ -236,6 +254,7 @@ class AxisSortSpace {
     void *user = nullptr;
     MeReal min[3] = {0, 0, 0}, max[3] = {0, 0, 0};
     std::uint32_t serial = 0;
+    std::uint32_t key = 0;          // sort key (see "Pair order")
     ProxyState state = ProxyState::Free;
     bool frozen = false;
     CullingTable *table = nullptr;  // NULL: no culling parameters
@@ -255,6 +274,8 @@ class AxisSortSpace {
   void SweepNewProxies();
   // pair_events.cpp
   void ComputeEvents();
+  void RerankReported();
+  void StartPair(PairRecord *r, int slotA, int slotB);
   void RetireGoodbyes();
   bool Reportable(const OverlapEntry &e) const;
   bool Culled(const Proxy &a, const Proxy &b) const;
@@ -272,6 +293,7 @@ class AxisSortSpace {
   std::vector<int> pending_;      // inserted, not yet in the arrays
   std::vector<int> retired_;      // removed; slots free at the next BeginChanges
   bool anyRemoved_ = false;
+  bool keysChanged_ = false;      // a SetKey changed a key since the last EndChanges
   bool dirty_ = false;            // values changed since the last sort
   long long swaps_ = 0;
 
@@ -293,7 +315,12 @@ class AxisSortSpace {
   std::vector<std::uint8_t> gone_, isNew_;
   std::vector<int> active_, activeNew_, activePos_, activeNewPos_;
   std::vector<std::uint64_t> eraseKeys_;
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> candidates_;
+  struct Candidate {
+    PairOrder order;
+    std::uint64_t slots;  // SlotPairKey
+    bool operator<(const Candidate &o) const { return order < o.order; }
+  };
+  std::vector<Candidate> candidates_;
   std::vector<PairRecord *> previous_;
 };
 

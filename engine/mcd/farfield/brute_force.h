@@ -25,7 +25,7 @@ void BruteForceOverlaps(std::span<const Aabb> boxes, int axes, std::vector<std::
 // The pairs `space` should report right now (outside a change block), by
 // brute force over its proxies' current AABBs: overlapping on its axes, not
 // both frozen, enabled and not culled (the default frozen rule: with
-// KeepFrozenPairs the answer depends on history and this does not apply). Each as the OrderKey its PairRecord
+// KeepFrozenPairs the answer depends on history and this does not apply). Each as the SerialPair its PairRecord
 // would have ((earlier serial << 32) | later serial), ascending.
 std::vector<std::uint64_t> BruteForceReported(const AxisSortSpace &space);
 

@@ -6,8 +6,10 @@
 //    entry (entry.record == record.index), and that entry is reportable;
 //  - goodbyes_ records are owned by no entry and go back to the pool at
 //    BeginChanges, never earlier;
-//  - hellos_, stayings_ and goodbyes_ each ascend by PairRecord::OrderKey,
-//    so the order depends on the pairs and the insertion order only.
+//  - hellos_, stayings_ and goodbyes_ each ascend by PairRecord::Order(),
+//    so the order depends on the pairs' sort keys and, between equal keys,
+//    on the insertion order only (see "Pair order" in axis_sort_space.h);
+//  - the proxyA of a hello or staying record ranks before its proxyB.
 #include "axis_sort_space.h"
 
 #include "MeMessage.h"
@@ -22,12 +24,65 @@ void AxisSortSpace::RetireGoodbyes() {
   goodbyes_.clear();
 }
 
+namespace {
+std::uint64_t Packed(std::uint32_t key, std::uint32_t serial) { return ProxyRank{key, serial}.Packed(); }
+}  // namespace
+
+// Fills a new record for the pair of slots s0 and s1, the lower rank as A.
+void AxisSortSpace::StartPair(PairRecord *r, int s0, int s1) {
+  const Proxy &p0 = proxies_[static_cast<std::size_t>(s0)];
+  const Proxy &p1 = proxies_[static_cast<std::size_t>(s1)];
+  const bool firstIsA = Packed(p0.key, p0.serial) < Packed(p1.key, p1.serial);
+  const int a = firstIsA ? s0 : s1, b = firstIsA ? s1 : s0;
+  const Proxy &pa = proxies_[static_cast<std::size_t>(a)];
+  const Proxy &pb = proxies_[static_cast<std::size_t>(b)];
+  r->proxyA = a;
+  r->proxyB = b;
+  r->userA = pa.user;
+  r->userB = pb.user;
+  r->serialA = pa.serial;
+  r->serialB = pb.serial;
+  r->keyA = pa.key;
+  r->keyB = pb.key;
+  r->state = PairState::Hello;
+}
+
+// After a key change: every reported pair of two present proxies takes its
+// proxies' current keys; one whose proxies now rank the other way round is
+// detached from its entry (it says goodbye, and hello again as a new record
+// if it is still reportable).
+void AxisSortSpace::RerankReported() {
+  auto present = [](const Proxy &p) { return p.state == ProxyState::Live || p.state == ProxyState::Pending; };
+  for (const auto *list : {&stayings_, &hellos_}) {
+    for (PairRecord *r : *list) {
+      const Proxy &a = proxies_[static_cast<std::size_t>(r->proxyA)];
+      const Proxy &b = proxies_[static_cast<std::size_t>(r->proxyB)];
+      if (!present(a) || !present(b) || a.serial != r->serialA || b.serial != r->serialB) continue;
+      if (Packed(a.key, a.serial) > Packed(b.key, b.serial)) {
+        if (OverlapEntry *e = overlaps_.Find(SlotPairKey(r->proxyA, r->proxyB))) e->record = -1;
+        r->state = PairState::Goodbye;
+        continue;
+      }
+      r->keyA = a.key;
+      r->keyB = b.key;
+    }
+  }
+}
+
 void AxisSortSpace::ComputeEvents() {
   // The pairs reported by the previous EndChanges, in order.
-  auto byKey = [](const PairRecord *l, const PairRecord *r) { return l->OrderKey() < r->OrderKey(); };
+  auto byOrder = [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); };
   previous_.clear();
-  std::merge(stayings_.begin(), stayings_.end(), hellos_.begin(), hellos_.end(), std::back_inserter(previous_),
-             byKey);
+  if (keysChanged_) {
+    RerankReported();
+    previous_.assign(stayings_.begin(), stayings_.end());
+    previous_.insert(previous_.end(), hellos_.begin(), hellos_.end());
+    std::sort(previous_.begin(), previous_.end(), byOrder);
+    keysChanged_ = false;
+  } else {
+    std::merge(stayings_.begin(), stayings_.end(), hellos_.begin(), hellos_.end(),
+               std::back_inserter(previous_), byOrder);
+  }
   goodbyes_.clear();
   hellos_.clear();
   stayings_.clear();
@@ -48,8 +103,8 @@ void AxisSortSpace::ComputeEvents() {
     const Proxy &a = proxies_[static_cast<std::size_t>(e.SlotLo())];
     const Proxy &b = proxies_[static_cast<std::size_t>(e.SlotHi())];
     if (reportable) {
-      const std::uint32_t lo = std::min(a.serial, b.serial), hi = std::max(a.serial, b.serial);
-      candidates_.push_back({(std::uint64_t{lo} << 32) | hi, e.key});
+      const std::uint64_t ra = Packed(a.key, a.serial), rb = Packed(b.key, b.serial);
+      candidates_.push_back({PairOrder{std::min(ra, rb), std::max(ra, rb)}, e.key});
     } else if (!e.overlapping || a.state != ProxyState::Live || b.state != ProxyState::Live) {
       eraseKeys_.push_back(e.key);
     }
@@ -69,24 +124,14 @@ void AxisSortSpace::ComputeEvents() {
   // New pairs in order; the last ones go unreported if records run out.
   std::sort(candidates_.begin(), candidates_.end());
   droppedHellos_ = 0;
-  for (const auto &[order, key] : candidates_) {
+  for (const Candidate &c : candidates_) {
     PairRecord *r = pairs_.Acquire();
     if (!r) {
       ++droppedHellos_;
       continue;
     }
-    OverlapEntry *e = overlaps_.Find(key);
-    const int s0 = e->SlotLo(), s1 = e->SlotHi();
-    const Proxy &p0 = proxies_[static_cast<std::size_t>(s0)];
-    const Proxy &p1 = proxies_[static_cast<std::size_t>(s1)];
-    const bool firstIsLo = p0.serial < p1.serial;
-    r->proxyA = firstIsLo ? s0 : s1;
-    r->proxyB = firstIsLo ? s1 : s0;
-    r->userA = firstIsLo ? p0.user : p1.user;
-    r->userB = firstIsLo ? p1.user : p0.user;
-    r->serialA = static_cast<std::uint32_t>(order >> 32);
-    r->serialB = static_cast<std::uint32_t>(order & 0xffffffffu);
-    r->state = PairState::Hello;
+    OverlapEntry *e = overlaps_.Find(c.slots);
+    StartPair(r, e->SlotLo(), e->SlotHi());
     e->record = r->index;
     hellos_.push_back(r);
   }

@@ -16,6 +16,7 @@
 #ifndef KARMA_MCD_FARFIELD_PAIR_TABLE_H
 #define KARMA_MCD_FARFIELD_PAIR_TABLE_H
 
+#include <compare>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -25,19 +26,44 @@ namespace karma::mcd {
 // Where a reported pair is in its life cycle in the current events.
 enum class PairState : std::uint8_t { Free, Hello, Staying, Goodbye };
 
-// One reported pair. proxyA was inserted before proxyB (serialA < serialB);
-// userA/userB are their user pointers (copied, so they remain readable in a
-// goodbye after the proxy was removed).
+// A proxy's place in the pair order: its sort key first, then its
+// insertion serial (which breaks ties between equal keys only).
+struct ProxyRank {
+  std::uint32_t key = 0;
+  std::uint32_t serial = 0;
+  std::uint64_t Packed() const { return (std::uint64_t{key} << 32) | serial; }
+};
+
+// The order of two reported pairs: lexicographic on (rank of A, rank of B).
+struct PairOrder {
+  std::uint64_t first = 0, second = 0;
+  friend auto operator<=>(const PairOrder &, const PairOrder &) = default;
+};
+
+// One reported pair. proxyA ranks before proxyB: keyA < keyB, or equal keys
+// and serialA < serialB (see "Pair order" in axis_sort_space.h). userA/userB
+// are their user pointers (copied, so they remain readable in a goodbye after
+// the proxy was removed).
 struct PairRecord {
   int index = 0;  // stable position in the pool, [0, pairCount)
   int proxyA = -1, proxyB = -1;
   void *userA = nullptr, *userB = nullptr;
   std::uint32_t serialA = 0, serialB = 0;
+  std::uint32_t keyA = 0, keyB = 0;  // the proxies' sort keys when last ranked
   PairState state = PairState::Free;
 
-  // The deterministic order of reported pairs: by the proxies' insertion
-  // serials, never by addresses.
-  std::uint64_t OrderKey() const { return (std::uint64_t{serialA} << 32) | serialB; }
+  // The identity of the two proxies, whichever is A: (lower serial << 32) |
+  // higher serial. Unique among the pairs of a space's life.
+  std::uint64_t SerialPair() const {
+    const std::uint32_t lo = serialA < serialB ? serialA : serialB;
+    const std::uint32_t hi = serialA < serialB ? serialB : serialA;
+    return (std::uint64_t{lo} << 32) | hi;
+  }
+  // The deterministic order of reported pairs: by the proxies' sort keys,
+  // then insertion serials, never by addresses.
+  PairOrder Order() const {
+    return {ProxyRank{keyA, serialA}.Packed(), ProxyRank{keyB, serialB}.Packed()};
+  }
 };
 
 inline std::uint64_t SlotPairKey(int a, int b) {

@@ -60,13 +60,14 @@ bool AxisSortSpace::Validate() const {
   if (owned != static_cast<int>(hellos_.size() + stayings_.size())) return Fail("record ownership");
   for (const auto *list : {&goodbyes_, &hellos_, &stayings_}) {
     for (std::size_t i = 1; i < list->size(); ++i) {
-      if ((*list)[i - 1]->OrderKey() >= (*list)[i]->OrderKey()) return Fail("events out of order");
+      if ((*list)[i - 1]->Order() >= (*list)[i]->Order()) return Fail("events out of order");
     }
   }
   for (const auto *list : {&hellos_, &stayings_}) {
     for (const PairRecord *r : *list) {
       auto it = entries.find(SlotPairKey(r->proxyA, r->proxyB));
       if (it == entries.end() || it->second != r->index) return Fail("a reported record without its entry");
+      if (r->Order().first >= r->Order().second) return Fail("proxyA does not rank before proxyB");
     }
   }
   if (pairs_.InUse() != static_cast<int>(goodbyes_.size() + hellos_.size() + stayings_.size())) {

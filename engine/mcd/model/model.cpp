@@ -1,6 +1,6 @@
 // model.cpp: creating and destroying models, and their plain properties
-// (geometry, transform pointers, material, user data, body handle,
-// velocity pointers, space slots).
+// (geometry, transform pointers, material, user data, sort keys, bounds
+// padding, body handle, velocity pointers, space slots).
 //
 // Invariants: a live model is a used struct of its framework's model pool;
 // it holds one reference to its geometry; instance.parent == NULL and
@@ -10,6 +10,12 @@
 #include <cstring>
 
 using namespace karma::mcd;
+
+namespace karma::mcd {
+
+MeI32 EffectiveSortKey(const McdModel *m) { return m->sortKeySet ? m->sortKey : m->inheritedSortKey; }
+
+}  // namespace karma::mcd
 
 #define MODEL_OR_RETURN(m, fn) ME_REQUIRE_ARG((m) != nullptr, fn, "model is NULL")
 #define MODEL_OR_RETURN_VALUE(m, v, fn) ME_REQUIRE_ARG_RET((m) != nullptr, v, fn, "model is NULL")
@@ -113,9 +119,32 @@ void MEAPI McdModelSetSortKey(McdModelID m, int key) {
     MODEL_OR_RETURN(m, fn);
     ME_REQUIRE_ARG(key >= 0 && key <= 32767, fn, "sort key %d outside [0, 32767]", key);
     m->sortKey = key;
+    m->sortKeySet = 1;
+    RefreshSpaceSortKey(m);
 }
 
 int MEAPI McdModelGetSortKey(McdModelID m) { return m ? m->sortKey : 0; }
+
+void MEAPI McdModelSetInheritedSortKey(McdModelID m, MeI32 key) {
+    static const char *fn = "McdModelSetInheritedSortKey";
+    MODEL_OR_RETURN(m, fn);
+    ME_REQUIRE_ARG(key >= 0, fn, "sort key %ld is negative", (long)key);
+    if (m->inheritedSortKey == key) return;
+    m->inheritedSortKey = key;
+    if (!m->sortKeySet) RefreshSpaceSortKey(m);
+}
+
+MeI32 MEAPI McdModelGetInheritedSortKey(McdModelID m) { return m ? m->inheritedSortKey : 0; }
+
+void MEAPI McdModelSetBoundsPadding(McdModelID m, MeReal margin) {
+    static const char *fn = "McdModelSetBoundsPadding";
+    MODEL_OR_RETURN(m, fn);
+    ME_REQUIRE_ARG(PositiveFinite(margin, true), fn,
+                   "margin %g is negative or not finite; unchanged", (double)margin);
+    m->boundsPadding = margin;
+}
+
+MeReal MEAPI McdModelGetBoundsPadding(McdModelID m) { return m ? m->boundsPadding : 0; }
 
 // McdModelSetBody is defined by Mst (it also points the TM and velocity
 // pointers at the body's); Mcd only stores the handle.

@@ -3,11 +3,14 @@
 //
 // Invariants
 //  - A model in a space has model->space == the space and
-//    model->spaceIndex == its ProxyId; the proxy's user pointer is the model.
+//    model->spaceIndex == its ProxyId; the proxy's user pointer is the model
+//    and its key the model's EffectiveSortKey.
 //  - pairs[i] is the McdModelPair of the core's PairRecord with index i
 //    (pairCount of them): one McdModelPair per record, so its identity runs
 //    from hello to goodbye. EndChanges (re)initialises the pair of every
-//    hello record: model1 = the model inserted first, userData and
+//    hello record: model1 = the record's proxyA (the lower sort key, or the
+//    earlier insertion between equal keys: "Pair order" in
+//    farfield/axis_sort_space.h), userData and
 //    responseData NULL, m_spaceData = the space, m_spaceIndex = i.
 //  - McdSpaceGetPairs fills a container through `chunk` (record pointers)
 //    and maps each record to pairs[record->index].

@@ -3,8 +3,17 @@
 //
 // The AABB a space keeps for a model is taken after McdModelUpdate: the
 // space's AABB function when set (McdSpaceSetAABBFn), else the model's
-// cached world AABB. McdSpaceUpdateAll runs the core's UpdateAll, whose
-// per-proxy callback does exactly that for every unfrozen model.
+// cached world AABB, grown on every side by the framework's contact
+// tolerance plus the model's bounds padding (McdModelSetBoundsPadding):
+//   min - (tolerance + padding) <= box <= max + (tolerance + padding).
+// Two models whose shapes are within the contact tolerance of each other
+// therefore always overlap in the space (their AABBs are within it too), so
+// the pair the nearfield needs to report a touching contact exists.
+// McdSpaceUpdateAll runs the core's UpdateAll, whose per-proxy callback does
+// exactly that for every unfrozen model.
+//
+// Sort keys: the proxy's key is the model's EffectiveSortKey, handed over at
+// insertion and whenever the model's key changes (RefreshSpaceSortKey).
 #include "space_internal.h"
 
 using namespace karma::mcd;
@@ -14,12 +23,23 @@ namespace karma::mcd {
 void SpaceAabb(const McdSpace *s, McdModelID m, MeReal min[3], MeReal max[3]) {
     if (s->aabbFn) {
         s->aabbFn(m, min, max);
-        return;
+    } else {
+        for (int k = 0; k < 3; ++k) {
+            min[k] = m->instance.aabbMin[k];
+            max[k] = m->instance.aabbMax[k];
+        }
     }
+    const MeReal pad = ContactTolerance(s->framework) + m->boundsPadding;
     for (int k = 0; k < 3; ++k) {
-        min[k] = m->instance.aabbMin[k];
-        max[k] = m->instance.aabbMax[k];
+        min[k] -= pad;
+        max[k] += pad;
     }
+}
+
+void RefreshSpaceSortKey(McdModel *m) {
+    if (!m->space) return;
+    static_cast<McdSpace *>(m->space)->core->SetKey(m->spaceIndex,
+                                                    static_cast<std::uint32_t>(EffectiveSortKey(m)));
 }
 
 void UpdateAndReadAabb(void *user, void *data, MeReal min[3], MeReal max[3]) {
@@ -52,6 +72,7 @@ MeBool Insert(McdSpaceID s, McdModelID m, McdCullingTable *table, int index, int
                               : s->core->Insert(m, min, max);
     if (p == kNoProxy) return 0;
     McdModelSetSpaceData(m, s, p);
+    RefreshSpaceSortKey(m);
     return 1;
 }
 

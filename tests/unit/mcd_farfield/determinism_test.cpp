@@ -25,9 +25,9 @@ Trace RunScene(unsigned seed, int padding) {
   Trace trace;
   for (int step = 0; step < 150; ++step) {
     const Events ev = Collect(*space, 16);
-    for (const PairRecord *r : ev.goodbyes) trace.emplace_back(0, r->OrderKey(), r->index);
-    for (const PairRecord *r : ev.hellos) trace.emplace_back(1, r->OrderKey(), r->index);
-    for (const PairRecord *r : ev.stayings) trace.emplace_back(2, r->OrderKey(), r->index);
+    for (const PairRecord *r : ev.goodbyes) trace.emplace_back(0, r->SerialPair(), r->index);
+    for (const PairRecord *r : ev.hellos) trace.emplace_back(1, r->SerialPair(), r->index);
+    for (const PairRecord *r : ev.stayings) trace.emplace_back(2, r->SerialPair(), r->index);
     space->BeginChanges();
     world.Move();
     if (step % 10 == 5) {

@@ -80,7 +80,7 @@ inline Events Collect(AxisSortSpace &space, int chunkSize = 64, bool transitions
 
 inline std::vector<std::uint64_t> Keys(const std::vector<const PairRecord *> &records) {
   std::vector<std::uint64_t> keys;
-  for (const PairRecord *r : records) keys.push_back(r->OrderKey());
+  for (const PairRecord *r : records) keys.push_back(r->SerialPair());
   return keys;
 }
 

@@ -47,10 +47,12 @@ struct Balls {
     McdGeometryID geom;
     std::vector<std::unique_ptr<TM>> tms;
     std::vector<McdModelID> models;
-    Balls(const std::vector<MeReal> &xs, int pairCount = 100, int objectCount = 32) {
+    // insert false: the models are created, the caller inserts them.
+    Balls(const std::vector<MeReal> &xs, int pairCount = 100, int objectCount = 32,
+          bool insert = true) {
         space = McdSpaceAxisSortCreate(fw, McdAllAxes, objectCount, pairCount);
         geom = McdSphereCreate(fw, 1);
-        for (MeReal x : xs) add(x);
+        for (MeReal x : xs) add(x, insert);
     }
     McdModelID add(MeReal x, bool insert = true) {
         tms.push_back(std::make_unique<TM>(x, 0, 0));
