@@ -9,7 +9,8 @@
 //               normal row, the friction row is pinned at zero instead;
 //     warm  = the row's own warm value (Row::warmSet: contacts), else the
 //             constraint's row-by-row memory when it wrote as many rows
-//             last step, else 0.
+//             last step, else 0;
+//   blocks    each constraint's kept contact normal rows.
 #include "kernels.h"
 #include "step.h"
 
@@ -58,6 +59,10 @@ BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const Pa
   std::span<MeReal> rhs = s.arena.take<MeReal>(m), softness = s.arena.take<MeReal>(m);
   std::span<MeReal> lo = s.arena.take<MeReal>(m), hi = s.arena.take<MeReal>(m);
   std::span<MeReal> mu = s.arena.take<MeReal>(m), warm = s.arena.take<MeReal>(m);
+  std::span<int> blockStart = s.arena.take<int>((size_t)part.constraintCount + 1);
+  std::span<int> blockRows = s.arena.take<int>(m);
+  int blocks = 0, blockRowCount = 0;
+  blockStart[0] = 0;
   for (int i = 0; i < part.constraintCount; ++i) {
     const MdtConstraint *c = s.partConstraints[(size_t)(part.constraintStart + i)];
     const int r0 = rows.constraintRowStart[(size_t)i], r1 = rows.constraintRowStart[(size_t)i + 1];
@@ -92,8 +97,13 @@ BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const Pa
       else
         warm[kk] = memoryFits && r - r0 < kMaxWarmRows ? c->warm[r - r0] : 0;
       p.anyWarm = p.anyWarm || warm[kk] != 0;
+      if (row.role == RowRole::ContactNormal) blockRows[(size_t)blockRowCount++] = k;
     }
+    if (blockRowCount > blockStart[(size_t)blocks]) blockStart[(size_t)++blocks] = blockRowCount;
   }
+  p.normalBlock = blockStart.first((size_t)blocks + 1);
+  p.normalRows = blockRows.first((size_t)blockRowCount);
+  p.blockCount = blocks;
   p.body0 = body0;
   p.body1 = body1;
   p.J = J;

@@ -8,8 +8,9 @@
 // growing. Contract of the answer: the LCP of problem.h solved to the
 // settings' tolerance, or the best iterate found when a limit stops it
 // (report.solved false); on bad input, all impulses zero and
-// report.badInput. Solvers today: the exact active-set method (Kea) and
-// projected Gauss-Seidel (Kea's PGS), both on the assembled matrix A.
+// report.badInput. Solvers today: the exact active-set method (Kea, on the
+// assembled matrix A; solver_kea.cpp) and projected Gauss-Seidel in body
+// space (solver_pgs.cpp).
 #pragma once
 
 #include "arena.h"
@@ -41,6 +42,6 @@ class PartitionSolver {
 // The solvers the world can choose (MdtWorldSetKeaMethod): each lives as
 // long as the world's step scratch.
 PartitionSolver *CreateKeaActiveSetSolver();
-PartitionSolver *CreateKeaPgsSolver();
+PartitionSolver *CreatePgsSolver();
 
 }  // namespace karma::mdt

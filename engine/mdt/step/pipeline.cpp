@@ -4,7 +4,7 @@
 
 namespace karma::mdt {
 
-StepScratch::StepScratch() : activeSet(CreateKeaActiveSetSolver()), pgs(CreateKeaPgsSolver()), stats{} {}
+StepScratch::StepScratch() : activeSet(CreateKeaActiveSetSolver()), pgs(CreatePgsSolver()), stats{} {}
 
 StepScratch::~StepScratch() {
   delete activeSet;

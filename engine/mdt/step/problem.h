@@ -36,6 +36,13 @@ struct BodySpaceProblem {
   std::span<const int> friction;              // normal row index or -1
   std::span<const MeReal> mu;
   std::span<const MeReal> warm;
+  // The contact normal rows of one contact group, or of one stand-alone
+  // contact, form a block: rows normalBlock[b] .. normalBlock[b+1]-1 of
+  // normalRows (ascending row indices). A solver may treat a block as one
+  // unit (the contacts of a face share the load symmetrically).
+  std::span<const int> normalBlock;           // blockCount + 1
+  std::span<const int> normalRows;
+  int blockCount = 0;
   bool anyFriction = false;
   bool anyWarm = false;                       // a warm value is nonzero
 };

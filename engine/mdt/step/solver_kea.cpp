@@ -1,7 +1,6 @@
-// solver_kea.cpp: the partition solvers that go through Kea (kea_lcp.h):
-// they assemble A = J M^-1 J^T + diag(softness) in compressed sparse rows
-// and hand the LCP to KeaSolveSparse, with the active-set method (exact) or
-// projected Gauss-Seidel.
+// solver_kea.cpp: the exact partition solver, through Kea (kea_lcp.h): it
+// assembles A = J M^-1 J^T + diag(softness) in compressed sparse rows and
+// hands the LCP to KeaSolveSparse's active-set method.
 //
 // Assembly. Two rows interact when they share a body b, through
 //     A_ij += J_i,b . (M_b^-1 J_j,b^T)
@@ -121,12 +120,12 @@ Csr assemble(const BodySpaceProblem &p, StepArena &arena) {
 
 class KeaSolver final : public PartitionSolver {
  public:
-  explicit KeaSolver(kea::KeaMethod method) : method_(method), workspace_(kea::KeaWorkspaceCreate()) {}
+  KeaSolver() : workspace_(kea::KeaWorkspaceCreate()) {}
   ~KeaSolver() override { kea::KeaWorkspaceDestroy(workspace_); }
+  KeaSolver(const KeaSolver &) = delete;
+  KeaSolver &operator=(const KeaSolver &) = delete;
 
-  const char *name() const override {
-    return method_ == kea::KeaMethod::PGS ? "kea-pgs" : "kea-active-set";
-  }
+  const char *name() const override { return "kea-active-set"; }
 
   SolveReport solve(const BodySpaceProblem &p, const SolverSettings &settings, StepArena &arena,
                     std::span<MeReal> lambda) override {
@@ -147,7 +146,7 @@ class KeaSolver final : public PartitionSolver {
       prob.mu = p.mu;
     }
     kea::KeaOptions opt;
-    opt.method = method_;
+    opt.method = kea::KeaMethod::ActiveSet;
     opt.maxIterations = settings.maxIterations;
     opt.tolerance = settings.tolerance;
     opt.epsilon = 0;  // softness is already on the diagonal
@@ -163,14 +162,12 @@ class KeaSolver final : public PartitionSolver {
   }
 
  private:
-  kea::KeaMethod method_;
   kea::KeaWorkspace *workspace_;
   kea::KeaResult result_;
 };
 
 }  // namespace
 
-PartitionSolver *CreateKeaActiveSetSolver() { return new KeaSolver(kea::KeaMethod::ActiveSet); }
-PartitionSolver *CreateKeaPgsSolver() { return new KeaSolver(kea::KeaMethod::PGS); }
+PartitionSolver *CreateKeaActiveSetSolver() { return new KeaSolver; }
 
 }  // namespace karma::mdt

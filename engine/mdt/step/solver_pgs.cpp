@@ -1,0 +1,329 @@
+// solver_pgs.cpp: projected Gauss-Seidel in body space (sequential
+// impulses), the partition solver the world uses with MdtKeaMethodPGS.
+//
+// It never forms A. Each body keeps the velocity change the impulses have
+// made so far, dv = M^-1 J^T lambda; row i's slack is then
+//     w_i = J_i dv + softness_i lambda_i - rhs_i,
+// and one Gauss-Seidel update of row i is
+//     lambda_i <- clamp(lambda_i - w_i / d_i, lo_i, hi_i),
+//     d_i = J_i M^-1 J_i^T + softness_i,
+// followed by dv += M^-1 J_i^T (change of lambda_i). A friction row's bounds
+// are +-mu_i times its normal row's current impulse. This is Gauss-Seidel on
+// A lambda = rhs with projection, the same iteration as Kea's PGS, at O(12)
+// per row instead of a pass over the row's matrix entries.
+//
+// Contact blocks: the normal rows of one contact group (up to kMaxBlock of
+// them, sharing their two bodies) are updated together, exactly, as one
+// small LCP, so the corners of a face share the load symmetrically instead
+// of the first corner in the sweep taking it all (which tips a stack).
+//
+// Warm start: lambda starts from the problem's warm impulses (clamped), and
+// dv from them. Sweeps alternate forward and backward through the rows
+// (symmetric Gauss-Seidel), so the order of the rows biases no direction
+// from one step to the next. It stops after the settings' sweep count
+// (default 50) or once a sweep changes no row's velocity by more than the
+// tolerance times (1 + max |rhs|); it returns the last iterate (its natural-
+// map residual, as in kea_lcp.h, is reported).
+#include <algorithm>
+#include <cmath>
+
+#include "partition_solver.h"
+
+namespace karma::mdt {
+
+namespace {
+
+constexpr int kDefaultSweeps = 50;
+
+MeReal defaultTolerance() { return sizeof(MeReal) == 4 ? (MeReal)1e-4 : (MeReal)1e-10; }
+
+// Contact normal blocks of at most this many rows are solved as one unit.
+constexpr int kMaxBlock = 4;
+
+struct Workspace {
+  std::span<MeReal> mj;     // 12 per row: M^-1 J^T, per side (lin, ang)
+  std::span<MeReal> diag;   // d_i
+  std::span<MeReal> dv;     // 6 per body: linear, angular
+  std::span<int> block;     // per row: its normal block, or -1
+  std::span<MeReal> blockA; // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
+  std::span<int> visited;   // per block: the last sweep that solved it
+};
+
+// M^-1 J^T of one side of row i (6 values) for body b.
+void sideMinvJt(const BodySpaceProblem &p, int b, const MeReal *J, MeReal *out) {
+  const MeReal m = p.invMass[(size_t)b];
+  const MeReal *I = &p.invInertia[(size_t)b * 9];
+  for (int k = 0; k < 3; ++k) out[k] = m * J[k];
+  for (int r = 0; r < 3; ++r) out[3 + r] = I[r * 3] * J[3] + I[r * 3 + 1] * J[4] + I[r * 3 + 2] * J[5];
+}
+
+MeReal dot6(const MeReal *a, const MeReal *b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5];
+}
+
+// A block qualifies when its rows share both bodies (a contact group's do)
+// and are bounded below only.
+bool blockable(const BodySpaceProblem &p, int b) {
+  const int first = p.normalBlock[(size_t)b], last = p.normalBlock[(size_t)b + 1];
+  if (last - first < 2 || last - first > kMaxBlock) return false;
+  const int r0 = p.normalRows[(size_t)first];
+  for (int k = first; k < last; ++k) {
+    const int r = p.normalRows[(size_t)k];
+    if (p.body0[(size_t)r] != p.body0[(size_t)r0] || p.body1[(size_t)r] != p.body1[(size_t)r0]) return false;
+    if (p.hi[(size_t)r] < MEINFINITY || p.friction[(size_t)r] >= 0) return false;
+  }
+  return true;
+}
+
+// Each qualifying block's matrix A_bb = J_b M^-1 J_b^T + diag(softness).
+void prepareBlocks(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
+  w.block = arena.filled<int>((size_t)p.rowCount, -1);
+  w.blockA = arena.take<MeReal>((size_t)p.blockCount * kMaxBlock * kMaxBlock);
+  w.visited = arena.filled<int>((size_t)p.blockCount, -1);
+  for (int b = 0; b < p.blockCount; ++b) {
+    if (!blockable(p, b)) continue;
+    const int first = p.normalBlock[(size_t)b], k = p.normalBlock[(size_t)b + 1] - first;
+    MeReal *A = &w.blockA[(size_t)b * kMaxBlock * kMaxBlock];
+    for (int i = 0; i < k; ++i) {
+      const int ri = p.normalRows[(size_t)(first + i)];
+      w.block[(size_t)ri] = b;
+      for (int j = 0; j < k; ++j) {
+        const int rj = p.normalRows[(size_t)(first + j)];
+        const MeReal *J = &p.J[(size_t)ri * 12];
+        const MeReal *mj = &w.mj[(size_t)rj * 12];
+        MeReal a = i == j ? p.softness[(size_t)ri] : 0;
+        if (p.body0[(size_t)ri] >= 0) a += dot6(J, mj);
+        if (p.body1[(size_t)ri] >= 0) a += dot6(J + 6, mj + 6);
+        A[i * kMaxBlock + j] = a;
+      }
+    }
+  }
+}
+
+Workspace prepare(const BodySpaceProblem &p, StepArena &arena) {
+  Workspace w;
+  w.mj = arena.filled<MeReal>((size_t)p.rowCount * 12, 0);
+  w.diag = arena.take<MeReal>((size_t)p.rowCount);
+  w.dv = arena.filled<MeReal>((size_t)p.bodyCount * 6, 0);
+  for (int i = 0; i < p.rowCount; ++i) {
+    const MeReal *J = &p.J[(size_t)i * 12];
+    MeReal *mj = &w.mj[(size_t)i * 12];
+    MeReal d = p.softness[(size_t)i];
+    const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
+    for (int side = 0; side < 2; ++side) {
+      if (bodies[side] < 0) continue;
+      sideMinvJt(p, bodies[side], J + side * 6, mj + side * 6);
+      d += dot6(J + side * 6, mj + side * 6);
+    }
+    w.diag[(size_t)i] = d;
+  }
+  prepareBlocks(p, w, arena);
+  return w;
+}
+
+// The row's bounds for the current impulses.
+void bounds(const BodySpaceProblem &p, std::span<const MeReal> lambda, int i, MeReal &lo, MeReal &hi) {
+  const int normal = p.friction[(size_t)i];
+  if (normal >= 0) {
+    hi = p.mu[(size_t)i] * std::max(lambda[(size_t)normal], MeReal(0));
+    lo = -hi;
+  } else {
+    lo = p.lo[(size_t)i];
+    hi = p.hi[(size_t)i];
+  }
+}
+
+// J_i dv.
+MeReal rowVelocity(const BodySpaceProblem &p, const Workspace &w, int i) {
+  const MeReal *J = &p.J[(size_t)i * 12];
+  MeReal v = 0;
+  if (p.body0[(size_t)i] >= 0) v += dot6(J, &w.dv[(size_t)p.body0[(size_t)i] * 6]);
+  if (p.body1[(size_t)i] >= 0) v += dot6(J + 6, &w.dv[(size_t)p.body1[(size_t)i] * 6]);
+  return v;
+}
+
+// dv += M^-1 J_i^T * delta.
+void push(const BodySpaceProblem &p, Workspace &w, int i, MeReal delta) {
+  const MeReal *mj = &w.mj[(size_t)i * 12];
+  const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
+  for (int side = 0; side < 2; ++side) {
+    if (bodies[side] < 0) continue;
+    MeReal *dv = &w.dv[(size_t)bodies[side] * 6];
+    for (int k = 0; k < 6; ++k) dv[k] += mj[side * 6 + k] * delta;
+  }
+}
+
+// One Gauss-Seidel update of row i; returns the velocity change it made.
+MeReal update(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int i) {
+  const MeReal d = w.diag[(size_t)i];
+  if (!(d > 0)) return 0;  // a null row: nothing to gain from it
+  const MeReal slack = rowVelocity(p, w, i) + p.softness[(size_t)i] * lambda[(size_t)i] - p.rhs[(size_t)i];
+  MeReal lo, hi;
+  bounds(p, lambda, i, lo, hi);
+  const MeReal old = lambda[(size_t)i];
+  const MeReal next = std::clamp(old - slack / d, lo, hi);
+  lambda[(size_t)i] = next;
+  push(p, w, i, next - old);
+  return std::fabs(next - old) * d;
+}
+
+// Solves A_FF x_F = y_F in place (Gaussian elimination; A is symmetric
+// positive definite, so no pivoting), F given by `mask` over k rows.
+bool solveSubset(const MeReal *A, int k, unsigned mask, MeReal *y) {
+  int idx[kMaxBlock], n = 0;
+  for (int i = 0; i < k; ++i)
+    if (mask & (1u << i)) idx[n++] = i;
+  MeReal M[kMaxBlock][kMaxBlock + 1];
+  for (int a = 0; a < n; ++a) {
+    for (int c = 0; c < n; ++c) M[a][c] = A[idx[a] * kMaxBlock + idx[c]];
+    M[a][n] = y[idx[a]];
+  }
+  for (int a = 0; a < n; ++a) {
+    if (!(M[a][a] > 0)) return false;
+    for (int r = a + 1; r < n; ++r) {
+      const MeReal f = M[r][a] / M[a][a];
+      for (int c = a; c <= n; ++c) M[r][c] -= f * M[a][c];
+    }
+  }
+  for (int a = n - 1; a >= 0; --a) {
+    MeReal v = M[a][n];
+    for (int c = a + 1; c < n; ++c) v -= M[a][c] * y[idx[c]];
+    y[idx[a]] = v / M[a][a];
+  }
+  return true;
+}
+
+// One exact update of normal block b: the k rows' impulses x minimise
+// together, i.e. solve the small LCP  w' = w + A_bb (x - lambda_b),
+// x >= lo, w' >= 0, complementary, by trying the free sets from the
+// largest down (in a fixed order); the first consistent one is the unique
+// answer (A_bb is positive definite). Returns the largest velocity change,
+// or -1 when no set fits (rounding): the caller then updates row by row.
+MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int b) {
+  const int first = p.normalBlock[(size_t)b], k = p.normalBlock[(size_t)b + 1] - first;
+  const MeReal *A = &w.blockA[(size_t)b * kMaxBlock * kMaxBlock];
+  MeReal lam[kMaxBlock], lo[kMaxBlock], q[kMaxBlock];
+  int rows[kMaxBlock];
+  for (int i = 0; i < k; ++i) {
+    rows[i] = p.normalRows[(size_t)(first + i)];
+    lam[i] = lambda[(size_t)rows[i]];
+    lo[i] = p.lo[(size_t)rows[i]];
+  }
+  for (int i = 0; i < k; ++i) {
+    const MeReal slack = rowVelocity(p, w, rows[i]) + p.softness[(size_t)rows[i]] * lam[i] - p.rhs[(size_t)rows[i]];
+    // w' = A x - q with q = A lambda - w.
+    q[i] = -slack;
+    for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
+  }
+  const unsigned all = (1u << k) - 1;
+  for (int freeCount = k; freeCount >= 0; --freeCount) {
+    for (unsigned mask = all;; --mask) {
+      if (__builtin_popcount(mask) == freeCount) {
+        MeReal x[kMaxBlock];
+        for (int i = 0; i < k; ++i) {
+          x[i] = q[i];
+          if (!(mask & (1u << i))) continue;
+          for (int j = 0; j < k; ++j)
+            if (!(mask & (1u << j))) x[i] -= A[i * kMaxBlock + j] * lo[j];
+        }
+        for (int i = 0; i < k; ++i)
+          if (!(mask & (1u << i))) x[i] = lo[i];
+        bool fits = solveSubset(A, k, mask, x);
+        for (int i = 0; i < k && fits; ++i) {
+          if (mask & (1u << i)) {
+            fits = x[i] >= lo[i];
+          } else {
+            MeReal wi = -q[i];
+            for (int j = 0; j < k; ++j) wi += A[i * kMaxBlock + j] * x[j];
+            fits = wi >= 0;
+          }
+        }
+        if (fits) {
+          MeReal biggest = 0;
+          for (int i = 0; i < k; ++i) {
+            lambda[(size_t)rows[i]] = x[i];
+            push(p, w, rows[i], x[i] - lam[i]);
+            biggest = std::max(biggest, std::fabs(x[i] - lam[i]) * w.diag[(size_t)rows[i]]);
+          }
+          return biggest;
+        }
+      }
+      if (mask == 0) break;
+    }
+  }
+  return -1;
+}
+
+// Row i's turn in a sweep: its block once per sweep, else the row alone.
+MeReal visit(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int i, int sweep) {
+  const int b = w.block[(size_t)i];
+  if (b < 0) return update(p, w, lambda, i);
+  if (w.visited[(size_t)b] == sweep) return 0;
+  w.visited[(size_t)b] = sweep;
+  const MeReal change = updateBlock(p, w, lambda, b);
+  if (change >= 0) return change;
+  MeReal biggest = 0;  // no consistent set (rounding): row by row
+  const int first = p.normalBlock[(size_t)b], last = p.normalBlock[(size_t)b + 1];
+  for (int k = first; k < last; ++k) biggest = std::max(biggest, update(p, w, lambda, p.normalRows[(size_t)k]));
+  return biggest;
+}
+
+// The contract's residual max_i |lambda_i - clamp(lambda_i - w_i, lo, hi)|.
+MeReal residual(const BodySpaceProblem &p, const Workspace &w, std::span<const MeReal> lambda) {
+  MeReal worst = 0;
+  for (int i = 0; i < p.rowCount; ++i) {
+    const MeReal slack = rowVelocity(p, w, i) + p.softness[(size_t)i] * lambda[(size_t)i] - p.rhs[(size_t)i];
+    MeReal lo, hi;
+    bounds(p, lambda, i, lo, hi);
+    const MeReal l = lambda[(size_t)i];
+    worst = std::max(worst, std::fabs(l - std::clamp(l - slack, lo, hi)));
+  }
+  return worst;
+}
+
+class PgsSolver final : public PartitionSolver {
+ public:
+  const char *name() const override { return "pgs"; }
+
+  SolveReport solve(const BodySpaceProblem &p, const SolverSettings &settings, StepArena &arena,
+                    std::span<MeReal> lambda) override {
+    SolveReport report;
+    if (p.rowCount == 0) return report;
+    Workspace w = prepare(p, arena);
+    MeReal rhsMax = 0;
+    for (int i = 0; i < p.rowCount; ++i) rhsMax = std::max(rhsMax, std::fabs(p.rhs[(size_t)i]));
+    const MeReal tol = (settings.tolerance > 0 ? settings.tolerance : defaultTolerance()) * (1 + rhsMax);
+    // Warm start: normal and bounded rows first, so friction bounds see
+    // their normal impulse.
+    for (int i = 0; i < p.rowCount; ++i) lambda[(size_t)i] = p.warm[(size_t)i];
+    for (int i = 0; i < p.rowCount; ++i) {
+      MeReal lo, hi;
+      bounds(p, lambda, i, lo, hi);
+      lambda[(size_t)i] = std::clamp(lambda[(size_t)i], lo, hi);
+      push(p, w, i, lambda[(size_t)i]);
+    }
+    const int sweeps = settings.maxIterations > 0 ? settings.maxIterations : kDefaultSweeps;
+    int done = 0;
+    bool converged = false;
+    while (done < sweeps && !converged) {
+      MeReal biggest = 0;
+      if (done % 2 == 0) {
+        for (int i = 0; i < p.rowCount; ++i) biggest = std::max(biggest, visit(p, w, lambda, i, done));
+      } else {
+        for (int i = p.rowCount - 1; i >= 0; --i) biggest = std::max(biggest, visit(p, w, lambda, i, done));
+      }
+      ++done;
+      converged = biggest <= tol;
+    }
+    report.iterations = done;
+    report.residual = residual(p, w, lambda);
+    report.solved = converged;
+    return report;
+  }
+};
+
+}  // namespace
+
+PartitionSolver *CreatePgsSolver() { return new PgsSolver; }
+
+}  // namespace karma::mdt
