@@ -10,7 +10,8 @@
 // - contacts: Coulomb friction with mu = the larger material coefficient,
 //   the friction pyramid scaled by the normal force (dContactApprox1), no
 //   bounce, the world's default ERP 0.2 and CFM 1e-5; up to 8 contacts per
-//   pair; a hash space for broad phase;
+//   pair (as Karma's box-box test) unless SetOdeMaxContacts says fewer; a
+//   hash space for broad phase;
 // - a car wheel: a hinge2 joint, axis 1 the steering axis on the chassis
 //   locked by stops at 0, axis 2 the wheel's hinge; the suspension
 //   spring k and damper c through ODE's soft constraint,
@@ -33,7 +34,10 @@ namespace {
 using scenes::ShapeKind;
 using scenes::Vec3;
 
+// Contacts per colliding pair: up to kMaxContacts, SetOdeMaxContacts()
+// picks fewer (dBoxBox culls a face-face contact to that many points).
 constexpr int kMaxContacts = 8;
+int maxContacts = kMaxContacts;
 constexpr int kQuickStepIterations = 20;
 
 void InitOde() {
@@ -181,7 +185,7 @@ class OdeEngine final : public PeerEngine {
     auto *self = static_cast<OdeEngine *>(data);
     if (!self->collides(a, b)) return;
     dContactGeom geoms[kMaxContacts];
-    const int n = dCollide(a, b, kMaxContacts, geoms, sizeof(dContactGeom));
+    const int n = dCollide(a, b, maxContacts, geoms, sizeof(dContactGeom));
     const double mu = std::max(self->friction(a), self->friction(b));
     for (int i = 0; i < n; ++i) {
       dContact c{};
@@ -197,7 +201,7 @@ class OdeEngine final : public PeerEngine {
     auto *self = static_cast<OdeEngine *>(data);
     if (!self->collides(a, b)) return;
     dContactGeom geoms[kMaxContacts];
-    const int n = dCollide(a, b, kMaxContacts, geoms, sizeof(dContactGeom));
+    const int n = dCollide(a, b, maxContacts, geoms, sizeof(dContactGeom));
     for (int i = 0; i < n; ++i) self->deepest_ = std::max(self->deepest_, (double)geoms[i].depth);
   }
 
@@ -216,6 +220,8 @@ class OdeEngine final : public PeerEngine {
 };
 
 }  // namespace
+
+void SetOdeMaxContacts(int n) { maxContacts = std::clamp(n, 1, kMaxContacts); }
 
 std::unique_ptr<PeerEngine> MakeOdeStep(const SceneSpec &spec) {
   return std::make_unique<OdeEngine>(spec, false);

@@ -13,7 +13,7 @@
 // and the figures of SCENES.md from the last repetition.
 //
 //   peer_bench [--scenes car,topple,...] [--engines karma,ode-step,...]
-//              [--reps N] [--steps N] [--pile-steps N]
+//              [--reps N] [--steps N] [--pile-steps N] [--ode-contacts N]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -42,6 +42,7 @@ struct Options {
   int reps = 5;
   int steps = 0;  // 0: each scene's own length
   int pileSteps = kDefaultPileSteps;
+  int odeContacts = 8;
 };
 
 std::vector<EngineKind> AllEngines() {
@@ -79,9 +80,10 @@ bool Parse(int argc, char **argv, Options &o) {
     else if (!std::strcmp(argv[i], "--reps") && hasValue) o.reps = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--steps") && hasValue) o.steps = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--pile-steps") && hasValue) o.pileSteps = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--ode-contacts") && hasValue) o.odeContacts = std::atoi(argv[++i]);
     else return false;
   }
-  return o.reps > 0 && o.steps >= 0 && o.pileSteps > 0;
+  return o.reps > 0 && o.steps >= 0 && o.pileSteps > 0 && o.odeContacts >= 1 && o.odeContacts <= 8;
 }
 
 // One run of a scene in an engine: the step time and the figures.
@@ -171,10 +173,13 @@ int main(int argc, char **argv) {
     std::fprintf(stderr,
                  "usage: %s [--scenes car,topple,stack21,ragdoll,pile1000] "
                  "[--engines karma,ode-step,ode-quickstep,bullet] [--reps N (5)] "
-                 "[--steps N (each scene's own)] [--pile-steps N (%d)]\n",
+                 "[--steps N (each scene's own)] [--pile-steps N (%d)] [--ode-contacts 1..8 (8)]\n",
                  argv[0], kDefaultPileSteps);
     return 2;
   }
+#if KARMA_PEERS_HAVE_ODE
+  karma::peers::SetOdeMaxContacts(o.odeContacts);
+#endif
   std::vector<EngineKind> engines;
   for (const EngineKind &e : AllEngines())
     if (Wanted(o.engines, e.name)) engines.push_back(e);

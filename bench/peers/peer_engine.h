@@ -38,6 +38,9 @@ std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec);
 #if KARMA_PEERS_HAVE_ODE
 std::unique_ptr<PeerEngine> MakeOdeStep(const SceneSpec &spec);
 std::unique_ptr<PeerEngine> MakeOdeQuickStep(const SceneSpec &spec);
+// Contacts per colliding pair for the ODE engines built after the call
+// (1 to 8; 8 by default).
+void SetOdeMaxContacts(int n);
 #endif
 #if KARMA_PEERS_HAVE_BULLET
 std::unique_ptr<PeerEngine> MakeBullet(const SceneSpec &spec);
