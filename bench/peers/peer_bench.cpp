@@ -131,6 +131,17 @@ std::string Format(const char *format, double a, double b = 0, double c = 0) {
   return text;
 }
 
+// Microseconds: one decimal below 1000, else whole with thousands commas.
+std::string Micros(double us) {
+  if (us < 1000) return Format("%.1f", us);
+  std::string digits = Format("%.0f", us), out;
+  for (size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
 std::string Stability(const SceneFigures &f) {
   if (f.stable()) return "yes";
   if (!f.finite) return "**no**: NaN";
@@ -154,8 +165,7 @@ void PrintScene(const SceneSpec &spec, int steps, const std::vector<Result> &res
     const SceneFigures &f = r.figures;
     std::printf("| %s (%d%s) | %s | %s [%s–%s] | %s | %s | %s | %s | %.2f | %.1f |\n",
                 spec.name.c_str(), steps, steps < spec.steps ? Format(" of %.0f", spec.steps).c_str() : "",
-                r.engine.c_str(), Format("%.1f", r.median()).c_str(), Format("%.1f", *lo).c_str(),
-                Format("%.1f", *hi).c_str(), Ratio(r.median(), step).c_str(),
+                r.engine.c_str(), Micros(r.median()).c_str(), Micros(*lo).c_str(), Micros(*hi).c_str(), Ratio(r.median(), step).c_str(),
                 Ratio(r.median(), quick).c_str(), Stability(f).c_str(), f.detail.c_str(), f.maxSpeed,
                 f.penetration * 1e3);
   }
