@@ -1,0 +1,49 @@
+// peer_engine.h: one engine running one anchor scene, built from the
+// scene's engine-neutral description (scenes/scene_spec.h). The runner
+// (peer_bench.cpp) times step() only; everything else is bookkeeping.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scene_figures.h"
+#include "scene_spec.h"
+
+namespace karma::peers {
+
+using scenes::BodyState;
+using scenes::SceneSpec;
+
+class PeerEngine {
+ public:
+  virtual ~PeerEngine() = default;
+  // The scene's drives, then one step of 1/60 s: collision, solve and
+  // integration.
+  virtual void step() = 0;
+  // Every body's state, in the order of SceneSpec::bodies.
+  virtual void states(std::vector<BodyState> &out) const = 0;
+  // The deepest overlap of two shapes (or a shape and the ground) in the
+  // current state, m; may run the engine's collision detection again.
+  virtual double penetration() = 0;
+};
+
+// An engine of the comparison: its name in the table and how to build it.
+struct EngineKind {
+  std::string name;
+  std::unique_ptr<PeerEngine> (*make)(const SceneSpec &spec);
+};
+
+std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec);
+#if KARMA_PEERS_HAVE_ODE
+std::unique_ptr<PeerEngine> MakeOdeStep(const SceneSpec &spec);
+std::unique_ptr<PeerEngine> MakeOdeQuickStep(const SceneSpec &spec);
+// Contacts per colliding pair for the ODE engines built after the call
+// (1 to 8; 8 by default).
+void SetOdeMaxContacts(int n);
+#endif
+#if KARMA_PEERS_HAVE_BULLET
+std::unique_ptr<PeerEngine> MakeBullet(const SceneSpec &spec);
+#endif
+
+}  // namespace karma::peers

@@ -1,0 +1,100 @@
+// box_specs.cpp: SCENES.md's box scenes: "topple" (six stacks of 0.5 m
+// cubes), "stack21" (21 flat boxes) and "pile1000" (1000 cubes dropped in
+// a 10 x 10 x 10 lattice with small deterministic tilts).
+#include <cmath>
+#include <cstdint>
+
+#include "scene_spec.h"
+
+namespace karma::scenes {
+
+namespace {
+
+// Axes (rows) of the rotation Ry(yaw) Rx(a) Rz(b).
+Axes Tilt(double yaw, double a, double b) {
+  const double cy = std::cos(yaw), sy = std::sin(yaw), ca = std::cos(a), sa = std::sin(a),
+               cb = std::cos(b), sb = std::sin(b);
+  // Column-vector matrix M = Ry Rx Rz; the body axes are M's columns.
+  const double Ry[3][3] = {{cy, 0, sy}, {0, 1, 0}, {-sy, 0, cy}};
+  const double Rx[3][3] = {{1, 0, 0}, {0, ca, -sa}, {0, sa, ca}};
+  const double Rz[3][3] = {{cb, -sb, 0}, {sb, cb, 0}, {0, 0, 1}};
+  double t[3][3] = {}, m[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) t[i][j] += Ry[i][k] * Rx[k][j];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) m[i][j] += t[i][k] * Rz[k][j];
+  Axes R;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int i = 0; i < 3; ++i) R[axis][i] = m[i][axis];
+  return R;
+}
+
+// A fixed pseudo-random sequence in [-1, 1) (64-bit LCG, top bits).
+class Sequence {
+ public:
+  double next() {
+    state_ = state_ * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(state_ >> 11) / (double)(1ull << 52) - 1;
+  }
+
+ private:
+  std::uint64_t state_ = 0x4b61726d61ull;  // "Karma"
+};
+
+constexpr ShapeSpec kCube = {ShapeKind::kBox, 0.5, 0.5, 0.5};
+
+}  // namespace
+
+SceneSpec ToppleSpec() {
+  SceneSpec s;
+  s.name = "topple";
+  s.steps = 600;
+  s.friction = {0.4, 0.4};  // boxes, ground
+  s.groundMaterial = 1;
+  const int heights[6] = {3, 4, 5, 6, 3, 4};
+  for (int k = 0; k < 6; ++k) {
+    for (int i = 0; i < heights[k]; ++i)
+      s.bodies.push_back({kCube, 5, {-5.0 + 2 * k, (i + 0.5) * 0.5 + 0.001 * i, 0}, kIdentityAxes, 0});
+    s.watched.push_back((int)s.bodies.size() - 1);  // the stack's top box
+  }
+  s.expectation = Expectation::kStacksStand;
+  s.capacity = {32, 32, 256, 512};
+  return s;
+}
+
+SceneSpec Stack21Spec() {
+  SceneSpec s;
+  s.name = "stack21";
+  s.steps = 1200;
+  s.friction = {0.1, 0.4};  // boxes, ground
+  s.groundMaterial = 1;
+  for (int i = 0; i < 21; ++i)
+    s.bodies.push_back({{ShapeKind::kBox, 1, 0.3, 1}, 5, {0, (i + 0.5) * 0.3 + 0.001 * i, 0}, kIdentityAxes, 0});
+  s.expectation = Expectation::kTopStill;
+  s.watched = {20};
+  s.capacity = {24, 24, 128, 256};
+  return s;
+}
+
+SceneSpec Pile1000Spec() {
+  SceneSpec s;
+  s.name = "pile1000";
+  s.steps = 600;
+  s.friction = {0.4, 0.4};  // boxes, ground
+  s.groundMaterial = 1;
+  Sequence random;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j)
+      for (int k = 0; k < 10; ++k) {
+        const double yaw = 0.3 * random.next(), a = 0.1 * random.next(), b = 0.1 * random.next();
+        s.bodies.push_back(
+            {kCube, 5, {(i - 4.5) * 0.7, 0.6 + 0.7 * j, (k - 4.5) * 0.7}, Tilt(yaw, a, b), 0});
+      }
+  s.expectation = Expectation::kNothingLost;
+  s.capacity = {1000, 1001, 20000, 30000};
+  return s;
+}
+
+}  // namespace karma::scenes
