@@ -7,7 +7,15 @@
 //   s(n) = -h_A(-n) - h_B(n),   h_X(d) = max_{x in X} x . d,
 // and for convex shapes the signed distance is max over n of s(n). The
 // face normals of both shapes (exact for face contacts) and the EPA
-// direction (either sign) are candidates; the largest s(n) wins.
+// direction (either sign) are candidates; the largest s(n) wins, except
+// that between two flat-faced shapes (neither a sphere nor a sphyl) a face
+// normal is kept unless another candidate is clearly better, with the
+// margins of box_box.cpp (size = half the smaller shape's scale):
+//   B's face over A's      s_B > 0.98 s_A + 0.001 size
+//   other over the face    s_o > 0.95 s_f + 0.01 size
+// so a resting pair keeps one reference face and one normal step after
+// step instead of flipping to edge-edge directions that differ from the
+// face's by round-off (stacked boxes turned by a small yaw).
 #include "convex/shape.h"
 
 #include <ccd/ccd.h>
@@ -112,18 +120,21 @@ bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep) 
     if (!met) return false;
     double best = -INFINITY;
     V bestN{0, 0, 1};
-    auto consider = [&](V c) {
+    double classBest[3] = {-INFINITY, -INFINITY, -INFINITY};  // A's faces, B's faces, others
+    V classN[3];
+    auto consider = [&](V c, int cls = 2) {
         if (!Finite(c) || !(Len(c) > 0)) return;
         c = Unit(c);
         const double s = SeparationAlong(a, b, c);
         if (s > best + 1e-12 * a.scale) best = s, bestN = c;
+        if (s > classBest[cls] + 1e-12 * a.scale) classBest[cls] = s, classN[cls] = c;
     };
     // Face normals first, so that a tie keeps the exact face direction.
     std::vector<V> faces(FaceCount(a) + FaceCount(b) + 1);
     const int na = FaceNormals(a, faces.data(), (int)faces.size());
-    for (int i = 0; i < na; ++i) consider(-faces[i]);  // A's face rests on B
+    for (int i = 0; i < na; ++i) consider(-faces[i], 0);  // A's face rests on B
     const int nb = FaceNormals(b, faces.data(), (int)faces.size());
-    for (int i = 0; i < nb; ++i) consider(faces[i]);
+    for (int i = 0; i < nb; ++i) consider(faces[i], 1);
     if (haveGuess) consider(guess), consider(-guess);
     consider(Centre(a) - Centre(b));
     // Edge-edge directions of the two supporting features (exact for
@@ -160,6 +171,14 @@ bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep) 
         }
     }
     if (!(best <= tol) || !std::isfinite(best)) return false;
+    const bool flat = !(roundA || roundB) && classBest[0] > -INFINITY && classBest[1] > -INFINITY;
+    if (flat) {
+        const double size = 0.5 * std::fmin(a.scale, b.scale);
+        const int face = classBest[1] > 0.98 * classBest[0] + 0.001 * size ? 1 : 0;
+        const bool other = classBest[2] > 0.95 * classBest[face] + 0.01 * size;
+        const int cls = other ? 2 : face;
+        bestN = classN[cls], best = classBest[cls];
+    }
     *n = bestN;
     *sep = best;
     return true;

@@ -49,7 +49,9 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     std::stable_sort(order, order + count, [&](int x, int y) { return h[x] < h[y]; });
     for (int j = 0; j < count; ++j) {
         const int i = order[j];
-        if (!EmitV(r, pts[i] - (MeReal)0.5 * h[i] * n, n, h[i], 1, 2)) break;
+        const MeU32 id = feature::Pack(feature::kCylinderPlane, (MeU32)(i / kRimPoints),
+                                      (MeU32)(i % kRimPoints));
+        if (!EmitV(r, pts[i] - (MeReal)0.5 * h[i] * n, n, h[i], 1, 2, id)) break;
     }
     return Finish(r, n);
 }

@@ -84,29 +84,33 @@ TEST(McdBoxBox, OverhangingBoxContactsAtTheCornersOfTheOverlap) {
   }
 }
 
-TEST(McdBoxBox, TurnedBoxGivesTheOctagonAndReducesToTheBuffer) {
+TEST(McdBoxBox, TurnedBoxGivesFourOfTheOctagonAndReducesToTheBuffer) {
   Framework fw;
   Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);
   // Half side 1.8 turned 45 degrees: corners at 2.55 along x and y, clipped
-  // by |x|, |y| <= 2 into an octagon.
+  // by |x|, |y| <= 2 into an octagon with vertices (+-2, +-0.546) and
+  // (+-0.546, +-2). Four alternate vertices are kept (contact_reduce.h):
+  // the square of circumradius |(2, 0.546)| = 2.073, area 2 * 2.073^2 = 8.6.
   Placed top(McdBoxCreate(fw, (MeReal)3.6, (MeReal)3.6, 2), 0, 0, (MeReal)1.99, {0, 0, 1},
              (MeReal)(ME_PI / 4));
   Hit h(top.model, base.model);
-  ASSERT_EQ(h.count(), 8);
-  for (int i = 0; i < 8; ++i) {
+  ASSERT_EQ(h.count(), 4);
+  double angle[4];
+  for (int i = 0; i < 4; ++i) {
     EXPECT_NEAR(std::fmax(std::fabs(h.c[i].position[0]), std::fabs(h.c[i].position[1])), 2, 1e-5);
+    EXPECT_NEAR(std::hypot(h.c[i].position[0], h.c[i].position[1]), 2.0732, 1e-3);
     EXPECT_NEAR(h.c[i].separation, -0.01, kEps);
+    angle[i] = std::atan2(h.c[i].position[1], h.c[i].position[0]);
   }
-  Hit four(top.model, base.model, 4);
-  ASSERT_EQ(four.count(), 4);
-  // The four kept span the octagon: their bounding box is nearly the whole.
-  double lo[2] = {9, 9}, hi[2] = {-9, -9};
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 2; ++k) {
-      lo[k] = std::fmin(lo[k], four.c[i].position[k]);
-      hi[k] = std::fmax(hi[k], four.c[i].position[k]);
-    }
-  EXPECT_GT((hi[0] - lo[0]) * (hi[1] - lo[1]), 8.0);
+  // One per quadrant of turn: sorted angles 90 degrees apart.
+  std::sort(angle, angle + 4);
+  for (int i = 1; i < 4; ++i) EXPECT_NEAR(angle[i] - angle[i - 1], ME_PI / 2, 1e-3);
+  // A shorter buffer keeps the deepest, then the farthest: two opposite ones.
+  Hit two(top.model, base.model, 2);
+  ASSERT_EQ(two.count(), 2);
+  EXPECT_NEAR(std::hypot(two.c[0].position[0] - two.c[1].position[0],
+                         two.c[0].position[1] - two.c[1].position[1]),
+              2 * 2.0732, 2e-3);
   // Small turned box fully on the face: its 4 corners.
   Placed small(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)1.99, {0, 0, 1}, (MeReal)(ME_PI / 4));
   Hit s(small.model, base.model);
