@@ -8,14 +8,17 @@
 // and for convex shapes the signed distance is max over n of s(n). The
 // face normals of both shapes (exact for face contacts) and the EPA
 // direction (either sign) are candidates; the largest s(n) wins, except
-// that between two flat-faced shapes (neither a sphere nor a sphyl) a face
-// normal is kept unless another candidate is clearly better, with the
-// margins of box_box.cpp (size = half the smaller shape's scale):
-//   B's face over A's      s_B > 0.98 s_A + 0.001 size
-//   other over the face    s_o > 0.95 s_f + 0.01 size
+// that between two flat-faced shapes (neither a sphere nor a sphyl) the
+// rule of box_box.cpp applies, "x clearly better than y" meaning
+// s_x > 0.95 s_y + 0.01 size (size = half the smaller shape's scale):
+//   the face      A's best face normal or B's, whichever is clearly better,
+//                 else the one whose supporting polygon has the larger area
+//                 (A's on a tie)
+//   other         an edge-edge or EPA direction only when clearly better
 // so a resting pair keeps one reference face and one normal step after
 // step instead of flipping to edge-edge directions that differ from the
-// face's by round-off (stacked boxes turned by a small yaw).
+// face's by round-off (stacked boxes turned by a small yaw), or between the
+// two faces as a small body rocks on a wide one.
 #include "convex/shape.h"
 
 #include <ccd/ccd.h>
@@ -102,6 +105,18 @@ V ClosestOnFeature(const V *f, int k, V p) {
     return best;
 }
 
+// The area of the shape's supporting polygon along d (0 for an edge or a
+// point), by Newell's formula.
+double FeatureArea(const Shape &s, V d) {
+    V f[16];
+    int dims;
+    const int k = Feature(s, d, f, &dims);
+    if (k < 3) return 0;
+    V m;
+    for (int i = 0; i < k; ++i) m = m + Cross(f[i], f[(i + 1) % k]);
+    return 0.5 * Len(m);
+}
+
 // The point of a sphere's or sphyl's core segment closest to x.
 V CoreClosest(const Shape &s, V x) {
     if (s.kind == Kind::Sphere) return s.t;
@@ -174,8 +189,11 @@ bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep) 
     const bool flat = !(roundA || roundB) && classBest[0] > -INFINITY && classBest[1] > -INFINITY;
     if (flat) {
         const double size = 0.5 * std::fmin(a.scale, b.scale);
-        const int face = classBest[1] > 0.98 * classBest[0] + 0.001 * size ? 1 : 0;
-        const bool other = classBest[2] > 0.95 * classBest[face] + 0.01 * size;
+        auto clearlyBetter = [&](double x, double y) { return x > 0.95 * y + 0.01 * size; };
+        int face = FeatureArea(b, classN[1]) > FeatureArea(a, -classN[0]) ? 1 : 0;
+        if (clearlyBetter(classBest[1], classBest[0])) face = 1;
+        else if (clearlyBetter(classBest[0], classBest[1])) face = 0;
+        const bool other = clearlyBetter(classBest[2], classBest[face]);
         const int cls = other ? 2 : face;
         bestN = classN[cls], best = classBest[cls];
     }

@@ -7,21 +7,26 @@
 // (skipped when nearly parallel). Any s_L > tolerance: no contact.
 //
 // Choosing the axis. The best (largest s) of each class is found: s1 over
-// box 1's faces, s2 over box 2's, se over the edge axes. The contact is a
-// face contact on box 1 unless another class is clearly better:
-//   box 2's face   when s2 > 0.98 s1 + 0.001 h   (h = the smallest half
-//   edge-edge      when se > 0.95 sf + 0.01 h     extent of the two boxes,
-//                                                 sf the chosen face's s)
-// Both s are <= 0 in overlap, so "0.95 sf" is 5% less deep: an edge axis
-// must be shallower than the face axis by 5% of the depth plus 1% of the
-// box size (ODE's and Bullet's box-box use the 5%; Box2D's polygon test
-// flips its reference face by 2% plus an absolute slop). Two stacked boxes
+// box 1's faces, s2 over box 2's, se over the edge axes. "x is clearly
+// better than y" means  s_x > 0.95 s_y + 0.01 h  (h = the smallest half
+// extent of the two boxes): both s are <= 0 in overlap, so x must be
+// shallower by 5% of y's depth plus 1% of the box size.
+//   reference face  box 2's if s2 is clearly better than s1, box 1's if s1
+//                   is clearly better than s2; otherwise the larger of the
+//                   two faces (box 1's on equal areas)
+//   edge-edge       if se is clearly better than the chosen face's s
+// ODE's and Bullet's box-box use the same 5% for edges; Box2D flips its
+// reference face by a relative plus an absolute margin. Two stacked boxes
 // with a small relative yaw or tilt have edge axes A_x x B_y nearly along
 // the common face normal whose s differ from the face's by round-off and
-// tilt terms of order h theta^2; without the margins the choice flips
-// between face and edge from step to step and the single edge contact
-// jumps from corner to corner. A real edge-edge touch (crossed edges) is
-// shallower along its edge axis by a fraction of the size, and wins.
+// tilt terms; without the margins the choice flips between face and edge
+// from step to step and the single edge contact jumps from corner to
+// corner. Between the two faces, s1 - s2 ~ tilt x (width of the wider box),
+// so a small box on a wide one would flip between its own face and the
+// wide one's as it rocks; taking the larger face when neither is clearly
+// better keeps the wide box's face, which wins anyway once the tilt grows.
+// A real edge-edge touch (crossed edges) is shallower along its edge axis
+// by a fraction of the size, and wins.
 //  - Face axis: its box is the reference; the incident face is the other
 //    box's face most opposed to the reference normal m (outward). The
 //    incident quad is clipped (Sutherland-Hodgman) by the 4 side planes of
@@ -47,13 +52,14 @@ using namespace karma::mcd::prim;
 
 namespace {
 
-constexpr MeReal kFaceRelative = (MeReal)0.98, kFaceAbsolute = (MeReal)0.001;
-constexpr MeReal kEdgeRelative = (MeReal)0.95, kEdgeAbsolute = (MeReal)0.01;
+// "Clearly better" (see the top of the file): s_x > 0.95 s_y + 0.01 h.
+constexpr MeReal kRelative = (MeReal)0.95, kAbsolute = (MeReal)0.01;
 
 struct Box {
     Frame f;
     MeVector3 h;
     explicit Box(const McdModel *m) : f(m) { McdBoxGetRadii(m->instance.geometry, h); }
+    MeReal FaceArea(int k) const { return h[(k + 1) % 3] * h[(k + 2) % 3]; }  // a quarter of it
     MeReal Radius(V3 L) const {
         return h[0] * std::fabs(Dot(f.axis[0], L)) + h[1] * std::fabs(Dot(f.axis[1], L)) +
                h[2] * std::fabs(Dot(f.axis[2], L));
@@ -212,8 +218,11 @@ int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
         }
     const MeReal hmin = std::fmin(std::fmin(std::fmin(b1.h[0], b1.h[1]), b1.h[2]),
                                   std::fmin(std::fmin(b2.h[0], b2.h[1]), b2.h[2]));
-    const int face = best[1] > kFaceRelative * best[0] + kFaceAbsolute * hmin ? 1 : 0;
-    const bool edge = axis[2] >= 0 && best[2] > kEdgeRelative * best[face] + kEdgeAbsolute * hmin;
+    auto clearlyBetter = [&](MeReal x, MeReal y) { return x > kRelative * y + kAbsolute * hmin; };
+    int face = b2.FaceArea(axis[1]) > b1.FaceArea(axis[0]) ? 1 : 0;
+    if (clearlyBetter(best[1], best[0])) face = 1;
+    else if (clearlyBetter(best[0], best[1])) face = 0;
+    const bool edge = axis[2] >= 0 && clearlyBetter(best[2], best[face]);
     const int cls = edge ? 2 : face;
     V3 n = bestL[cls];
     if (Dot(n, T) < 0) n = -n;

@@ -3,7 +3,9 @@
 // corner on a face, edge-edge, separation found only on an edge axis,
 // coincident boxes, both argument orders.
 #include <algorithm>
+#include <cmath>
 #include <set>
+#include <vector>
 #include <utility>
 
 #include "nearfield_test_support.h"
@@ -204,6 +206,88 @@ TEST(McdBoxBox, CoincidentAndParallelBoxesGiveFiniteResults) {
   ASSERT_EQ(p.count(), 4);
   EXPECT_NEAR(p.c[0].separation, -0.01, kEps);
   EXPECT_NEAR(p.c[0].normal[0], 1, kEps);
+}
+
+// Two unit cubes stacked 1 mm into each other, the upper turned by every
+// yaw from 0 to 45 degrees (pile1000's columns): face contacts on the
+// common face (3 or 4 of them, normal along z, separation = the overlap),
+// never a single edge-edge contact.
+TEST(McdBoxBox, StackedCubesAtEveryYawGiveFaceContacts) {
+  Framework fw;
+  McdGeometryID g = McdBoxCreate(fw, 1, 1, 1);
+  Placed low(g, 0, 0, 0);
+  const double overlap = 1e-3;
+  for (int deg = 0; deg <= 45; ++deg) {
+    Placed up(g, 0, 0, (MeReal)(1 - overlap), {0, 0, 1}, (MeReal)(deg * ME_PI / 180));
+    for (const bool upFirst : {true, false}) {
+      Hit h = upFirst ? Hit(up.model, low.model) : Hit(low.model, up.model);
+      const double sign = upFirst ? 1 : -1;
+      ASSERT_GE(h.count(), 3) << deg << " degrees";
+      EXPECT_LE(h.count(), 4) << deg << " degrees";
+      for (int i = 0; i < h.count(); ++i) {
+        const McdContact &c = h.c[i];
+        EXPECT_NEAR(sign * c.normal[2], 1, 1e-3) << deg << " degrees";
+        EXPECT_NEAR(c.separation, -overlap, 1e-5) << deg << " degrees";
+        EXPECT_NEAR(c.position[2], 0.5 - overlap / 2, 1e-5) << deg << " degrees";
+        // On both squares' common area.
+        const double x = c.position[0], y = c.position[1], t = deg * ME_PI / 180;
+        EXPECT_LE(std::fmax(std::fabs(x), std::fabs(y)), 0.5 + 1e-5);
+        EXPECT_LE(std::fmax(std::fabs(x * std::cos(t) + y * std::sin(t)),
+                            std::fabs(-x * std::sin(t) + y * std::cos(t))),
+                  0.5 + 1e-5);
+        // One side is the reference face (dims 2), never edge on edge (1, 1).
+        EXPECT_TRUE((c.dims & 0xFF) == 2 || ((c.dims >> 8) & 0xFF) == 2) << deg << " degrees";
+      }
+      // Spread: the kept points enclose at least half the common area (the
+      // octagon's area is at least 0.828 of the unit square's).
+      double area = 0;
+      std::vector<std::pair<double, double>> p;
+      for (int i = 0; i < h.count(); ++i) p.push_back({h.c[i].position[0], h.c[i].position[1]});
+      std::sort(p.begin(), p.end(), [](auto a, auto b) {
+        return std::atan2(a.second, a.first) < std::atan2(b.second, b.first);
+      });
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        const auto &a = p[i], &b = p[(i + 1) % p.size()];
+        area += 0.5 * (a.first * b.second - a.second * b.first);
+      }
+      EXPECT_GT(area, 0.5) << deg << " degrees";
+    }
+  }
+}
+
+// The same stacks with the upper cube also tilted by 0.02 degrees about x
+// and y (0.35 mm across the face, less than the overlap): still 3-4 face
+// contacts with the normal of one of the two faces.
+TEST(McdBoxBox, SlightlyTiltedStacksKeepFaceContacts) {
+  Framework fw;
+  McdGeometryID g = McdBoxCreate(fw, 1, 1, 1);
+  Placed low(g, 0, 0, 0);
+  const double overlap = 1e-3, tilt = 0.02 * ME_PI / 180;
+  for (int deg = 0; deg <= 45; ++deg) {
+    Placed up(g, 0, 0, (MeReal)(1 - overlap));
+    MeMatrix3 yaw, tx, ty, a, r;
+    const MeVector3 ez = {0, 0, 1}, ex = {1, 0, 0}, ey = {0, 1, 0};
+    MeMatrix3FromAxisAngle(yaw, ez, (MeReal)(deg * ME_PI / 180));
+    MeMatrix3FromAxisAngle(tx, ex, (MeReal)tilt);
+    MeMatrix3FromAxisAngle(ty, ey, (MeReal)tilt);
+    MeMatrix3Multiply(a, yaw, tx);
+    MeMatrix3Multiply(r, a, ty);
+    MeMatrix4TMSetRotation(up.tm.m, r);
+    McdModelUpdate(up.model);
+    Hit h(up.model, low.model);
+    ASSERT_GE(h.count(), 3) << deg << " degrees";
+    EXPECT_LE(h.count(), 4) << deg << " degrees";
+    for (int i = 0; i < h.count(); ++i) {
+      const McdContact &c = h.c[i];
+      const bool lowFace = std::fabs(c.normal[2] - 1) < 1e-6;
+      const bool upFace = std::fabs(c.normal[0] + r[2][0]) < 1e-6 &&
+                          std::fabs(c.normal[1] + r[2][1]) < 1e-6;  // up's -z axis, negated
+      EXPECT_TRUE(lowFace || upFace) << deg << " degrees";
+      EXPECT_NEAR(c.normal[2], 1, 1e-3) << deg << " degrees";
+      EXPECT_LE(c.separation, 0) << deg << " degrees";
+      EXPECT_GE(c.separation, -overlap - 0.5 * std::sqrt(2.0) * 2 * tilt) << deg << " degrees";
+    }
+  }
 }
 
 }  // namespace
