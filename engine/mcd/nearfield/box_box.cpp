@@ -241,9 +241,11 @@ int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
     if (keep < count) Reduce(pts, count, keep);
     const MeU32 kind = face == 0 ? feature::kBoxFace1 : feature::kBoxFace2;
     const MeU32 refFace = (MeU32)FaceIndex(ref, k, m);
-    for (int i = 0; i < keep; ++i)
-        EmitV(r, pts[i].p, n, pts[i].depth, face == 0 ? 2 : pts[i].dims, face == 0 ? pts[i].dims : 2,
+    for (int i = 0; i < keep; ++i) {
+        const int incDims = pts[i].dims;
+        EmitV(r, pts[i].p, n, pts[i].depth, face == 0 ? 2 : incDims, face == 0 ? incDims : 2,
               feature::Pack(kind, refFace, (MeU32)incFace, (MeU32)pts[i].key));
+    }
     if (r->contactCount == 0) {
         // Clipping lost every point (the deepest corner lies outside the
         // reference face): one contact on the line through box 2's centre

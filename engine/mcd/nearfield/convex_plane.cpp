@@ -55,8 +55,8 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     if (hits.size() > 4) {  // a face on the plane: 4 spread over it
         std::vector<ReducePoint> rp;
         for (const Hit &hit : hits)
-            rp.push_back({(double)MeVector3Dot(hit.k, plane[0]), (double)MeVector3Dot(hit.k, plane[1]),
-                          -(double)hit.h});
+            rp.push_back({(double)MeVector3Dot(hit.k, plane[0]),
+                          (double)MeVector3Dot(hit.k, plane[1]), -(double)hit.h});
         int keep[4];
         const int kept = ReduceToFour(rp.data(), (int)rp.size(), std::fmax(tol, Slack(mesh)), keep);
         for (int j = 0; j < kept; ++j) hits[j] = hits[keep[j]];

@@ -148,9 +148,11 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
                 const MeReal t = end == 0 ? t0 : t1;
                 const V3 E = e0 + t * (e1 - e0);
                 const MeReal gap = Dot(E, f) - h[k];
-                if (gap - radius <= tol)
-                    EmitV(r, box.ToWorld(E - (MeReal)0.5 * (radius + gap) * f), nw, gap - radius, 2, 2,
+                if (gap - radius <= tol) {
+                    const V3 at = box.ToWorld(E - (MeReal)0.5 * (radius + gap) * f);
+                    EmitV(r, at, nw, gap - radius, 2, 2,
                           feature::Pack(feature::kSphylBoxFace, 2 * k + (f[k] < 0), end));
+                }
                 if ((t1 - t0) * 2 * H <= tol) break;  // one point
             }
         }

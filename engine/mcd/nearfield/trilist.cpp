@@ -127,7 +127,8 @@ void SpreadFour(std::vector<McdContact> &out, const Shape &obj, double tol) {
         rp.push_back({Dot(d, u), Dot(d, v), -(double)c.separation});
     }
     int keep[4];
-    const int kept = ReduceToFour(rp.data(), (int)rp.size(), std::fmax(tol, 1e-3 * obj.scale), keep);
+    const double slack = std::fmax(tol, 1e-3 * obj.scale);
+    const int kept = ReduceToFour(rp.data(), (int)rp.size(), slack, keep);
     for (int i = 0; i < kept; ++i) out[i] = out[keep[i]];
     out.resize(kept);
 }
