@@ -31,8 +31,9 @@
 //                                          corner is (edge, next edge), a clip
 //                                          point (edge, plane), a reference
 //                                          corner (plane, plane)). kBoxFace1
-//                                          when box 1 (the pair's first model
-//                                          by address) holds the reference face.
+//                                          when box 1 (the one ComputedFirst,
+//                                          nearfield.h, puts first) holds the
+//                                          reference face, kBoxFace2 box 2.
 //   box-box, edge-edge     kBoxEdge        a = 3i + j (edge directions A_i, B_j),
 //                                          b = which of the 4 parallel edges of
 //                                          each box (2 sign bits each)
