@@ -7,7 +7,18 @@
 //   s(n) = -h_A(-n) - h_B(n),   h_X(d) = max_{x in X} x . d,
 // and for convex shapes the signed distance is max over n of s(n). The
 // face normals of both shapes (exact for face contacts) and the EPA
-// direction (either sign) are candidates; the largest s(n) wins.
+// direction (either sign) are candidates; the largest s(n) wins, except
+// that between two flat-faced shapes (neither a sphere nor a sphyl) the
+// rule of box_box.cpp applies, "x clearly better than y" meaning
+// s_x > 0.95 s_y + 0.01 size (size = half the smaller shape's scale):
+//   the face      A's best face normal or B's, whichever is clearly better,
+//                 else the one whose supporting polygon has the larger area
+//                 (A's on a tie)
+//   other         an edge-edge or EPA direction only when clearly better
+// so a resting pair keeps one reference face and one normal step after
+// step instead of flipping to edge-edge directions that differ from the
+// face's by round-off (stacked boxes turned by a small yaw), or between the
+// two faces as a small body rocks on a wide one.
 #include "convex/shape.h"
 
 #include <ccd/ccd.h>
@@ -94,6 +105,18 @@ V ClosestOnFeature(const V *f, int k, V p) {
     return best;
 }
 
+// The area of the shape's supporting polygon along d (0 for an edge or a
+// point), by Newell's formula.
+double FeatureArea(const Shape &s, V d) {
+    V f[16];
+    int dims;
+    const int k = Feature(s, d, f, &dims);
+    if (k < 3) return 0;
+    V m;
+    for (int i = 0; i < k; ++i) m = m + Cross(f[i], f[(i + 1) % k]);
+    return 0.5 * Len(m);
+}
+
 // The point of a sphere's or sphyl's core segment closest to x.
 V CoreClosest(const Shape &s, V x) {
     if (s.kind == Kind::Sphere) return s.t;
@@ -112,18 +135,21 @@ bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep) 
     if (!met) return false;
     double best = -INFINITY;
     V bestN{0, 0, 1};
-    auto consider = [&](V c) {
+    double classBest[3] = {-INFINITY, -INFINITY, -INFINITY};  // A's faces, B's faces, others
+    V classN[3];
+    auto consider = [&](V c, int cls = 2) {
         if (!Finite(c) || !(Len(c) > 0)) return;
         c = Unit(c);
         const double s = SeparationAlong(a, b, c);
         if (s > best + 1e-12 * a.scale) best = s, bestN = c;
+        if (s > classBest[cls] + 1e-12 * a.scale) classBest[cls] = s, classN[cls] = c;
     };
     // Face normals first, so that a tie keeps the exact face direction.
     std::vector<V> faces(FaceCount(a) + FaceCount(b) + 1);
     const int na = FaceNormals(a, faces.data(), (int)faces.size());
-    for (int i = 0; i < na; ++i) consider(-faces[i]);  // A's face rests on B
+    for (int i = 0; i < na; ++i) consider(-faces[i], 0);  // A's face rests on B
     const int nb = FaceNormals(b, faces.data(), (int)faces.size());
-    for (int i = 0; i < nb; ++i) consider(faces[i]);
+    for (int i = 0; i < nb; ++i) consider(faces[i], 1);
     if (haveGuess) consider(guess), consider(-guess);
     consider(Centre(a) - Centre(b));
     // Edge-edge directions of the two supporting features (exact for
@@ -160,6 +186,17 @@ bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep) 
         }
     }
     if (!(best <= tol) || !std::isfinite(best)) return false;
+    const bool flat = !(roundA || roundB) && classBest[0] > -INFINITY && classBest[1] > -INFINITY;
+    if (flat) {
+        const double size = 0.5 * std::fmin(a.scale, b.scale);
+        auto clearlyBetter = [&](double x, double y) { return x > 0.95 * y + 0.01 * size; };
+        int face = FeatureArea(b, classN[1]) > FeatureArea(a, -classN[0]) ? 1 : 0;
+        if (clearlyBetter(classBest[1], classBest[0])) face = 1;
+        else if (clearlyBetter(classBest[0], classBest[1])) face = 0;
+        const bool other = clearlyBetter(classBest[2], classBest[face]);
+        const int cls = other ? 2 : face;
+        bestN = classN[cls], best = classBest[cls];
+    }
     *n = bestN;
     *sep = best;
     return true;

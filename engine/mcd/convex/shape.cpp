@@ -27,19 +27,21 @@ int HullSupport(const ConvexMesh *m, V dl) {
 
 // Pushes the points of the polygon-or-vertex of a flat-faced core (hull or
 // triangle) supporting along d; faces need a normal within ~78 degrees of d.
-int PolyFeature(const Shape &s, V d, V out[16], int *dims) {
+int PolyFeature(const Shape &s, V d, V out[16], int *dims, int *id) {
     if (s.kind == Kind::Triangle) {
         const double c = Dot(s.triN, d);
         if (std::fabs(c) >= 0.2) {
             for (int i = 0; i < 3; ++i) out[i] = s.tri[i];
             *dims = 2;
+            *id = 8;
             return 3;
         }
         double best = -INFINITY;
         for (int i = 0; i < 3; ++i) best = std::fmax(best, Dot(s.tri[i], d));
         int n = 0;
+        *id = 0;
         for (int i = 0; i < 3; ++i)
-            if (Dot(s.tri[i], d) >= best - 1e-9 * s.scale) out[n++] = s.tri[i];
+            if (Dot(s.tri[i], d) >= best - 1e-9 * s.scale) out[n++] = s.tri[i], *id |= 1 << i;
         *dims = n - 1;
         return n;
     }
@@ -53,10 +55,13 @@ int PolyFeature(const Shape &s, V d, V out[16], int *dims) {
     }
     const V shift = s.margin * d;
     if (face < 0 || m->faceStart[face + 1] - m->faceStart[face] > 16) {
-        out[0] = s.World(FromMe(m->vertices[HullSupport(m, dl)])) + shift;
+        const int v = HullSupport(m, dl);
+        out[0] = s.World(FromMe(m->vertices[v])) + shift;
         *dims = 0;
+        *id = 2 * v;
         return 1;
     }
+    *id = 2 * face + 1;
     int n = 0;
     for (int k = m->faceStart[face]; k < m->faceStart[face + 1]; ++k)
         out[n++] = s.World(FromMe(m->vertices[m->faceIndex[k]])) + shift;
@@ -152,7 +157,10 @@ V Support(const Shape &s, V d) {
 
 V Centre(const Shape &s) { return s.t; }
 
-int Feature(const Shape &s, V d, V out[16], int *dims) {
+int Feature(const Shape &s, V d, V out[16], int *dims, int *idOut) {
+    int scratch = 0;
+    int *id = idOut ? idOut : &scratch;
+    *id = 0;
     const V a = s.axis[2];
     const double ad = Dot(a, d);
     switch (s.kind) {
@@ -169,6 +177,7 @@ int Feature(const Shape &s, V d, V out[16], int *dims) {
         }
         out[0] = Support(s, d);
         *dims = 2;
+        *id = ad < 0 ? 1 : 2;
         return 1;
     case Kind::Cylinder: {
         if (std::fabs(ad) >= 0.7) {  // the cap facing d, 8 rim points
@@ -178,12 +187,14 @@ int Feature(const Shape &s, V d, V out[16], int *dims) {
             for (int i = 0; i < 8; ++i)
                 out[i] = c + (s.r * cs[i][0]) * s.axis[0] + (s.r * cs[i][1]) * s.axis[1];
             *dims = 2;
+            *id = ad < 0 ? 1 : 2;
             return 8;
         }
         const V radial = Unit(d - ad * a);  // the side line facing d
         out[0] = s.t + s.r * radial + s.hh * a;
         out[1] = s.t + s.r * radial - s.hh * a;
         *dims = 1;
+        *id = 3;
         return 2;
     }
     case Kind::Box: {
@@ -196,10 +207,11 @@ int Feature(const Shape &s, V d, V out[16], int *dims) {
         const V u = s.half[j] * s.axis[j], v = s.half[k] * s.axis[k];
         out[0] = c + u + v, out[1] = c - u + v, out[2] = c - u - v, out[3] = c + u - v;
         *dims = 2;
+        *id = 2 * i + (dl[i] < 0 ? 1 : 0);
         return 4;
     }
     case Kind::Hull:
-    case Kind::Triangle: return PolyFeature(s, d, out, dims);
+    case Kind::Triangle: return PolyFeature(s, d, out, dims, id);
     }
     return 0;
 }

@@ -74,8 +74,13 @@ V Centre(const Shape &s);
 // order round its edge: a box or hull face, a cylinder cap sampled at 8 rim
 // points, a triangle), a segment (a cylinder or sphyl side line, a hull
 // edge) or a point, on the shape's surface (margin included). Returns the
-// count (<= 16); *dims gets the feature's dimension (0, 1, 2).
-int Feature(const Shape &s, V d, V out[16], int *dims);
+// count (<= 16); *dims gets the feature's dimension (0, 1, 2) and *id
+// (when not NULL) which feature of the shape it is, a number fixed in the
+// shape's own frame: box face 2i + (outward along -axis i); hull face f as
+// 2f + 1, hull vertex v as 2v; cylinder cap 1 (-z) or 2 (+z), side line 3;
+// sphyl end 1 (-z) or 2 (+z), side line 0; triangle face 8, else the bit
+// mask of its corners on the feature; sphere 0.
+int Feature(const Shape &s, V d, V out[16], int *dims, int *id = nullptr);
 
 // Candidate face normals of a shape (outward, unit): box faces, hull faces,
 // cylinder caps, triangle faces. Returns the count (<= max).
@@ -98,6 +103,7 @@ struct ManifoldPoint {
     V position;
     double separation;
     int dims1, dims2;
+    MeU32 feature;  // Mix of A's and B's feature ids and the point's clip key
 };
 // Contacts between A and B for the normal n (B towards A) of separation
 // sep0: the supporting features of A (along -n) and B (along n) are
@@ -105,9 +111,9 @@ struct ManifoldPoint {
 // against the polygon, segment overlap, or the point); each point of the
 // intersection whose gap along n is <= tol becomes a contact midway between
 // the surfaces. clipMaskB selects which edges of B's polygon clip (bit i:
-// edge i -> i+1; a triangle list clears smooth edges). At most `max` (<= 16)
-// points, the deepest first, spread over the contact area; a fallback single
-// point when the intersection is empty.
+// edge i -> i+1; a triangle list clears smooth edges). At most four points
+// (and at most `max`), spread over the contact area and the deepest first
+// (manifold.cpp); a fallback single point when the intersection is empty.
 int Manifold(const Shape &a, const Shape &b, V n, double sep0, double tol, unsigned clipMaskB,
              ManifoldPoint out[], int max);
 

@@ -11,8 +11,10 @@
 // contact's element1 is the leaf child instance (McdGeometryInstance *)
 // that made it. The contacts of all children are merged; when there are
 // more than contactMaxCount the deepest are kept. r->normal is the deepest
-// contact's normal.
+// contact's normal. Feature id (feature_id.h): Mix(child index + 1, the id
+// against the child), made distinct over the merged set.
 #include "convex_common.h"
+#include "feature_id.h"
 
 #include <algorithm>
 #include <utility>
@@ -84,6 +86,7 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         const bool leaf = child->childCount == 0;
         for (int k = 0; k < sr.contactCount; ++k) {
             if (leaf) scratch[k].element1.ptr = const_cast<McdGeometryInstance *>(child);
+            scratch[k].feature = feature::Mix((MeU32)i + 1, scratch[k].feature);
             merged.push_back(scratch[k]);
         }
     }
@@ -92,7 +95,9 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         return a.separation < b.separation;
     });
     const int n = std::min((int)merged.size(), r->contactMaxCount);
+    const int first = r->contactCount;
     for (int k = 0; k < n; ++k) r->contacts[r->contactCount++] = merged[k];
+    feature::MakeDistinct(r->contacts, first, r->contactCount);
     if (!merged.empty()) MeVector3Copy(r->normal, merged[0].normal);
     r->touch = 1;
     return 1;

@@ -4,20 +4,47 @@
 // A_i, B_j, half extents a_i, b_j and T = c1 - c2, a unit axis L gives the
 // separation  s_L = |T.L| - sum_i a_i |A_i.L| - sum_j b_j |B_j.L|.
 // The 15 axes are the 3 + 3 face normals and the 9 edge directions A_i x B_j
-// (skipped when nearly parallel). Any s_L > tolerance: no contact. Else the
-// axis with the largest s_L is the minimum-translation direction (faces are
-// preferred unless an edge axis is better by a small margin), n = +-L
-// pointing from box 2 towards box 1, and the separation is s_L.
+// (skipped when nearly parallel). Any s_L > tolerance: no contact.
+//
+// Choosing the axis. The best (largest s) of each class is found: s1 over
+// box 1's faces, s2 over box 2's, se over the edge axes. "x is clearly
+// better than y" means  s_x > 0.95 s_y + 0.01 h  (h = the smallest half
+// extent of the two boxes): both s are <= 0 in overlap, so x must be
+// shallower by 5% of y's depth plus 1% of the box size.
+//   reference face  box 2's if s2 is clearly better than s1, box 1's if s1
+//                   is clearly better than s2; otherwise the larger of the
+//                   two faces (box 1's on equal areas)
+//   edge-edge       if se is clearly better than the chosen face's s
+// ODE's and Bullet's box-box use the same 5% for edges; Box2D flips its
+// reference face by a relative plus an absolute margin. Two stacked boxes
+// with a small relative yaw or tilt have edge axes A_x x B_y nearly along
+// the common face normal whose s differ from the face's by round-off and
+// tilt terms; without the margins the choice flips between face and edge
+// from step to step and the single edge contact jumps from corner to
+// corner. Between the two faces, s1 - s2 ~ tilt x (width of the wider box),
+// so a small box on a wide one would flip between its own face and the
+// wide one's as it rocks; taking the larger face when neither is clearly
+// better keeps the wide box's face, which wins anyway once the tilt grows.
+// A real edge-edge touch (crossed edges) is shallower along its edge axis
+// by a fraction of the size, and wins.
 //  - Face axis: its box is the reference; the incident face is the other
-//    box's face most opposed to the reference normal. The incident quad is
-//    clipped (Sutherland-Hodgman) by the 4 side planes of the reference
-//    face; every clipped point p at depth d = (p - f).m <= tolerance below
-//    the reference face (centre f, outward normal m) is a contact at
-//    p - d/2 m. Up to 8 points; when the buffer is shorter the deepest is
-//    kept first, then repeatedly the point farthest from those kept.
+//    box's face most opposed to the reference normal m (outward). The
+//    incident quad is clipped (Sutherland-Hodgman) by the 4 side planes of
+//    the reference face; every clipped point p at depth d = (p - f).m <=
+//    tolerance below the reference face (centre f) is a candidate at
+//    p - d/2 m with separation d. Up to 8 candidates; at most four are kept
+//    by ReduceToFour (contact_reduce.h) in the reference face's axes, and
+//    when the buffer is shorter still, the deepest first, then repeatedly
+//    the point farthest from those kept.
 //  - Edge axis A_i x B_j: the edge of box 1 along A_i furthest towards -n,
 //    the edge of box 2 along B_j furthest towards +n; one contact midway
 //    between their closest points.
+// The normal n = +-L points from box 2 towards box 1; separation = s_L.
+// Feature ids (feature_id.h): a face contact names the reference face, the
+// incident face and the clipped vertex by the two lines meeting there
+// (incident edges 0-3, reference side planes 4-7); an edge contact names
+// the two edges.
+#include "contact_reduce.h"
 #include "prim_math.h"
 
 using namespace karma::mcd;
@@ -25,40 +52,59 @@ using namespace karma::mcd::prim;
 
 namespace {
 
+// "Clearly better" (see the top of the file): s_x > 0.95 s_y + 0.01 h.
+constexpr MeReal kRelative = (MeReal)0.95, kAbsolute = (MeReal)0.01;
+
 struct Box {
     Frame f;
     MeVector3 h;
     explicit Box(const McdModel *m) : f(m) { McdBoxGetRadii(m->instance.geometry, h); }
+    MeReal FaceArea(int k) const { return h[(k + 1) % 3] * h[(k + 2) % 3]; }  // a quarter of it
     MeReal Radius(V3 L) const {
         return h[0] * std::fabs(Dot(f.axis[0], L)) + h[1] * std::fabs(Dot(f.axis[1], L)) +
                h[2] * std::fabs(Dot(f.axis[2], L));
     }
 };
 
+// A vertex of the polygon being clipped; `out` is the line the edge from it
+// to the next vertex lies on (0-3 incident edges, 4-7 reference side planes).
+struct Vert {
+    V3 p;
+    int out;
+};
+
+// A candidate contact: position, separation, incident dims, vertex key.
 struct Pt {
     V3 p;
     MeReal depth;
-    int dims;  // the incident feature: 0 an original corner, 1 a clipped edge point
+    int dims;  // the incident feature: 0 a corner, 1 a point of an edge, 2 inside the face
+    int key;   // in-line * 8 + out-line
 };
 
-// Keeps the points of poly (n of them) with plane.x <= lim; returns the count.
-int ClipPlane(const Pt *in, int n, V3 axis, MeReal lim, Pt *out) {
+// Keeps the part of the polygon (n vertices) with p.axis <= lim; the new
+// edge along the plane gets line id `line`. Returns the count.
+int ClipPlane(const Vert *in, int n, V3 axis, MeReal lim, int line, Vert *out) {
     int m = 0;
     for (int i = 0; i < n; ++i) {
-        const Pt &a = in[i], &b = in[(i + 1) % n];
+        const Vert &a = in[i], &b = in[(i + 1) % n];
         const MeReal da = Dot(a.p, axis) - lim, db = Dot(b.p, axis) - lim;
         if (da <= 0) out[m++] = a;
         if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
             const MeReal t = da / (da - db);
-            out[m++] = {a.p + t * (b.p - a.p), 0, 1};
+            out[m++] = {a.p + t * (b.p - a.p), da < 0 ? line : a.out};
         }
     }
     return m;
 }
 
+// The face index 2k + (outward normal along -axis k) of the face of box b
+// along axis k whose outward normal is m.
+int FaceIndex(const Box &b, int k, V3 m) { return 2 * k + (Dot(b.f.axis[k], m) < 0 ? 1 : 0); }
+
 // Face contact: reference box `ref` face along axis index k with outward
-// normal m; the incident box `inc`. Returns the number of points in out.
-int FaceContacts(const Box &ref, int k, V3 m, const Box &inc, MeReal tol, Pt *out) {
+// normal m; the incident box `inc`. Writes the candidates to out (at most
+// 8) and the incident face index; returns the count.
+int FaceContacts(const Box &ref, int k, V3 m, const Box &inc, MeReal tol, Pt *out, int *incFace) {
     int ii = 0;
     MeReal best = -1;
     for (int i = 0; i < 3; ++i) {
@@ -67,28 +113,45 @@ int FaceContacts(const Box &ref, int k, V3 m, const Box &inc, MeReal tol, Pt *ou
     }
     const int i1 = (ii + 1) % 3, i2 = (ii + 2) % 3;
     const MeReal sign = Dot(inc.f.axis[ii], m) > 0 ? -1 : 1;
-    const V3 fc = inc.f.o + sign * inc.h[ii] * inc.f.axis[ii];
+    *incFace = 2 * ii + (sign < 0 ? 1 : 0);
+    const V3 fc = inc.f.o + sign * inc.h[ii] * inc.f.axis[ii] - ref.f.o;
     const V3 e1 = inc.h[i1] * inc.f.axis[i1], e2 = inc.h[i2] * inc.f.axis[i2];
-    Pt a[16], b[16];
-    a[0] = {fc + e1 + e2, 0, 0};
-    a[1] = {fc - e1 + e2, 0, 0};
-    a[2] = {fc - e1 - e2, 0, 0};
-    a[3] = {fc + e1 - e2, 0, 0};
-    int n = 4;
+    Vert a[16], b[16];
+    a[0] = {fc + e1 + e2, 0};
+    a[1] = {fc - e1 + e2, 1};
+    a[2] = {fc - e1 - e2, 2};
+    a[3] = {fc + e1 - e2, 3};
     // Side planes of the reference face, relative to the reference centre.
     const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-    for (int i = 0; i < n; ++i) a[i].p = a[i].p - ref.f.o;
-    n = ClipPlane(a, n, ref.f.axis[k1], ref.h[k1], b);
-    n = ClipPlane(b, n, -ref.f.axis[k1], ref.h[k1], a);
-    n = ClipPlane(a, n, ref.f.axis[k2], ref.h[k2], b);
-    n = ClipPlane(b, n, -ref.f.axis[k2], ref.h[k2], a);
+    int n = ClipPlane(a, 4, ref.f.axis[k1], ref.h[k1], 4, b);
+    n = ClipPlane(b, n, -ref.f.axis[k1], ref.h[k1], 5, a);
+    n = ClipPlane(a, n, ref.f.axis[k2], ref.h[k2], 6, b);
+    n = ClipPlane(b, n, -ref.f.axis[k2], ref.h[k2], 7, a);
     int count = 0;
     for (int i = 0; i < n && count < 8; ++i) {
         const MeReal d = Dot(a[i].p, m) - ref.h[k];
         if (d > tol) continue;
-        out[count++] = {ref.f.o + a[i].p - (MeReal)0.5 * d * m, d, a[i].dims};
+        const int in = a[(i + n - 1) % n].out;
+        const int dims = (in >= 4) + (a[i].out >= 4);  // corner, edge point, reference corner
+        out[count++] = {ref.f.o + a[i].p - (MeReal)0.5 * d * m, d, dims, in * 8 + a[i].out};
     }
     return count;
+}
+
+// Keeps at most four candidates spread over the face (contact_reduce.h),
+// in the reference face's axes k1, k2; returns the new count.
+int SpreadFour(Pt *pts, int n, const Box &ref, int k, MeReal slack) {
+    if (n <= 4) return n;
+    const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    ReducePoint rp[8];
+    for (int i = 0; i < n; ++i) {
+        const V3 d = pts[i].p - ref.f.o;
+        rp[i] = {Dot(d, ref.f.axis[k1]), Dot(d, ref.f.axis[k2]), -(double)pts[i].depth};
+    }
+    int keep[4];
+    const int m = ReduceToFour(rp, n, slack, keep);
+    for (int i = 0; i < m; ++i) pts[i] = pts[keep[i]];
+    return m;
 }
 
 // Moves the chosen `keep` points to the front: the deepest, then each time
@@ -110,66 +173,85 @@ void Reduce(Pt *pts, int n, int keep) {
     }
 }
 
+// The edge-edge contact on axis A_i x B_j (unit n from box 2 to box 1).
+void EdgeContact(const Box &b1, const Box &b2, int i, int j, V3 n, MeReal s,
+                 McdIntersectResult *r) {
+    V3 c1 = b1.f.o, c2 = b2.f.o;
+    MeU32 bits = 0;
+    for (int q = 1; q < 3; ++q) {
+        const int k1 = (i + q) % 3, k2 = (j + q) % 3;
+        const bool up1 = Dot(b1.f.axis[k1], n) > 0, up2 = Dot(b2.f.axis[k2], n) > 0;
+        c1 = c1 - (up1 ? 1 : -1) * b1.h[k1] * b1.f.axis[k1];
+        c2 = c2 + (up2 ? 1 : -1) * b2.h[k2] * b2.f.axis[k2];
+        bits |= (up1 ? 1u : 0u) << (q - 1) | (up2 ? 1u : 0u) << (q + 1);
+    }
+    const V3 d1 = b1.h[i] * b1.f.axis[i], d2 = b2.h[j] * b2.f.axis[j];
+    MeReal u, v;
+    ClosestSegmentSegment(c1 - d1, c1 + d1, c2 - d2, c2 + d2, u, v);
+    const V3 P = c1 - d1 + (2 * u) * d1, Q = c2 - d2 + (2 * v) * d2;
+    EmitV(r, (MeReal)0.5 * (P + Q), n, s, 1, 1,
+          feature::Pack(feature::kBoxEdge, (MeU32)(3 * i + j), bits));
+}
+
 int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
     const Box b1(m1), b2(m2);
     const MeReal tol = ContactTolerance(m1->framework);
     const V3 T = b1.f.o - b2.f.o;
-    MeReal bestFace = -MEINFINITY, bestEdge = -MEINFINITY;
-    int faceAxis = 0, edgeAxis = -1;
-    V3 faceL, edgeL;
-    auto test = [&](V3 L, int id, bool edge) {
+    MeReal best[3] = {-MEINFINITY, -MEINFINITY, -MEINFINITY};  // box 1 faces, box 2 faces, edges
+    int axis[3] = {0, 0, -1};
+    V3 bestL[3];
+    auto test = [&](V3 L, int id, int cls) {
         const MeReal s = std::fabs(Dot(T, L)) - b1.Radius(L) - b2.Radius(L);
-        MeReal &best = edge ? bestEdge : bestFace;
-        if (s > best) {
-            best = s;
-            (edge ? edgeAxis : faceAxis) = id;
-            (edge ? edgeL : faceL) = L;
-        }
+        if (s > best[cls]) best[cls] = s, axis[cls] = id, bestL[cls] = L;
         return s <= tol;
     };
     for (int i = 0; i < 3; ++i)
-        if (!test(b1.f.axis[i], i, false)) return 0;
+        if (!test(b1.f.axis[i], i, 0)) return 0;
     for (int j = 0; j < 3; ++j)
-        if (!test(b2.f.axis[j], 3 + j, false)) return 0;
+        if (!test(b2.f.axis[j], j, 1)) return 0;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             const V3 L = Cross(b1.f.axis[i], b2.f.axis[j]);
             const MeReal len = Norm(L);
             if (len < (MeReal)1e-4) continue;
-            if (!test((1 / len) * L, 3 * i + j, true)) return 0;
+            if (!test((1 / len) * L, 3 * i + j, 2)) return 0;
         }
     const MeReal hmin = std::fmin(std::fmin(std::fmin(b1.h[0], b1.h[1]), b1.h[2]),
                                   std::fmin(std::fmin(b2.h[0], b2.h[1]), b2.h[2]));
-    const bool edge = edgeAxis >= 0 && bestEdge > bestFace + (MeReal)1e-3 * hmin;
-    V3 n = edge ? edgeL : faceL;
+    auto clearlyBetter = [&](MeReal x, MeReal y) { return x > kRelative * y + kAbsolute * hmin; };
+    int face = b2.FaceArea(axis[1]) > b1.FaceArea(axis[0]) ? 1 : 0;
+    if (clearlyBetter(best[1], best[0])) face = 1;
+    else if (clearlyBetter(best[0], best[1])) face = 0;
+    const bool edge = axis[2] >= 0 && clearlyBetter(best[2], best[face]);
+    const int cls = edge ? 2 : face;
+    V3 n = bestL[cls];
     if (Dot(n, T) < 0) n = -n;
     if (edge) {
-        const int i = edgeAxis / 3, j = edgeAxis % 3;
-        V3 c1 = b1.f.o, c2 = b2.f.o;
-        for (int k = 0; k < 3; ++k) {
-            if (k != i) c1 = c1 - (Dot(b1.f.axis[k], n) > 0 ? 1 : -1) * b1.h[k] * b1.f.axis[k];
-            if (k != j) c2 = c2 + (Dot(b2.f.axis[k], n) > 0 ? 1 : -1) * b2.h[k] * b2.f.axis[k];
-        }
-        const V3 d1 = b1.h[i] * b1.f.axis[i], d2 = b2.h[j] * b2.f.axis[j];
-        MeReal u, v;
-        ClosestSegmentSegment(c1 - d1, c1 + d1, c2 - d2, c2 + d2, u, v);
-        const V3 P = c1 - d1 + (2 * u) * d1, Q = c2 - d2 + (2 * v) * d2;
-        EmitV(r, (MeReal)0.5 * (P + Q), n, bestEdge, 1, 1);
+        EdgeContact(b1, b2, axis[2] / 3, axis[2] % 3, n, best[2], r);
         return Finish(r, n);
     }
     Pt pts[8];
-    const bool refIs1 = faceAxis < 3;
-    const int count = refIs1 ? FaceContacts(b1, faceAxis, -n, b2, tol, pts)
-                             : FaceContacts(b2, faceAxis - 3, n, b1, tol, pts);
+    const Box &ref = face == 0 ? b1 : b2, &inc = face == 0 ? b2 : b1;
+    const int k = axis[face];
+    const V3 m = face == 0 ? -n : n;
+    int incFace = 0;
+    int count = FaceContacts(ref, k, m, inc, tol, pts, &incFace);
+    count = SpreadFour(pts, count, ref, k, std::fmax(tol, (MeReal)1e-3 * hmin));
     const int keep = count < r->contactMaxCount ? count : r->contactMaxCount;
     if (keep < count) Reduce(pts, count, keep);
-    for (int i = 0; i < keep; ++i)
-        EmitV(r, pts[i].p, n, pts[i].depth, refIs1 ? 2 : pts[i].dims, refIs1 ? pts[i].dims : 2);
+    const MeU32 kind = face == 0 ? feature::kBoxFace1 : feature::kBoxFace2;
+    const MeU32 refFace = (MeU32)FaceIndex(ref, k, m);
+    for (int i = 0; i < keep; ++i) {
+        const int incDims = pts[i].dims;
+        EmitV(r, pts[i].p, n, pts[i].depth, face == 0 ? 2 : incDims, face == 0 ? incDims : 2,
+              feature::Pack(kind, refFace, (MeU32)incFace, (MeU32)pts[i].key));
+    }
     if (r->contactCount == 0) {
         // Clipping lost every point (the deepest corner lies outside the
         // reference face): one contact on the line through box 2's centre
         // along n, midway between the two boxes' support planes.
-        EmitV(r, b2.f.o + (b2.Radius(n) + (MeReal)0.5 * bestFace) * n, n, bestFace, 2, 2);
+        EmitV(r, b2.f.o + (b2.Radius(n) + (MeReal)0.5 * best[face]) * n, n, best[face], 2, 2,
+              feature::Pack(feature::kSingle, feature::kBoxBoxFallback));
     }
     return Finish(r, n);
 }

@@ -5,11 +5,17 @@
 // (normal n = row 2 of the plane TM, point o = row 3). Every corner with
 // h_k <= tolerance is a contact: position k - h_k/2 n (midway between the
 // corner and the plane), normal +n, separation h_k, dims vertex(0)/face(2).
-// A box resting flat gives its 4 lower corners; an edge 2; a corner 1. When
-// more corners touch than the buffer holds, the deepest are kept.
+// A box resting flat gives its 4 lower corners; an edge 2; a corner 1. A box
+// thinner than the tolerance can touch with more: 4 are kept, spread over
+// the plane (ReduceToFour, contact_reduce.h, in the plane's axes). When more corners touch
+// than the buffer holds, the deepest are kept. Feature id: the corner k
+// (bit i set: +h_i along axis i).
+#include "contact_reduce.h"
+#include "feature_id.h"
 #include "nearfield.h"
 
 #include <algorithm>
+#include <cmath>
 
 using namespace karma::mcd;
 
@@ -34,6 +40,21 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         if (height[k] <= tol) touching[count++] = k;
     }
     if (count == 0) return 0;
+    // A thin box can touch with more than 4 corners: keep 4 spread over the
+    // plane (contact_reduce.h, in the plane's axes).
+    if (count > 4) {
+        ReducePoint rp[8];
+        for (int j = 0; j < count; ++j) {
+            const int k = touching[j];
+            rp[j] = {(double)MeVector3Dot(corner[k], plane[0]),
+                     (double)MeVector3Dot(corner[k], plane[1]), -(double)height[k]};
+        }
+        int keep[4];
+        const MeReal thin = std::fmin(std::fmin(half[0], half[1]), half[2]);
+        const MeReal slack = std::fmax(tol, (MeReal)1e-3 * thin);
+        count = ReduceToFour(rp, count, slack, keep);
+        for (int j = 0; j < count; ++j) touching[j] = touching[keep[j]];
+    }
     // Deepest first; ties keep corner order, so the result is deterministic.
     std::stable_sort(touching, touching + count,
                      [&](int a, int b) { return height[a] < height[b]; });
@@ -42,7 +63,7 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         MeVector3 pos;
         MeVector3Copy(pos, corner[k]);
         MeVector3MultiplyAdd(pos, -height[k] / 2, n);
-        if (!Emit(r, pos, n, height[k], 0, 2)) break;
+        if (!Emit(r, pos, n, height[k], 0, 2, feature::Pack(feature::kBoxPlane, (MeU32)k))) break;
     }
     MeVector3Copy(r->normal, n);
     r->touch = 1;

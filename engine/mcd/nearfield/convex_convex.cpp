@@ -6,10 +6,12 @@
 // Model1 is A, model2 is B. Penetration() gives the normal n from B towards
 // A with the least penetration (or, within the tolerance, the gap) and the
 // separation s along it; Manifold() turns the supporting features of A
-// (along -n) and B (along +n) into up to 16 contacts with gaps <= tol: a
+// (along -n) and B (along +n) into up to 4 contacts with gaps <= tol: a
 // convex box resting on a box gives its 4 corners, a cylinder standing on
-// a box 8 rim points, a hull edge on a face 2, a curved pair 1.
+// a box 4 of its 8 rim samples, a hull edge on a face 2, a curved pair 1.
+// Feature ids: Manifold's (feature_id.h, convex/manifold.cpp).
 #include "convex_common.h"
+#include "feature_id.h"
 
 #include <algorithm>
 
@@ -24,14 +26,18 @@ int ConvexIntersect(const Shape &a, const Shape &b, double tol, McdIntersectResu
     double s;
     if (!Penetration(a, b, tol, &n, &s)) return 0;
     ManifoldPoint pts[16];
-    const int count = Manifold(a, b, n, s, tol, ~0u, pts, std::min(16, std::max(r->contactMaxCount, 1)));
+    const int count = Manifold(a, b, n, s, tol, ~0u, pts, std::max(r->contactMaxCount, 1));
     MeVector3 normal;
     ToMe(normal, n);
+    const int first = r->contactCount;
     for (int i = 0; i < count; ++i) {
         MeVector3 pos;
         ToMe(pos, pts[i].position);
-        if (!Emit(r, pos, normal, (MeReal)pts[i].separation, pts[i].dims1, pts[i].dims2)) break;
+        if (!Emit(r, pos, normal, (MeReal)pts[i].separation, pts[i].dims1, pts[i].dims2,
+                  pts[i].feature))
+            break;
     }
+    feature::MakeDistinct(r->contacts, first, r->contactCount);
     MeVector3Copy(r->normal, normal);
     r->touch = 1;
     return 1;
@@ -46,10 +52,11 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     if (!MakeShape(p->model1->instance.geometry, ModelTM(p->model1), a)) return 0;
     if (!MakeShape(p->model2->instance.geometry, ModelTM(p->model2), b)) return 0;
     const double tol = ContactTolerance(p->model1->framework);
-    // Two shapes of one type: always computed in one canonical order (by
-    // their TMs), so that both argument orders give mirrored contacts.
-    const MeReal *ta = ModelTM(p->model1)[0], *tb = ModelTM(p->model2)[0];
-    if (a.kind != b.kind || !std::lexicographical_compare(tb, tb + 16, ta, ta + 16))
+    // Two shapes of one type: always computed in one fixed order
+    // (ComputedFirst, nearfield.h), so that both argument orders give
+    // mirrored contacts, and the order, the reference face and so the
+    // feature ids do not change while the models move.
+    if (a.kind != b.kind || ComputedFirst(p->model1, p->model2))
         return ConvexIntersect(a, b, tol, r);
     const int first = r->contactCount;
     if (!ConvexIntersect(b, a, tol, r)) return 0;

@@ -3,14 +3,18 @@
 // The cylinder (axis a, radius R, half height H) touches a plane (normal n,
 // point o) with its rims: the circles e +- R (cos phi u + sin phi v) around
 // the cap centres e = c +- H a, where u is the unit direction of -(n - (n.a)
-// a) (the way down the plane within the cap; any perpendicular of a when the
-// cap is parallel to the plane) and v = a x u. A rim point p has height
-// h = (p - o) . n. Eight points on each rim, starting at the lowest (phi =
-// 0), are candidates; each with h <= tolerance is a contact at p - h/2 n,
+// a) (the way down the plane within the cap) and v = a x u. When the caps
+// are within 2 degrees of the plane (|n - (n.a) a| < 0.035) u is instead the
+// cylinder's own x axis, so a cylinder standing on the plane keeps the same
+// eight rim points (fixed in the body) however it rocks; the lowest of them
+// is then above the true lowest rim point by at most R sin(2 deg)
+// (1 - cos 22.5 deg) = 0.0027 R. A rim point p has height
+// h = (p - o) . n. Eight points on each rim, starting at phi = 0, are
+// candidates; each with h <= tolerance is a contact at p - h/2 n,
 // normal +n, separation h (rim edge on plane face). So a cylinder standing
 // on its end gives 8, lying on its side 2 (the lowest point of each rim) and
 // tilted 1 or 2 (more when deep). The deepest are kept when the buffer is
-// short.
+// short. Feature id: (cap, rim sample index).
 #include "prim_math.h"
 
 #include <algorithm>
@@ -30,7 +34,7 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     const MeReal tol = ContactTolerance(p->model1->framework);
     V3 u = Dot(n, a) * a - n;
     const MeReal ulen = Norm(u);
-    u = ulen > (MeReal)1e-6 ? (1 / ulen) * u : AnyPerpendicular(a);
+    u = ulen >= (MeReal)0.035 ? (1 / ulen) * u : cyl.axis[0];
     const V3 v = Cross(a, u);
     V3 pts[2 * kRimPoints];
     MeReal h[2 * kRimPoints];
@@ -49,7 +53,9 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     std::stable_sort(order, order + count, [&](int x, int y) { return h[x] < h[y]; });
     for (int j = 0; j < count; ++j) {
         const int i = order[j];
-        if (!EmitV(r, pts[i] - (MeReal)0.5 * h[i] * n, n, h[i], 1, 2)) break;
+        const MeU32 id = feature::Pack(feature::kCylinderPlane, (MeU32)(i / kRimPoints),
+                                      (MeU32)(i % kRimPoints));
+        if (!EmitV(r, pts[i] - (MeReal)0.5 * h[i] * n, n, h[i], 1, 2, id)) break;
     }
     return Finish(r, n);
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "nearfield.h"
+#include "feature_id.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,9 +60,10 @@ struct Frame {
 };
 
 // Emit() for V3 values.
-inline bool EmitV(McdIntersectResult *r, V3 pos, V3 n, MeReal sep, int dims1, int dims2) {
+inline bool EmitV(McdIntersectResult *r, V3 pos, V3 n, MeReal sep, int dims1, int dims2,
+                  MeU32 feature) {
     const MeVector3 p = {pos.x, pos.y, pos.z}, nn = {n.x, n.y, n.z};
-    return Emit(r, p, nn, sep, dims1, dims2);
+    return Emit(r, p, nn, sep, dims1, dims2, feature);
 }
 
 // Sets the representative normal and touch when contacts were emitted.
@@ -109,12 +111,12 @@ namespace karma::mcd::prim {
 
 // Same-type pairs (box-box, sphyl-sphyl) are called with the caller's order,
 // so to give exactly mirrored results for (a, b) and (b, a) the test runs
-// with the models in one fixed order (by address) and, when that is not the
-// caller's, negates the normals and swaps the dims bytes afterwards.
+// with the models in one fixed order (ComputedFirst, nearfield.h) and, when
+// that is not the caller's, negates the normals and swaps the dims bytes
+// afterwards (feature ids are the same either way).
 template <class F>
 int OrderedSameType(McdModelPair *p, McdIntersectResult *r, F test) {
-    if (!std::less<const McdModel *>()(p->model2, p->model1))
-        return test(p->model1, p->model2, r);
+    if (ComputedFirst(p->model1, p->model2)) return test(p->model1, p->model2, r);
     const int first = r->contactCount;
     const int touch = test(p->model2, p->model1, r);
     for (int i = first; i < r->contactCount; ++i) {

@@ -52,7 +52,8 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         onBox = box.ToWorld(k);
         s = -best - radius;
     }
-    EmitV(r, (MeReal)0.5 * ((c - radius * n) + onBox), n, s, 2, boxDims);
+    EmitV(r, (MeReal)0.5 * ((c - radius * n) + onBox), n, s, 2, boxDims,
+          feature::Pack(feature::kSingle, feature::kSphereBox));
     return Finish(r, n);
 }
 

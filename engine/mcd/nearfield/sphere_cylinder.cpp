@@ -51,7 +51,8 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
             s = -cap - radius;
         }
     }
-    EmitV(r, (MeReal)0.5 * ((c - radius * n) + cyl.ToWorld(k)), n, s, 2, dims);
+    EmitV(r, (MeReal)0.5 * ((c - radius * n) + cyl.ToWorld(k)), n, s, 2, dims,
+          feature::Pack(feature::kSingle, feature::kSphereCylinder));
     return Finish(r, n);
 }
 

@@ -7,6 +7,7 @@
 // projection on the plane c - h n: position c - (r + h)/2 n. The plane is
 // solid below, so a sphere whose centre is under it reports s = h - r < -r.
 #include "nearfield.h"
+#include "feature_id.h"
 
 using namespace karma::mcd;
 
@@ -25,7 +26,7 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     MeVector3 pos;
     MeVector3Copy(pos, c);
     MeVector3MultiplyAdd(pos, -(radius + h) / 2, n);
-    Emit(r, pos, n, s, 2, 2);
+    Emit(r, pos, n, s, 2, 2, feature::Pack(feature::kSingle, feature::kSpherePlane));
     MeVector3Copy(r->normal, n);
     r->touch = 1;
     return 1;

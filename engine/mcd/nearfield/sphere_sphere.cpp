@@ -6,6 +6,7 @@
 //   coincide); one contact midway between the surface points c2 + r2 n and
 //   c1 - r1 n, i.e. at c2 + (r2 + s/2) n. Both features are faces (dims 2).
 #include "nearfield.h"
+#include "feature_id.h"
 
 #include <cmath>
 
@@ -27,7 +28,7 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     MeVector3 pos;
     MeVector3Copy(pos, c2);
     MeVector3MultiplyAdd(pos, r2 + s / 2, n);
-    Emit(r, pos, n, s, 2, 2);
+    Emit(r, pos, n, s, 2, 2, feature::Pack(feature::kSingle, feature::kSphereSphere));
     MeVector3Copy(r->normal, n);
     r->touch = 1;
     return 1;

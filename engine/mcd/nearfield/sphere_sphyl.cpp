@@ -26,7 +26,8 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     const MeReal s = dist - r1 - R;
     if (s > ContactTolerance(p->model1->framework)) return 0;
     n = dist > 0 ? (1 / dist) * n : sphyl.axis[0];
-    EmitV(r, (MeReal)0.5 * ((c - r1 * n) + (k + R * n)), n, s, 2, 2);
+    EmitV(r, (MeReal)0.5 * ((c - r1 * n) + (k + R * n)), n, s, 2, 2,
+          feature::Pack(feature::kSingle, feature::kSphereSphyl));
     return Finish(r, n);
 }
 

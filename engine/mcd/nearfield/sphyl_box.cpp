@@ -144,11 +144,15 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         f[k] = n[k] > 0 ? 1 : -1;
         const V3 nw = box.Dir(f);
         if (ClipSlabs(e0, e1, h, 7 & ~(1 << k), t0, t1)) {
-            for (MeReal t : {t0, t1}) {
+            for (int end = 0; end < 2; ++end) {
+                const MeReal t = end == 0 ? t0 : t1;
                 const V3 E = e0 + t * (e1 - e0);
                 const MeReal gap = Dot(E, f) - h[k];
-                if (gap - radius <= tol)
-                    EmitV(r, box.ToWorld(E - (MeReal)0.5 * (radius + gap) * f), nw, gap - radius, 2, 2);
+                if (gap - radius <= tol) {
+                    const V3 at = box.ToWorld(E - (MeReal)0.5 * (radius + gap) * f);
+                    EmitV(r, at, nw, gap - radius, 2, 2,
+                          feature::Pack(feature::kSphylBoxFace, 2 * k + (f[k] < 0), end));
+                }
                 if ((t1 - t0) * 2 * H <= tol) break;  // one point
             }
         }
@@ -156,7 +160,8 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         n = f;
     }
     const V3 nw = box.Dir(n);
-    EmitV(r, box.ToWorld(P - (radius + (MeReal)0.5 * s) * n), nw, s, 2, 1);
+    EmitV(r, box.ToWorld(P - (radius + (MeReal)0.5 * s) * n), nw, s, 2, 1,
+          feature::Pack(feature::kSingle, feature::kSphylBox));
     return Finish(r, nw);
 }
 

@@ -6,7 +6,8 @@
 // s_e <= tolerance, a contact at e - (r + h_e)/2 n (midway between the
 // sphyl's point e - r n and the plane point e - h_e n), normal +n. A sphyl
 // lying flat gives 2 contacts, a tilted one 1 (the lower end) or 2, and a
-// zero-length sphyl (a sphere) 1. The deeper end comes first.
+// zero-length sphyl (a sphere) 1. The deeper end comes first; each
+// contact's feature id names its core end (feature_id.h).
 #include "prim_math.h"
 
 #include <utility>
@@ -24,15 +25,19 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     const MeReal tol = ContactTolerance(p->model1->framework);
     V3 e[2] = {sphyl.o - H * sphyl.axis[2], sphyl.o + H * sphyl.axis[2]};
     MeReal h[2] = {Dot(e[0] - plane.o, n), Dot(e[1] - plane.o, n)};
+    MeU32 end[2] = {0, 1};  // the core end each entry is (its feature id)
     if (h[1] < h[0]) {
         std::swap(e[0], e[1]);
         std::swap(h[0], h[1]);
+        std::swap(end[0], end[1]);
     }
     const int ends = H > 0 ? 2 : 1;
     for (int i = 0; i < ends; ++i) {
         const MeReal s = h[i] - radius;
         if (s > tol) break;
-        if (!EmitV(r, e[i] - (MeReal)0.5 * (radius + h[i]) * n, n, s, 2, 2)) break;
+        if (!EmitV(r, e[i] - (MeReal)0.5 * (radius + h[i]) * n, n, s, 2, 2,
+                   feature::Pack(feature::kSphylPlane, end[i])))
+            break;
     }
     return Finish(r, n);
 }

@@ -75,16 +75,19 @@ int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
         const MeReal t0 = std::fmax(-s1.h, std::fmin(c0, c1));
         const MeReal t1 = std::fmin(s1.h, std::fmax(c0, c1));
         if (t1 - t0 > tol) {
-            for (MeReal t : {t0, t1}) {
+            for (int end = 0; end < 2; ++end) {
+                const MeReal t = end == 0 ? t0 : t1;
                 const V3 pt = s1.o + t * s1.a;
                 const V3 q = s2.e0 + ClosestOnSegment(s2.e0, s2.e1, pt) * (s2.e1 - s2.e0);
                 const MeReal d = Dot(pt - q, n) - s1.r - s2.r;
-                EmitV(r, (MeReal)0.5 * ((pt - s1.r * n) + (q + s2.r * n)), n, d, 2, 2);
+                EmitV(r, (MeReal)0.5 * ((pt - s1.r * n) + (q + s2.r * n)), n, d, 2, 2,
+                      feature::Pack(feature::kSphylPair, 1 + end));
             }
             return Finish(r, n);
         }
     }
-    EmitV(r, (MeReal)0.5 * ((P - s1.r * n) + (Q + s2.r * n)), n, s, 2, 2);
+    EmitV(r, (MeReal)0.5 * ((P - s1.r * n) + (Q + s2.r * n)), n, s, 2, 2,
+          feature::Pack(feature::kSingle, feature::kSphylSphyl));
     return Finish(r, n);
 }
 

@@ -19,10 +19,21 @@
 // T's polygon clipping only along flagged edges, so a box on a smooth
 // floor keeps its 4 corners across the triangles. Contacts of different
 // triangles within 1e-3 of model1's size with normals within ~2.5 degrees
-// are one (the deeper kept). element2.ptr = the McdUserTriangle.
+// are one (the first triangle's, with the deeper separation). When more
+// than four remain and all their normals agree within ~2.5 degrees (a face
+// resting on the list), four are kept, spread over the contact area
+// (ReduceToFour, contact_reduce.h, in model1's axes). element2.ptr = the
+// McdUserTriangle.
+// Feature id (feature_id.h): Mix(triangle key, id against the triangle),
+// the key a hash of the triangle's three corners in the list's frame (so it
+// does not depend on the order the callback returns triangles in), the id
+// Manifold's, or a constant for a sphere.
+#include "contact_reduce.h"
 #include "convex_common.h"
+#include "feature_id.h"
 
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 using namespace karma::mcd;
@@ -85,8 +96,45 @@ bool SharpAlong(const Tri &t, V n, double scale) {
     return t.EdgeSharp(on[0]) || t.EdgeSharp((on[0] + 2) % 3);
 }
 
+// A hash of the triangle's corners (their bits, in the list's frame).
+MeU32 TriangleKey(const McdUserTriangle &ut) {
+    MeU32 h = 0x2545F491u;
+    for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i) {
+            const MeReal x = (*ut.vertices[k])[i];
+            unsigned char bytes[sizeof(MeReal)];
+            std::memcpy(bytes, &x, sizeof x);
+            MeU32 w = 0;
+            for (std::size_t b = 0; b < sizeof x; ++b) w = w * 131u + bytes[b];
+            h = feature::Mix(h, w);
+        }
+    return h;
+}
+
+// Keeps four of a face-face touch's contacts (see the top of the file).
+void SpreadFour(std::vector<McdContact> &out, const Shape &obj, double tol) {
+    if (out.size() <= 4) return;
+    const V n = FromMe(out[0].normal);
+    for (const McdContact &c : out)
+        if (Dot(FromMe(c.normal), n) <= 0.999) return;
+    V u = obj.axis[0] - Dot(obj.axis[0], n) * n;
+    if (Len(u) < 0.5) u = obj.axis[1] - Dot(obj.axis[1], n) * n;
+    u = Unit(u);
+    const V v = Cross(n, u);
+    std::vector<ReducePoint> rp;
+    for (const McdContact &c : out) {
+        const V d = FromMe(c.position) - obj.t;
+        rp.push_back({Dot(d, u), Dot(d, v), -(double)c.separation});
+    }
+    int keep[4];
+    const double slack = std::fmax(tol, 1e-3 * obj.scale);
+    const int kept = ReduceToFour(rp.data(), (int)rp.size(), slack, keep);
+    for (int i = 0; i < kept; ++i) out[i] = out[keep[i]];
+    out.resize(kept);
+}
+
 void Add(std::vector<McdContact> &out, V pos, V n, double s, int d1, int d2, void *tri,
-         double merge) {
+         MeU32 id, double merge) {
     for (McdContact &c : out) {
         const V cn = FromMe(c.normal);
         if (Len(FromMe(c.position) - pos) <= merge && Dot(cn, n) > 0.999) {
@@ -100,6 +148,7 @@ void Add(std::vector<McdContact> &out, V pos, V n, double s, int d1, int d2, voi
     c.separation = (MeReal)s;
     c.dims = (MeI16)((d1 & 0xFF) | ((d2 & 0xFF) << 8));
     c.element2.ptr = tri;
+    c.feature = id;
     out.push_back(c);
 }
 
@@ -156,7 +205,10 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
                                                       : (twoSided && side < 0 ? -t.f : t.f);
             if (!twoSided && Dot(n, t.f) < 0) n = -n;
             s = Dot(obj.t - q, n) - obj.margin;
-            Add(out, q + (0.5 * s) * n, n, s, 2, inside ? 2 : 1, tris + i, merge);
+            Add(out, q + (0.5 * s) * n, n, s, 2, inside ? 2 : 1, tris + i,
+                feature::Mix(TriangleKey(ut),
+                             feature::Pack(feature::kSingle, feature::kSphereTriangle)),
+                merge);
             continue;
         }
         if (!Penetration(obj, ts, tol, &n, &s)) continue;
@@ -168,16 +220,21 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
         for (int k = 0; k < 3; ++k)
             if (t.EdgeSharp(k)) mask |= 1u << k;
         ManifoldPoint pts[16];
-        const int np = Manifold(obj, ts, n, s, tol, mask, pts, 16);
+        const int np = Manifold(obj, ts, n, s, tol, mask, pts, 4);
+        const MeU32 key = TriangleKey(ut);
         for (int k = 0; k < np; ++k)
-            Add(out, pts[k].position, n, pts[k].separation, pts[k].dims1, pts[k].dims2, tris + i, merge);
+            Add(out, pts[k].position, n, pts[k].separation, pts[k].dims1, pts[k].dims2, tris + i,
+                feature::Mix(key, pts[k].feature), merge);
     }
     if (out.empty()) return 0;
+    SpreadFour(out, obj, tol);
     std::stable_sort(out.begin(), out.end(), [](const McdContact &a, const McdContact &b) {
         return a.separation < b.separation;
     });
     const int n = std::min((int)out.size(), r->contactMaxCount);
+    const int first = r->contactCount;
     for (int k = 0; k < n; ++k) r->contacts[r->contactCount++] = out[k];
+    feature::MakeDistinct(r->contacts, first, r->contactCount);
     MeVector3Copy(r->normal, out[0].normal);
     r->touch = 1;
     return 1;

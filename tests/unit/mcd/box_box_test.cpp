@@ -3,7 +3,9 @@
 // corner on a face, edge-edge, separation found only on an edge axis,
 // coincident boxes, both argument orders.
 #include <algorithm>
+#include <cmath>
 #include <set>
+#include <vector>
 #include <utility>
 
 #include "nearfield_test_support.h"
@@ -84,29 +86,33 @@ TEST(McdBoxBox, OverhangingBoxContactsAtTheCornersOfTheOverlap) {
   }
 }
 
-TEST(McdBoxBox, TurnedBoxGivesTheOctagonAndReducesToTheBuffer) {
+TEST(McdBoxBox, TurnedBoxGivesFourOfTheOctagonAndReducesToTheBuffer) {
   Framework fw;
   Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);
   // Half side 1.8 turned 45 degrees: corners at 2.55 along x and y, clipped
-  // by |x|, |y| <= 2 into an octagon.
+  // by |x|, |y| <= 2 into an octagon with vertices (+-2, +-0.546) and
+  // (+-0.546, +-2). Four alternate vertices are kept (contact_reduce.h):
+  // the square of circumradius |(2, 0.546)| = 2.073, area 2 * 2.073^2 = 8.6.
   Placed top(McdBoxCreate(fw, (MeReal)3.6, (MeReal)3.6, 2), 0, 0, (MeReal)1.99, {0, 0, 1},
              (MeReal)(ME_PI / 4));
   Hit h(top.model, base.model);
-  ASSERT_EQ(h.count(), 8);
-  for (int i = 0; i < 8; ++i) {
+  ASSERT_EQ(h.count(), 4);
+  double angle[4];
+  for (int i = 0; i < 4; ++i) {
     EXPECT_NEAR(std::fmax(std::fabs(h.c[i].position[0]), std::fabs(h.c[i].position[1])), 2, 1e-5);
+    EXPECT_NEAR(std::hypot(h.c[i].position[0], h.c[i].position[1]), 2.0732, 1e-3);
     EXPECT_NEAR(h.c[i].separation, -0.01, kEps);
+    angle[i] = std::atan2(h.c[i].position[1], h.c[i].position[0]);
   }
-  Hit four(top.model, base.model, 4);
-  ASSERT_EQ(four.count(), 4);
-  // The four kept span the octagon: their bounding box is nearly the whole.
-  double lo[2] = {9, 9}, hi[2] = {-9, -9};
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 2; ++k) {
-      lo[k] = std::fmin(lo[k], four.c[i].position[k]);
-      hi[k] = std::fmax(hi[k], four.c[i].position[k]);
-    }
-  EXPECT_GT((hi[0] - lo[0]) * (hi[1] - lo[1]), 8.0);
+  // One per quadrant of turn: sorted angles 90 degrees apart.
+  std::sort(angle, angle + 4);
+  for (int i = 1; i < 4; ++i) EXPECT_NEAR(angle[i] - angle[i - 1], ME_PI / 2, 1e-3);
+  // A shorter buffer keeps the deepest, then the farthest: two opposite ones.
+  Hit two(top.model, base.model, 2);
+  ASSERT_EQ(two.count(), 2);
+  EXPECT_NEAR(std::hypot(two.c[0].position[0] - two.c[1].position[0],
+                         two.c[0].position[1] - two.c[1].position[1]),
+              2 * 2.0732, 2e-3);
   // Small turned box fully on the face: its 4 corners.
   Placed small(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)1.99, {0, 0, 1}, (MeReal)(ME_PI / 4));
   Hit s(small.model, base.model);
@@ -200,6 +206,88 @@ TEST(McdBoxBox, CoincidentAndParallelBoxesGiveFiniteResults) {
   ASSERT_EQ(p.count(), 4);
   EXPECT_NEAR(p.c[0].separation, -0.01, kEps);
   EXPECT_NEAR(p.c[0].normal[0], 1, kEps);
+}
+
+// Two unit cubes stacked 1 mm into each other, the upper turned by every
+// yaw from 0 to 45 degrees (pile1000's columns): face contacts on the
+// common face (3 or 4 of them, normal along z, separation = the overlap),
+// never a single edge-edge contact.
+TEST(McdBoxBox, StackedCubesAtEveryYawGiveFaceContacts) {
+  Framework fw;
+  McdGeometryID g = McdBoxCreate(fw, 1, 1, 1);
+  Placed low(g, 0, 0, 0);
+  const double overlap = 1e-3;
+  for (int deg = 0; deg <= 45; ++deg) {
+    Placed up(g, 0, 0, (MeReal)(1 - overlap), {0, 0, 1}, (MeReal)(deg * ME_PI / 180));
+    for (const bool upFirst : {true, false}) {
+      Hit h = upFirst ? Hit(up.model, low.model) : Hit(low.model, up.model);
+      const double sign = upFirst ? 1 : -1;
+      ASSERT_GE(h.count(), 3) << deg << " degrees";
+      EXPECT_LE(h.count(), 4) << deg << " degrees";
+      for (int i = 0; i < h.count(); ++i) {
+        const McdContact &c = h.c[i];
+        EXPECT_NEAR(sign * c.normal[2], 1, 1e-3) << deg << " degrees";
+        EXPECT_NEAR(c.separation, -overlap, 1e-5) << deg << " degrees";
+        EXPECT_NEAR(c.position[2], 0.5 - overlap / 2, 1e-5) << deg << " degrees";
+        // On both squares' common area.
+        const double x = c.position[0], y = c.position[1], t = deg * ME_PI / 180;
+        EXPECT_LE(std::fmax(std::fabs(x), std::fabs(y)), 0.5 + 1e-5);
+        EXPECT_LE(std::fmax(std::fabs(x * std::cos(t) + y * std::sin(t)),
+                            std::fabs(-x * std::sin(t) + y * std::cos(t))),
+                  0.5 + 1e-5);
+        // One side is the reference face (dims 2), never edge on edge (1, 1).
+        EXPECT_TRUE((c.dims & 0xFF) == 2 || ((c.dims >> 8) & 0xFF) == 2) << deg << " degrees";
+      }
+      // Spread: the kept points enclose at least half the common area (the
+      // octagon's area is at least 0.828 of the unit square's).
+      double area = 0;
+      std::vector<std::pair<double, double>> p;
+      for (int i = 0; i < h.count(); ++i) p.push_back({h.c[i].position[0], h.c[i].position[1]});
+      std::sort(p.begin(), p.end(), [](auto a, auto b) {
+        return std::atan2(a.second, a.first) < std::atan2(b.second, b.first);
+      });
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        const auto &a = p[i], &b = p[(i + 1) % p.size()];
+        area += 0.5 * (a.first * b.second - a.second * b.first);
+      }
+      EXPECT_GT(area, 0.5) << deg << " degrees";
+    }
+  }
+}
+
+// The same stacks with the upper cube also tilted by 0.02 degrees about x
+// and y (0.35 mm across the face, less than the overlap): still 3-4 face
+// contacts with the normal of one of the two faces.
+TEST(McdBoxBox, SlightlyTiltedStacksKeepFaceContacts) {
+  Framework fw;
+  McdGeometryID g = McdBoxCreate(fw, 1, 1, 1);
+  Placed low(g, 0, 0, 0);
+  const double overlap = 1e-3, tilt = 0.02 * ME_PI / 180;
+  for (int deg = 0; deg <= 45; ++deg) {
+    Placed up(g, 0, 0, (MeReal)(1 - overlap));
+    MeMatrix3 yaw, tx, ty, a, r;
+    const MeVector3 ez = {0, 0, 1}, ex = {1, 0, 0}, ey = {0, 1, 0};
+    MeMatrix3FromAxisAngle(yaw, ez, (MeReal)(deg * ME_PI / 180));
+    MeMatrix3FromAxisAngle(tx, ex, (MeReal)tilt);
+    MeMatrix3FromAxisAngle(ty, ey, (MeReal)tilt);
+    MeMatrix3Multiply(a, yaw, tx);
+    MeMatrix3Multiply(r, a, ty);
+    MeMatrix4TMSetRotation(up.tm.m, r);
+    McdModelUpdate(up.model);
+    Hit h(up.model, low.model);
+    ASSERT_GE(h.count(), 3) << deg << " degrees";
+    EXPECT_LE(h.count(), 4) << deg << " degrees";
+    for (int i = 0; i < h.count(); ++i) {
+      const McdContact &c = h.c[i];
+      const bool lowFace = std::fabs(c.normal[2] - 1) < 1e-6;
+      const bool upFace = std::fabs(c.normal[0] + r[2][0]) < 1e-6 &&
+                          std::fabs(c.normal[1] + r[2][1]) < 1e-6;  // up's -z axis, negated
+      EXPECT_TRUE(lowFace || upFace) << deg << " degrees";
+      EXPECT_NEAR(c.normal[2], 1, 1e-3) << deg << " degrees";
+      EXPECT_LE(c.separation, 0) << deg << " degrees";
+      EXPECT_GE(c.separation, -overlap - 0.5 * std::sqrt(2.0) * 2 * tilt) << deg << " degrees";
+    }
+  }
 }
 
 }  // namespace

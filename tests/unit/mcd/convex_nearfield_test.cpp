@@ -141,7 +141,7 @@ TEST(McdConvexNearfield, BoxCylinderByHand) {
   Placed cyl(McdCylinderCreate(fw, (MeReal)0.5, 2), 1, 0, (MeReal)1.45);  // standing, 0.05 deep
   Hit h(cyl.model, box.model);
   ASSERT_EQ(h.touch, 1);
-  EXPECT_EQ(h.count(), 8);  // the cap's rim samples
+  EXPECT_EQ(h.count(), 4);  // four of the cap's 8 rim samples, spread round it
   EXPECT_NEAR(h.deepest(), -0.05, kEps);
   for (int i = 0; i < h.count(); ++i) {
     EXPECT_NEAR(h.contacts[i].normal[2], 1, kEps);
