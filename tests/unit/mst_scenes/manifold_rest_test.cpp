@@ -140,11 +140,6 @@ TEST(ManifoldRest, TwoCubesAtEveryYawRestWithin1mm) {
 }
 
 TEST(ManifoldRest, TenCubeColumnWithRandomTiltsStandsWithin2mm) {
-    GTEST_SKIP() << "not met by today's solver: the contacts are soft (the bottom cube, under "
-                    "nine, sits 1.7 mm deep even when every tilt is 0) and re-made every step "
-                    "without warm start, so the column sways for ~10 s and leans; measured "
-                    "2.8 mm after 3 s, 2.4 mm at 20 s. To be re-enabled with persistent, "
-                    "warm-started contacts (issue 12 item 1).";
     Scene s;
     Sequence random;
     MdtBodyID top = nullptr;
