@@ -32,42 +32,27 @@
  * The pivoting logic lives in kea_activeset_core.h and is shared with the
  * sparse solver (kea_sparse.cpp); this file supplies the dense matrix
  * operations: the residual over the dense rows and a dense LDL^T of the free
- * block. */
+ * block (kea_envelope_ldlt.h, with a least-squares fallback when it breaks
+ * down), re-used while the free set does not change. */
 #include "kea_activeset_core.h"
-
-#include <Eigen/Dense>
+#include "kea_envelope_ldlt.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace karma::kea {
-namespace detail {
-
-void SolveDenseBlock(std::vector<MeReal> &block, std::vector<MeReal> &rhs, int m, std::vector<MeReal> &x) {
-  using Mat = Eigen::Matrix<MeReal, Eigen::Dynamic, Eigen::Dynamic>;
-  using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
-  const Eigen::Map<const Mat> A(block.data(), m, m);
-  const Eigen::Map<const Vec> b(rhs.data(), m);
-  Vec sol;
-  Eigen::LDLT<Mat> ldlt(A);
-  if (ldlt.info() == Eigen::Success) sol = ldlt.solve(b);
-  if (sol.size() != m || !sol.allFinite()) {
-    /* Not positive semi-definite, or breakdown: a least-squares solve. */
-    sol = A.completeOrthogonalDecomposition().solve(b);
-  }
-  x.assign(sol.data(), sol.data() + m);
-}
-
-}  // namespace detail
-
 namespace {
 
-/* The dense matrix operations of the active-set core. */
+/* The dense matrix operations of the active-set core. The free block is
+ * factorised by the envelope LDL^T with full rows (a dense LDL^T), kept
+ * while the free set does not change. */
 struct DenseBackend {
   const LcpProblem &p;
   MeReal eps;
-  std::vector<std::size_t> freeRows;
-  std::vector<MeReal> block, rhs, x;
+  std::vector<std::size_t> freeRows, factoredRows;
+  std::vector<MeReal> rhs, x;
+  detail::EnvelopeSystem block;
+  int factorizations = 0;
 
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w) { return KeaResidual(p, eps, lambda, w); }
 
@@ -84,21 +69,35 @@ struct DenseBackend {
     }
     const std::size_t m = freeRows.size();
     if (m == 0) return;
-    block.assign(m * m, MeReal(0));
+    if (!block.factored || freeRows != factoredRows) factorise();
     rhs.assign(m, MeReal(0));
     for (std::size_t a = 0; a < m; ++a) {
       const std::size_t i = freeRows[a];
       const MeReal *row = p.A.data() + i * n;
-      /* Column-major; the block is symmetric, so row a is column a. */
-      for (std::size_t c = 0; c < m; ++c) block[c * m + a] = row[freeRows[c]];
-      block[a * m + a] += eps;
       MeReal r = p.b[i];
       for (std::size_t j = 0; j < n; ++j)
         if (set[j] != detail::Free) r -= row[j] * lambda[j];
       rhs[a] = r;
     }
-    detail::SolveDenseBlock(block, rhs, static_cast<int>(m), x);
+    x.resize(m);
+    block.solve(rhs, x);
     for (std::size_t a = 0; a < m; ++a) lambda[freeRows[a]] = x[a];
+  }
+
+  /* The free block (A + eps I)_FF, lower triangle, full rows. */
+  void factorise() {
+    const auto n = static_cast<std::size_t>(p.n);
+    const std::size_t m = freeRows.size();
+    block.begin(static_cast<int>(m));
+    block.layout();
+    for (std::size_t a = 0; a < m; ++a) {
+      const MeReal *row = p.A.data() + freeRows[a] * n;
+      for (std::size_t c = 0; c <= a; ++c) block.value[block.at(static_cast<int>(a), static_cast<int>(c))] = row[freeRows[c]];
+      block.value[block.at(static_cast<int>(a), static_cast<int>(a))] += eps;
+    }
+    block.factor();
+    factoredRows = freeRows;
+    ++factorizations;
   }
 };
 
@@ -107,8 +106,12 @@ struct DenseBackend {
 KeaResult KeaSolveActiveSet(const LcpProblem &p, const KeaOptions &o) {
   static const char *const kName = "KeaSolveActiveSet";
   if (!detail::Validate(p, o, kName)) return detail::BadInputResult(p.n);
-  DenseBackend backend{p, o.epsilon, {}, {}, {}, {}};
-  return detail::ActiveSetCore(detail::Rows(p), o, kName, backend);
+  DenseBackend backend{p, o.epsilon, {}, {}, {}, {}, {}, 0};
+  detail::ActiveSetScratch scratch;
+  KeaResult r;
+  detail::ActiveSetCore(detail::Rows(p), o, kName, backend, scratch, r);
+  r.factorizations = backend.factorizations;
+  return r;
 }
 
 }  // namespace karma::kea

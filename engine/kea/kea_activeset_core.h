@@ -14,7 +14,9 @@
  *                  const std::vector<MeReal> &lo, const std::vector<MeReal> &hi,
  *                  std::vector<MeReal> &lambda);
  *       sets the clamped rows to their bounds and solves the free block
- *       (A + eps I)_FF lambda_F = b_F - A_FC lambda_C.
+ *       (A + eps I)_FF lambda_F = b_F - A_FC lambda_C (a backend keeps the
+ *       factorisation of the last free set and only re-solves when the set
+ *       is unchanged, as in the friction fixed point).
  *
  * Everything else is per row and costs O(n) per pivot step. */
 #ifndef KARMA_KEA_ACTIVESET_CORE_H
@@ -31,11 +33,22 @@ namespace karma::kea::detail {
 
 enum RowSet : unsigned char { Free = 0, AtLo = 1, AtHi = 2 };
 
+/* The arrays of one active-set solve, kept from one solve to the next (in
+ * a KeaWorkspace) so that a solve no larger than an earlier one allocates
+ * nothing. */
+struct ActiveSetScratch {
+  std::vector<MeReal> lo, hi, newLo, newHi, best;
+  std::vector<unsigned char> set;
+  /* The sets tried during single pivoting, n bytes each, back to back. */
+  std::vector<unsigned char> tried;
+};
+
 /* Whether `set` is one of the sets in `tried` (a linear scan: single
  * pivoting is the rare fallback and its history is short). */
-inline bool Tried(const std::vector<std::vector<unsigned char>> &tried, const std::vector<unsigned char> &set) {
-  for (const auto &t : tried)
-    if (t == set) return true;
+inline bool Tried(const std::vector<unsigned char> &tried, const std::vector<unsigned char> &set) {
+  const std::size_t n = set.size();
+  for (std::size_t at = 0; n > 0 && at + n <= tried.size(); at += n)
+    if (std::equal(set.begin(), set.end(), tried.begin() + static_cast<std::ptrdiff_t>(at))) return true;
   return false;
 }
 
@@ -65,10 +78,43 @@ inline unsigned char Wanted(unsigned char set, MeReal lambda, MeReal w, MeReal l
   }
 }
 
-/* The active-set method on a validated problem (rows) through `backend`;
+/* Whether the friction bounds newLo/newHi, computed from the current
+ * lambda, agree with the solve made under lo/hi: every clamped row's bound
+ * moved by at most `settle` (its value is the bound it was clamped at) and
+ * every free row still lies inside its new box (within `slack`; a free
+ * row's bounds do not enter the linear solve, only its feasibility). Then
+ * lambda satisfies complementarity under the bounds of its own normal
+ * impulses, and the fixed point is reached without another solve. */
+inline bool FrictionBoundsAgree(const std::vector<unsigned char> &set, std::span<const MeReal> lambda,
+                                const ActiveSetScratch &s, MeReal settle, MeReal slack) {
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    if (set[i] == Free) {
+      if (lambda[i] < s.newLo[i] - slack || lambda[i] > s.newHi[i] + slack) return false;
+    } else if (std::fabs(s.newLo[i] - s.lo[i]) > settle || std::fabs(s.newHi[i] - s.hi[i]) > settle) {
+      return false;
+    }
+  }
+  return true;
+}
+
+/* The initial sets from the initial lambda (a warm start or zeros): a row
+ * at or beyond a finite bound starts clamped there, the rest free. */
+inline void InitialSets(std::span<const MeReal> lambda, ActiveSetScratch &s) {
+  const std::size_t n = lambda.size();
+  s.set.assign(n, Free);
+  for (std::size_t i = 0; i < n; ++i) {
+    const MeReal l = std::clamp(lambda[i], s.lo[i], s.hi[i]);
+    if (l <= s.lo[i]) s.set[i] = AtLo;
+    else if (l >= s.hi[i]) s.set[i] = AtHi;
+  }
+}
+
+/* The active-set method on a validated problem (rows) through `backend`,
+ * with its arrays in `s`; the answer goes to `r`, whose vectors are reused.
  * `name` names the entry point in warnings. */
 template <class Backend>
-KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Backend &backend) {
+void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Backend &backend, ActiveSetScratch &s,
+                   KeaResult &r) {
   const auto n = static_cast<std::size_t>(p.n);
   /* Friction's fixed point converges linearly: it gets a larger budget. */
   const int cap = o.maxIterations > 0 ? o.maxIterations : 10 * p.n + 20 + (p.findex.empty() ? 0 : 20 * p.n + 100);
@@ -79,54 +125,50 @@ KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name,
   constexpr int kPlainOuter = 10;
   constexpr int kBlockTries = 3; /* Judice-Pires: block steps allowed without progress */
 
-  KeaResult r;
   r.lambda.assign(n, MeReal(0));
   r.w.assign(n, MeReal(0));
+  r.iterations = 0;
+  r.frictionRounds = 0;
+  r.residual = 0;
   if (n == 0) {
     r.status = KeaStatus::Solved;
-    return r;
+    return;
   }
   if (!o.warmStart.empty()) std::copy(o.warmStart.begin(), o.warmStart.end(), r.lambda.begin());
 
-  std::vector<MeReal> lo, hi;
-  ComputeBounds(p, r.lambda, lo, hi);
-  std::vector<unsigned char> set(n, Free);
-  for (std::size_t i = 0; i < n; ++i) {
-    const MeReal l = std::clamp(r.lambda[i], lo[i], hi[i]);
-    if (l <= lo[i]) set[i] = AtLo;
-    else if (l >= hi[i]) set[i] = AtHi;
-  }
+  ComputeBounds(p, r.lambda, s.lo, s.hi);
+  InitialSets(r.lambda, s);
+  std::vector<unsigned char> &set = s.set;
 
-  std::vector<MeReal> best = r.lambda;
+  s.best = r.lambda;
   MeReal bestResidual = backend.residual(r.lambda, {});
   /* Whether best and bestResidual are r.lambda and its residual, with r.w
    * its w: then the final residual need not be computed again. */
   bool bestIsCurrent = false;
   int solves = 0;
   bool cycle = false, done = false;
-  std::vector<MeReal> newLo, newHi;
 
   int outer = 0;
   while (!done && !cycle && solves < cap) {
     ++outer;
     /* Inner pivoting with the bounds frozen at lo/hi. */
-    Normalise(set, lo, hi);
-    std::vector<std::vector<unsigned char>> tried;
+    Normalise(set, s.lo, s.hi);
+    s.tried.clear();
     std::size_t fewestInfeasible = n + 1;
     int blockTries = kBlockTries;
     bool consistent = false;
     while (solves < cap) {
-      backend.solveFree(set, lo, hi, r.lambda);
+      backend.solveFree(set, s.lo, s.hi, r.lambda);
       ++solves;
       const MeReal residual = backend.residual(r.lambda, r.w);
       bestIsCurrent = residual < bestResidual;
       if (bestIsCurrent) {
         bestResidual = residual;
-        best = r.lambda;
+        s.best = r.lambda;
       }
       std::size_t infeasible = 0, last = n;
       for (std::size_t i = 0; i < n; ++i)
-        if (Wanted(set[i], r.lambda[i], r.w[i], lo[i], hi[i], slack) != set[i]) {
+        if (Wanted(set[i], r.lambda[i], r.w[i], s.lo[i], s.hi[i], slack) != set[i]) {
           ++infeasible;
           last = i;
         }
@@ -141,11 +183,11 @@ KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name,
         } else {
           --blockTries;
         }
-        for (std::size_t i = 0; i < n; ++i) set[i] = Wanted(set[i], r.lambda[i], r.w[i], lo[i], hi[i], slack);
+        for (std::size_t i = 0; i < n; ++i) set[i] = Wanted(set[i], r.lambda[i], r.w[i], s.lo[i], s.hi[i], slack);
       } else {
-        tried.push_back(set);
-        set[last] = Wanted(set[last], r.lambda[last], r.w[last], lo[last], hi[last], slack);
-        if (Tried(tried, set)) {
+        s.tried.insert(s.tried.end(), set.begin(), set.end());
+        set[last] = Wanted(set[last], r.lambda[last], r.w[last], s.lo[last], s.hi[last], slack);
+        if (Tried(s.tried, set)) {
           cycle = true;
           break;
         }
@@ -158,16 +200,18 @@ KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name,
       done = true;
       break;
     }
-    ComputeBounds(p, r.lambda, newLo, newHi);
-    /* The fixed point is iterated well below the solved threshold, so that
-     * friction rows end (nearly) exactly on their final bounds; the floor
+    ComputeBounds(p, r.lambda, s.newLo, s.newHi);
+    /* Clamped friction rows are iterated well below the solved threshold,
+     * so that they end (nearly) exactly on their final bounds; the floor
      * keeps rounding from looping to the cap. */
     MeReal lambdaMax = 0;
     for (MeReal l : r.lambda) lambdaMax = std::max(lambdaMax, std::fabs(l));
     const MeReal settle = std::max(slack / 100, 64 * ME_REAL_EPSILON * (1 + lambdaMax));
-    bool moved = false;
-    for (std::size_t i = 0; i < n; ++i)
-      if (std::fabs(newLo[i] - lo[i]) > settle || std::fabs(newHi[i] - hi[i]) > settle) moved = true;
+    if (FrictionBoundsAgree(set, r.lambda, s, settle, slack)) {
+      done = true;
+      break;
+    }
+    ++r.frictionRounds;
     /* A fixed point not reached after kPlainOuter rounds is usually a
      * 2-cycle (the bounds flip between two values and the solver runs to
      * its cap: 40000 solves seen in pile1000). From then on the update is
@@ -176,19 +220,18 @@ KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name,
      * against the bounds used), so a fixed point is still one. */
     if (outer > kPlainOuter) {
       for (std::size_t i = 0; i < n; ++i) {
-        newLo[i] = lo[i] + (newLo[i] - lo[i]) / 2;
-        newHi[i] = hi[i] + (newHi[i] - hi[i]) / 2;
+        s.newLo[i] = s.lo[i] + (s.newLo[i] - s.lo[i]) / 2;
+        s.newHi[i] = s.hi[i] + (s.newHi[i] - s.hi[i]) / 2;
       }
     }
-    lo.swap(newLo);
-    hi.swap(newHi);
-    if (!moved) done = true;
+    s.lo.swap(s.newLo);
+    s.hi.swap(s.newHi);
   }
 
   if (bestIsCurrent) {
     r.residual = bestResidual;
   } else {
-    r.lambda = best;
+    r.lambda = s.best;
     r.residual = backend.residual(r.lambda, r.w);
   }
   r.iterations = solves;
@@ -201,7 +244,6 @@ KeaResult ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name,
     r.status = KeaStatus::IterationLimit;
     WarnIterationLimit(o, name, solves, r.residual);
   }
-  return r;
 }
 
 }  // namespace karma::kea::detail

@@ -41,11 +41,19 @@ bool AllFinite(std::span<const MeReal> v) {
 
 MeReal ComplementarityResidual(const RowView &p, std::span<const MeReal> lambda, std::span<const MeReal> w) {
   const auto n = static_cast<std::size_t>(p.n);
-  std::vector<MeReal> lo, hi;
-  ComputeBounds(p, lambda, lo, hi);
+  const bool friction = !p.findex.empty();
   MeReal worst = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const MeReal projected = std::clamp(lambda[i] - w[i], lo[i], hi[i]);
+    const int j = friction ? p.findex[i] : -1;
+    MeReal lo, hi;
+    if (j >= 0) {
+      hi = p.mu[i] * std::max(lambda[static_cast<std::size_t>(j)], MeReal(0));
+      lo = -hi;
+    } else {
+      lo = NormaliseBound(p.lo[i]);
+      hi = NormaliseBound(p.hi[i]);
+    }
+    const MeReal projected = std::clamp(lambda[i] - w[i], lo, hi);
     worst = std::max(worst, std::fabs(lambda[i] - projected));
   }
   return worst;

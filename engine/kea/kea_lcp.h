@@ -158,6 +158,12 @@ struct KeaResult {
   KeaStatus status = KeaStatus::BadInput;
   int iterations = 0;          /* linear solves (active set) or sweeps (PGS) */
   MeReal residual = 0;         /* max complementarity violation (absolute) */
+  /* Statistics (active set; 0 for PGS): factorisations of a free block (a
+   * solve whose free set is the previous solve's re-uses its factor), and
+   * friction fixed-point rounds that needed another inner solve (0 when
+   * the first consistent free set already met its own friction bounds). */
+  int factorizations = 0;
+  int frictionRounds = 0;
 };
 
 /* The same problem with A in compressed sparse rows: both triangles stored,

@@ -1,0 +1,279 @@
+/* kea_sparse_backend.cpp: the sparse matrix operations of the active-set
+ * core (see kea_sparse_backend.h). */
+#include "kea_sparse_backend.h"
+
+#include "kea_activeset_core.h"
+
+#include <Eigen/OrderingMethods>
+
+#include <algorithm>
+#include <cmath>
+
+namespace karma::kea::detail {
+namespace {
+
+using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
+
+std::size_t U(int i) { return static_cast<std::size_t>(i); }
+
+}  // namespace
+
+MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<const MeReal> lambda,
+                              std::span<MeReal> w) {
+  const auto n = static_cast<std::size_t>(p.n);
+  for (std::size_t i = 0; i < n; ++i) {
+    MeReal wi = -p.b[i] + eps * lambda[i];
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) wi += p.val[U(k)] * lambda[U(p.col[U(k)])];
+    w[i] = wi;
+  }
+  return ComplementarityResidual(Rows(p), lambda, w);
+}
+
+void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps) {
+  p_ = &p;
+  eps_ = eps;
+  position_.assign(static_cast<std::size_t>(p.n), -1);
+  order_.clear();
+  factor_ = Factor::None;
+  ldltOk_ = false;
+  factorizations_ = 0;
+}
+
+MeReal SparseBackend::residual(std::span<const MeReal> lambda, std::span<MeReal> w) {
+  if (w.size() == lambda.size()) return SparseMultiplyResidual(*p_, eps_, lambda, w);
+  wScratch_.resize(lambda.size());
+  return SparseMultiplyResidual(*p_, eps_, lambda, wScratch_);
+}
+
+void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
+                              const std::vector<MeReal> &hi, std::vector<MeReal> &lambda) {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<std::size_t>(p.n);
+  naturalRows_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (set[i] == AtLo) lambda[i] = lo[i];
+    else if (set[i] == AtHi) lambda[i] = hi[i];
+    else naturalRows_.push_back(static_cast<int>(i));
+  }
+  const std::size_t m = naturalRows_.size();
+  if (m == 0) return;
+
+  if (factor_ == Factor::None || naturalRows_ != factoredSet_) {
+    if (gatherEnvelope(naturalRows_, false)) {
+      envelope_.factor();
+      factor_ = Factor::Envelope;
+    } else {
+      factoriseSparse(set);
+    }
+    factoredSet_ = naturalRows_;
+    ++factorizations_;
+  }
+
+  const std::vector<int> &rows = factor_ == Factor::Envelope ? naturalRows_ : orderedRows_;
+  buildRhs(rows, set, lambda);
+  x_.resize(m);
+  if (factor_ == Factor::Envelope) {
+    envelope_.solve(rhs_, x_);
+  } else if (!solveSparse(m)) {
+    fallback(set, lambda);
+    return;
+  }
+  for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
+}
+
+void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set,
+                             const std::vector<MeReal> &lambda) {
+  /* rhs = b_F - A_FC lambda_C */
+  const SparseLcpProblem &p = *p_;
+  rhs_.resize(rows.size());
+  for (std::size_t a = 0; a < rows.size(); ++a) {
+    const auto i = U(rows[a]);
+    MeReal r = p.b[i];
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const auto j = U(p.col[U(k)]);
+      if (set[j] != Free) r -= p.val[U(k)] * lambda[j];
+    }
+    rhs_[a] = r;
+  }
+}
+
+/* The free block in the envelope store, rows in the order of `rows`
+ * (ascending). Unless `dense`, gives up (returns false, nothing stored) when
+ * the block is larger than kEnvelopeRows and its envelope wider on average
+ * than kEnvelopeWidth. */
+bool SparseBackend::gatherEnvelope(const std::vector<int> &rows, bool dense) {
+  const SparseLcpProblem &p = *p_;
+  const std::size_t m = rows.size();
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
+  envelope_.begin(static_cast<int>(m));
+  std::size_t entries = 0;
+  for (std::size_t a = 0; a < m && !dense; ++a) {
+    const auto i = U(rows[a]);
+    int first = static_cast<int>(a);
+    /* Columns ascend within a CSR row and positions follow row order, so
+     * the first free column is the leftmost. */
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int c = position_[U(p.col[U(k)])];
+      if (c >= 0) {
+        first = std::min(first, c);
+        break;
+      }
+    }
+    envelope_.first[a] = first;
+    entries += a - U(first) + 1;
+  }
+  const bool accept = dense || m <= kEnvelopeRows || entries <= kEnvelopeWidth * m;
+  if (accept) {
+    envelope_.layout();
+    for (std::size_t a = 0; a < m; ++a) {
+      const auto i = U(rows[a]);
+      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+        const int c = position_[U(p.col[U(k)])];
+        if (c >= 0 && U(c) <= a) envelope_.value[envelope_.at(static_cast<int>(a), c)] = p.val[U(k)];
+      }
+      envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(a))] += eps_;
+    }
+  }
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
+  return accept;
+}
+
+/* AMD on the whole matrix's pattern (CSR of a symmetric matrix is also its
+ * CSC). order_ lists the rows in elimination order.
+ *
+ * Each free block is then eliminated in the induced order (its rows in the
+ * order AMD gave them). The fill of a principal submatrix under the induced
+ * order is never more than the fill of the whole matrix under the full
+ * order, so this keeps the factorisation sparse without re-running AMD (the
+ * largest cost of a factorisation) at every pivot step. */
+void SparseBackend::computeOrder() {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<Eigen::Index>(p.n);
+  const auto nnz = static_cast<Eigen::Index>(p.rowStart[U(p.n)]);
+  const Eigen::Map<const SpMat> full(n, n, nnz, p.rowStart.data(), p.col.data(), p.val.data());
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> pinv;
+  Eigen::AMDOrdering<int> amd;
+  amd(full.selfadjointView<Eigen::Upper>(), pinv);
+  order_.assign(pinv.indices().data(), pinv.indices().data() + pinv.indices().size());
+  if (order_.size() != U(p.n)) {
+    order_.resize(U(p.n));
+    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
+  }
+  buildOrderedUpper();
+}
+
+/* The upper triangle in elimination order, once per problem: for the row at
+ * rank r (order_[r]), its entries at rank <= r, sorted by rank
+ * (upStart_/upRow_/upVal_). A free block is a principal submatrix and its
+ * rows keep their relative order, so gatherUpper only filters these lists:
+ * no sorting per pivot step. */
+void SparseBackend::buildOrderedUpper() {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<std::size_t>(p.n);
+  rank_.resize(n);
+  for (std::size_t r = 0; r < n; ++r) rank_[U(order_[r])] = static_cast<int>(r);
+  upStart_.assign(n + 1, 0);
+  upRow_.clear();
+  upVal_.clear();
+  for (std::size_t r = 0; r < n; ++r) {
+    const auto i = U(order_[r]);
+    entries_.clear(); /* (rank of the column, CSR index) */
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int c = rank_[U(p.col[U(k)])];
+      if (c <= static_cast<int>(r)) entries_.emplace_back(c, k);
+    }
+    std::sort(entries_.begin(), entries_.end());
+    for (const auto &[c, k] : entries_) {
+      upRow_.push_back(p.col[U(k)]);
+      upVal_.push_back(p.val[U(k)]);
+    }
+    upStart_[r + 1] = static_cast<int>(upRow_.size());
+  }
+}
+
+/* The free block in elimination order (orderedRows_): column a holds free
+ * row a's entries on and above the diagonal (positions <= a), sorted.
+ * `shift` is added to the diagonal. */
+void SparseBackend::gatherUpper(std::size_t m, MeReal shift) {
+  for (std::size_t a = 0; a < m; ++a) position_[U(orderedRows_[a])] = static_cast<int>(a);
+  std::size_t bound = 0;
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto r = U(rank_[U(orderedRows_[a])]);
+    bound += U(upStart_[r + 1] - upStart_[r]);
+  }
+  block_.resize(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
+  block_.resizeNonZeros(static_cast<Eigen::Index>(bound));
+  int *outer = block_.outerIndexPtr();
+  int *inner = block_.innerIndexPtr();
+  MeReal *value = block_.valuePtr();
+  int at = 0;
+  for (std::size_t a = 0; a < m; ++a) {
+    outer[a] = at;
+    const auto r = U(rank_[U(orderedRows_[a])]);
+    for (int k = upStart_[r]; k < upStart_[r + 1]; ++k) {
+      /* Ranks <= r, so a free column's position is <= a. */
+      const int c = position_[U(upRow_[U(k)])];
+      if (c < 0) continue;
+      inner[at] = c;
+      value[at] = upVal_[U(k)] + (c == static_cast<int>(a) ? eps_ + shift : MeReal(0));
+      ++at;
+    }
+  }
+  outer[m] = at;
+  block_.resizeNonZeros(at); /* shrinks the size only: the entries stay */
+  for (std::size_t a = 0; a < m; ++a) position_[U(orderedRows_[a])] = -1;
+}
+
+void SparseBackend::factoriseSparse(const std::vector<unsigned char> &set) {
+  const std::size_t m = naturalRows_.size();
+  if (order_.empty()) computeOrder();
+  orderedRows_.clear();
+  for (int i : order_)
+    if (set[U(i)] == Free) orderedRows_.push_back(i);
+  gatherUpper(m, 0);
+  ldlt_.computePreordered(block_);
+  ldltOk_ = ldlt_.info() == Eigen::Success;
+  factor_ = Factor::Sparse;
+}
+
+/* x_ = the sparse factor's solution for rhs_; false when it broke down or
+ * gave non-finite values. */
+bool SparseBackend::solveSparse(std::size_t m) {
+  if (!ldltOk_) return false;
+  const Vec x = ldlt_.solve(Eigen::Map<const Vec>(rhs_.data(), static_cast<Eigen::Index>(m)));
+  if (!x.allFinite()) return false;
+  std::copy(x.data(), x.data() + m, x_.begin());
+  return true;
+}
+
+/* The sparse factorisation broke down (or gave non-finite values): a dense
+ * solve with least-squares fallback up to kDenseFallback rows (kept as the
+ * factor of this free set), a diagonally shifted sparse LDL^T beyond. */
+void SparseBackend::fallback(const std::vector<unsigned char> &set, std::vector<MeReal> &lambda) {
+  const std::size_t m = naturalRows_.size();
+  if (m <= kDenseFallback) {
+    gatherEnvelope(naturalRows_, true);
+    envelope_.factor();
+    factor_ = Factor::Envelope;
+    buildRhs(naturalRows_, set, lambda);
+    envelope_.solve(rhs_, x_);
+    for (std::size_t a = 0; a < m; ++a) lambda[U(naturalRows_[a])] = x_[a];
+    return;
+  }
+  /* A small shift on the diagonal makes a semi-definite block definite. */
+  const SparseLcpProblem &p = *p_;
+  MeReal diagMax = 0;
+  for (int i : naturalRows_)
+    for (int k = p.rowStart[U(i)]; k < p.rowStart[U(i) + 1]; ++k)
+      if (p.col[U(k)] == i) diagMax = std::max(diagMax, std::fabs(p.val[U(k)]));
+  gatherUpper(m, std::sqrt(ME_REAL_EPSILON) * (1 + diagMax));
+  const Ldlt shifted(block_);
+  Vec x;
+  if (shifted.info() == Eigen::Success) x = shifted.solve(Eigen::Map<const Vec>(rhs_.data(), static_cast<Eigen::Index>(m)));
+  if (x.size() != static_cast<Eigen::Index>(m) || !x.allFinite()) x = Vec::Zero(static_cast<Eigen::Index>(m));
+  /* The kept factorisation is the unshifted one; drop it. */
+  factor_ = Factor::None;
+  for (std::size_t a = 0; a < m; ++a) lambda[U(orderedRows_[a])] = x(static_cast<Eigen::Index>(a));
+}
+
+}  // namespace karma::kea::detail
