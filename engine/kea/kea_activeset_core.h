@@ -98,14 +98,17 @@ inline bool FrictionBoundsAgree(const std::vector<unsigned char> &set, std::span
 }
 
 /* The initial sets from the initial lambda (a warm start or zeros): a row
- * at or beyond a finite bound starts clamped there, the rest free. */
-inline void InitialSets(std::span<const MeReal> lambda, ActiveSetScratch &s) {
+ * at or beyond a finite bound, or within `slack` of it, starts clamped
+ * there, the rest free. The slack matters for friction rows warm-started
+ * from a solution: they sit on +-mu lambda_j of the normal impulse of the
+ * solve before the last, which the bound from the final lambda_j misses by
+ * up to the fixed point's settling tolerance. */
+inline void InitialSets(std::span<const MeReal> lambda, MeReal slack, ActiveSetScratch &s) {
   const std::size_t n = lambda.size();
   s.set.assign(n, Free);
   for (std::size_t i = 0; i < n; ++i) {
-    const MeReal l = std::clamp(lambda[i], s.lo[i], s.hi[i]);
-    if (l <= s.lo[i]) s.set[i] = AtLo;
-    else if (l >= s.hi[i]) s.set[i] = AtHi;
+    if (lambda[i] <= s.lo[i] + slack) s.set[i] = AtLo;
+    else if (lambda[i] >= s.hi[i] - slack) s.set[i] = AtHi;
   }
 }
 
@@ -137,7 +140,11 @@ void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Back
   if (!o.warmStart.empty()) std::copy(o.warmStart.begin(), o.warmStart.end(), r.lambda.begin());
 
   ComputeBounds(p, r.lambda, s.lo, s.hi);
-  InitialSets(r.lambda, s);
+  InitialSets(r.lambda, slack, s);
+  s.newLo.resize(n);
+  s.newHi.resize(n);
+  /* Room for a few single-pivot sets; a longer history grows the array. */
+  s.tried.reserve(4 * n);
   std::vector<unsigned char> &set = s.set;
 
   s.best = r.lambda;

@@ -60,6 +60,13 @@ void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> s
   }
 }
 
+void EnvelopeSystem::reserve(std::size_t rows, std::size_t entries) {
+  first.reserve(rows);
+  start.reserve(rows + 1);
+  value.reserve(entries);
+  original.reserve(entries);
+}
+
 void EnvelopeSystem::begin(int rows) {
   m = rows;
   first.assign(static_cast<std::size_t>(m), 0);

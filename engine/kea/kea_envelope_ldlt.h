@@ -61,6 +61,9 @@ struct EnvelopeSystem {
   bool factored = false; /* factor() ran on the current matrix */
   bool broken = false;   /* ... and broke down */
 
+  /* Capacity for matrices of up to `rows` rows and `entries` envelope
+   * entries (then begin/layout/factor allocate nothing). */
+  void reserve(std::size_t rows, std::size_t entries);
   /* A new m x m matrix: first[] sized m (filled with 0 = dense rows). */
   void begin(int rows);
   /* Computes start[] from first[] and zeroes the envelope. */

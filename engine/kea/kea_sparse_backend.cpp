@@ -32,7 +32,22 @@ MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<c
 void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps) {
   p_ = &p;
   eps_ = eps;
-  position_.assign(static_cast<std::size_t>(p.n), -1);
+  const auto n = static_cast<std::size_t>(p.n);
+  position_.assign(n, -1);
+  naturalRows_.reserve(n);
+  factoredSet_.reserve(n);
+  rhs_.reserve(n);
+  x_.reserve(n);
+  wScratch_.reserve(n);
+  /* Room for the largest envelope a free block can take: a principal
+   * submatrix's envelope (rows in the same order) is no larger than the
+   * whole matrix's, whose row i starts at its first CSR column. Reserving
+   * it here means no free set of this problem makes the envelope grow. */
+  std::size_t whole = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    whole += i - std::min(i, U(p.col[U(p.rowStart[i])])) + 1;
+  const std::size_t accepted = std::max(kEnvelopeRows * (kEnvelopeRows + 1) / 2, kEnvelopeWidth * n);
+  envelope_.reserve(n, std::min(whole, accepted));
   order_.clear();
   factor_ = Factor::None;
   ldltOk_ = false;
