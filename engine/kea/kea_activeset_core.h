@@ -231,6 +231,12 @@ void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Back
         s.newHi[i] = s.hi[i] + (s.newHi[i] - s.hi[i]) / 2;
       }
     }
+    /* A friction row clamped only because its normal impulse was zero (lo =
+     * hi = 0) says nothing about the row: now that its box has opened, it
+     * starts the next round free (a resting contact's friction usually
+     * is). */
+    for (std::size_t i = 0; i < n; ++i)
+      if (set[i] != Free && s.lo[i] == s.hi[i] && s.newLo[i] < s.newHi[i]) set[i] = Free;
     s.lo.swap(s.newLo);
     s.hi.swap(s.newHi);
   }

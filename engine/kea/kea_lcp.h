@@ -150,6 +150,13 @@ struct KeaOptions {
   std::span<const MeReal> warmStart;
   /* Emit MeWarning on IterationLimit / CycleDetected. BadInput always warns. */
   bool warnings = true;
+  /* KeaSolveSparse's choice of factorisation for a free block of m rows
+   * (see kea_sparse_backend.h): 0 = the default rule (the envelope LDL^T
+   * when m <= 96 or the block's envelope is a band of mean width <= 32,
+   * else the sparse LDL^T); > 0: the envelope LDL^T exactly when m <=
+   * envelopeRows; < 0: always the sparse LDL^T. The answer is the same up to
+   * rounding; only cost and allocation differ (the sparse path allocates). */
+  int envelopeRows = 0;
 };
 
 struct KeaResult {

@@ -137,7 +137,7 @@ void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace
     SparsePgs(p, o, kName, workspace.pgs, result);
     return;
   }
-  workspace.backend.reset(p, o.epsilon);
+  workspace.backend.reset(p, o.epsilon, o.envelopeRows);
   detail::ActiveSetCore(detail::Rows(p), o, kName, workspace.backend, workspace.activeSet, result);
   result.factorizations = workspace.backend.factorizations();
 }

@@ -29,9 +29,10 @@ MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<c
   return ComplementarityResidual(Rows(p), lambda, w);
 }
 
-void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps) {
+void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows) {
   p_ = &p;
   eps_ = eps;
+  envelopeRows_ = envelopeRows;
   const auto n = static_cast<std::size_t>(p.n);
   position_.assign(n, -1);
   naturalRows_.reserve(n);
@@ -46,7 +47,9 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps) {
   std::size_t whole = 0;
   for (std::size_t i = 0; i < n; ++i)
     whole += i - std::min(i, U(p.col[U(p.rowStart[i])])) + 1;
-  const std::size_t accepted = std::max(kEnvelopeRows * (kEnvelopeRows + 1) / 2, kEnvelopeWidth * n);
+  std::size_t accepted = std::max(kEnvelopeRows * (kEnvelopeRows + 1) / 2, kEnvelopeWidth * n);
+  if (envelopeRows > 0) accepted = static_cast<std::size_t>(envelopeRows) * (static_cast<std::size_t>(envelopeRows) + 1) / 2;
+  if (envelopeRows < 0) accepted = 0;
   envelope_.reserve(n, std::min(whole, accepted));
   order_.clear();
   factor_ = Factor::None;
@@ -137,7 +140,9 @@ bool SparseBackend::gatherEnvelope(const std::vector<int> &rows, bool dense) {
     envelope_.first[a] = first;
     entries += a - U(first) + 1;
   }
-  const bool accept = dense || m <= kEnvelopeRows || entries <= kEnvelopeWidth * m;
+  bool accept = dense;
+  if (!accept && envelopeRows_ == 0) accept = m <= kEnvelopeRows || entries <= kEnvelopeWidth * m;
+  else if (!accept && envelopeRows_ > 0) accept = m <= static_cast<std::size_t>(envelopeRows_);
   if (accept) {
     envelope_.layout();
     for (std::size_t a = 0; a < m; ++a) {

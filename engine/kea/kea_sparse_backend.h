@@ -45,7 +45,8 @@ MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<c
 class SparseBackend {
  public:
   /* Free blocks up to this many rows take the envelope path whatever their
-   * envelope (see docs/NOTES.md, "Kea workspace", for the measurement). */
+   * envelope (see docs/NOTES.md, "Kea workspace", for the measurement);
+   * KeaOptions::envelopeRows overrides this rule. */
   static constexpr std::size_t kEnvelopeRows = 96;
   /* Larger blocks take it when their mean envelope row width is at most
    * this (a band: chains, stacks). */
@@ -57,7 +58,7 @@ class SparseBackend {
   /* Starts a solve of `p` (which must outlive it) with eps on the diagonal;
    * forgets the previous problem's ordering and factorisation, keeps the
    * arrays. */
-  void reset(const SparseLcpProblem &p, MeReal eps);
+  void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0);
 
   /* See kea_activeset_core.h. */
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w);
@@ -98,6 +99,7 @@ class SparseBackend {
 
   const SparseLcpProblem *p_ = nullptr;
   MeReal eps_ = 0;
+  int envelopeRows_ = 0; /* KeaOptions::envelopeRows */
   /* The free rows ascending (naturalRows_), in elimination order
    * (orderedRows_, sparse path), and the free rows of the kept factor. */
   std::vector<int> naturalRows_, orderedRows_, factoredSet_;

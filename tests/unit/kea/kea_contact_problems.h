@@ -13,6 +13,9 @@
 //    rows each) touching the ground (one contact each): 32 rows.
 //  - Chain: `links` 1 kg rods tied end to end by ball joints (3 bilateral
 //    rows each), the first to the world, swinging: a banded A.
+//  - Pile: `contacts` contacts between random pairs of `bodies` unit cubes
+//    (or a cube and the ground), in random order: an A whose envelope is
+//    nearly full, as in a heap whose rows come in no particular order.
 #ifndef KARMA_TESTS_KEA_CONTACT_PROBLEMS_H
 #define KARMA_TESTS_KEA_CONTACT_PROBLEMS_H
 
@@ -289,6 +292,31 @@ inline ContactProblem Chain(int links, unsigned seed) {
     }
   }
   return Assemble(bodies, rows, h, kSoft, false);
+}
+
+inline ContactProblem Pile(int contacts, int bodies, unsigned seed) {
+  const double h = 1.0 / 60, g = 9.81;
+  std::vector<Body> all(static_cast<std::size_t>(bodies));
+  std::vector<Vec3> centres;
+  for (int k = 0; k < bodies; ++k) {
+    Body &b = all[static_cast<std::size_t>(k)];
+    b.invMass = 1;
+    b.invInertia = {6, 6, 6};
+    b.force = {0, 0, -g};
+    b.v = {0.05 * Jitter(seed, 2u * unsigned(k)), 0.05 * Jitter(seed, 2u * unsigned(k) + 1), -0.1};
+    centres.push_back({3 * Jitter(seed + 1, unsigned(k)), 3 * Jitter(seed + 2, unsigned(k)), 0.5 + k % 4});
+  }
+  std::vector<JRow> rows;
+  for (int c = 0; c < contacts; ++c) {
+    const auto u = static_cast<unsigned>(c);
+    const int upper = static_cast<int>((Jitter(seed + 3, u) + 1) / 2 * (bodies - 1) + 0.5);
+    int lower = static_cast<int>((Jitter(seed + 4, u) + 1) / 2 * bodies - 0.5);  // -1 .. bodies-1
+    if (lower == upper) lower = -1;
+    const Vec3 &cu = centres[static_cast<std::size_t>(upper)];
+    const Vec3 at{cu[0] + 0.5 * Jitter(seed + 5, u), cu[1] + 0.5 * Jitter(seed + 6, u), cu[2] - 0.5};
+    AddContact(rows, centres, upper, lower, at, 0.001 * (1 + Jitter(seed + 7, u)) / 2, 0.5, true);
+  }
+  return Assemble(all, rows, h, kSoft, true);
 }
 
 }  // namespace kea_test
