@@ -32,26 +32,28 @@ MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<c
 void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows) {
   p_ = &p;
   eps_ = eps;
-  envelopeRows_ = envelopeRows;
   const auto n = static_cast<std::size_t>(p.n);
   position_.assign(n, -1);
   naturalRows_.reserve(n);
+  /* Reverse Cuthill-McKee scratch (computeBandOrder). */
+  bandRank_.reserve(n);
+  queue_.reserve(n);
   factoredSet_.reserve(n);
   rhs_.reserve(n);
   x_.reserve(n);
   wScratch_.reserve(n);
-  /* Room for the largest envelope a free block can take: a principal
-   * submatrix's envelope (rows in the same order) is no larger than the
-   * whole matrix's, whose row i starts at its first CSR column. Reserving
-   * it here means no free set of this problem makes the envelope grow. */
-  std::size_t whole = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    whole += i - std::min(i, U(p.col[U(p.rowStart[i])])) + 1;
+  /* Room for the largest envelope the rule below accepts, so that no free
+   * set of this problem makes the envelope grow. */
   std::size_t accepted = std::max(kEnvelopeRows * (kEnvelopeRows + 1) / 2, kEnvelopeWidth * n);
   if (envelopeRows > 0) accepted = static_cast<std::size_t>(envelopeRows) * (static_cast<std::size_t>(envelopeRows) + 1) / 2;
   if (envelopeRows < 0) accepted = 0;
-  envelope_.reserve(n, std::min(whole, accepted));
+  envelope_.reserve(n, std::min(accepted, n * (n + 1) / 2));
+  envelopeRows_ = envelopeRows;
   order_.clear();
+  bandOrder_.clear();
+  orderChosen_ = useBandOrder_ = false;
+  bandRows_.reserve(n);
+  bandOrder_.reserve(n);
   factor_ = Factor::None;
   ldltOk_ = false;
   factorizations_ = 0;
@@ -77,20 +79,17 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   if (m == 0) return;
 
   if (factor_ == Factor::None || naturalRows_ != factoredSet_) {
-    if (gatherEnvelope(naturalRows_, false)) {
-      envelope_.factor();
-      factor_ = Factor::Envelope;
-    } else {
-      factoriseSparse(set);
-    }
+    factorise(set);
     factoredSet_ = naturalRows_;
     ++factorizations_;
   }
 
-  const std::vector<int> &rows = factor_ == Factor::Envelope ? naturalRows_ : orderedRows_;
+  const std::vector<int> &rows = factor_ == Factor::Envelope ? naturalRows_
+                                 : factor_ == Factor::BandEnvelope ? bandRows_
+                                                                   : orderedRows_;
   buildRhs(rows, set, lambda);
   x_.resize(m);
-  if (factor_ == Factor::Envelope) {
+  if (factor_ != Factor::Sparse) {
     envelope_.solve(rhs_, x_);
   } else if (!solveSparse(m)) {
     fallback(set, lambda);
@@ -115,47 +114,140 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
   }
 }
 
-/* The free block in the envelope store, rows in the order of `rows`
- * (ascending). Unless `dense`, gives up (returns false, nothing stored) when
- * the block is larger than kEnvelopeRows and its envelope wider on average
- * than kEnvelopeWidth. */
-bool SparseBackend::gatherEnvelope(const std::vector<int> &rows, bool dense) {
+/* The choice of factorisation for the free block (see
+ * kea_sparse_backend.h): the envelope in the rows' own order when it is a
+ * band; else, under the default rule, the envelope in reverse Cuthill-McKee
+ * order when the block is small or that order makes it a band; else the
+ * sparse LDL^T. */
+void SparseBackend::factorise(const std::vector<unsigned char> &set) {
+  const std::size_t m = naturalRows_.size();
+  if (envelopeRows_ >= 0) {
+    if (!orderChosen_) chooseEnvelopeOrder();
+    if (useBandOrder_) {
+      bandRows_.clear();
+      for (int i : bandOrder_)
+        if (set[U(i)] == Free) bandRows_.push_back(i);
+    }
+    const std::vector<int> &rows = useBandOrder_ ? bandRows_ : naturalRows_;
+    const std::size_t entries = envelopeFirsts(rows);
+    const bool accept = envelopeRows_ > 0 ? m <= static_cast<std::size_t>(envelopeRows_)
+                                          : m <= kEnvelopeRows || entries <= kEnvelopeWidth * m;
+    if (accept) {
+      fillEnvelope(rows);
+      envelope_.factor();
+      factor_ = useBandOrder_ ? Factor::BandEnvelope : Factor::Envelope;
+      return;
+    }
+  }
+  factoriseSparse(set);
+}
+
+/* The order of the envelope path, once per problem. Any order's envelope
+ * holds the lower triangle's nonzeros, so when the natural order's envelope
+ * is within kOrderSlack of that count no renumbering can gain much and the
+ * rows keep their order (stacks, chains: O(n) to check). Otherwise reverse
+ * Cuthill-McKee is computed and kept if its envelope is smaller. */
+void SparseBackend::chooseEnvelopeOrder() {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<std::size_t>(p.n);
+  constexpr std::size_t kOrderSlack = 3; /* in halves: 1.5 */
+  std::size_t natural = 0, lower = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    natural += i - std::min(i, U(p.col[U(p.rowStart[i])])) + 1;
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1] && U(p.col[U(k)]) <= i; ++k) ++lower;
+  }
+  orderChosen_ = true;
+  useBandOrder_ = false;
+  if (2 * natural <= kOrderSlack * lower) return;
+  computeBandOrder();
+  for (std::size_t r = 0; r < n; ++r) bandRank_[U(bandOrder_[r])] = static_cast<int>(r);
+  std::size_t band = 0;
+  for (std::size_t r = 0; r < n; ++r) {
+    const auto i = U(bandOrder_[r]);
+    std::size_t first = r;
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) first = std::min(first, U(bandRank_[U(p.col[U(k)])]));
+    band += r - first + 1;
+  }
+  useBandOrder_ = band < natural;
+}
+
+/* envelope_.first[] for the free block with its rows in the order of
+ * `rows` (row a's leftmost free column, by position in `rows`); returns the
+ * envelope's size. */
+std::size_t SparseBackend::envelopeFirsts(const std::vector<int> &rows) {
   const SparseLcpProblem &p = *p_;
   const std::size_t m = rows.size();
   for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
   envelope_.begin(static_cast<int>(m));
   std::size_t entries = 0;
-  for (std::size_t a = 0; a < m && !dense; ++a) {
+  for (std::size_t a = 0; a < m; ++a) {
     const auto i = U(rows[a]);
     int first = static_cast<int>(a);
-    /* Columns ascend within a CSR row and positions follow row order, so
-     * the first free column is the leftmost. */
     for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
       const int c = position_[U(p.col[U(k)])];
-      if (c >= 0) {
-        first = std::min(first, c);
-        break;
-      }
+      if (c >= 0 && c < first) first = c;
     }
     envelope_.first[a] = first;
     entries += a - U(first) + 1;
   }
-  bool accept = dense;
-  if (!accept && envelopeRows_ == 0) accept = m <= kEnvelopeRows || entries <= kEnvelopeWidth * m;
-  else if (!accept && envelopeRows_ > 0) accept = m <= static_cast<std::size_t>(envelopeRows_);
-  if (accept) {
-    envelope_.layout();
-    for (std::size_t a = 0; a < m; ++a) {
-      const auto i = U(rows[a]);
-      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
-        const int c = position_[U(p.col[U(k)])];
-        if (c >= 0 && U(c) <= a) envelope_.value[envelope_.at(static_cast<int>(a), c)] = p.val[U(k)];
-      }
-      envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(a))] += eps_;
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
+  return entries;
+}
+
+/* Lays the envelope out (firsts from envelopeFirsts on the same rows) and
+ * stores the free block (A + eps I)_FF in it. */
+void SparseBackend::fillEnvelope(const std::vector<int> &rows) {
+  const SparseLcpProblem &p = *p_;
+  const std::size_t m = rows.size();
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
+  envelope_.layout();
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto i = U(rows[a]);
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int c = position_[U(p.col[U(k)])];
+      if (c >= 0 && U(c) <= a) envelope_.value[envelope_.at(static_cast<int>(a), c)] = p.val[U(k)];
     }
+    envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(a))] += eps_;
   }
   for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
-  return accept;
+}
+
+/* Reverse Cuthill-McKee on the whole matrix's graph (rows joined by a
+ * nonzero), once per problem: each connected component is numbered breadth
+ * first from a row of least degree, the unnumbered neighbours of a row
+ * taken by increasing degree (then index), and the whole numbering is
+ * reversed (George & Liu, ch. 4). This keeps each row's nonzeros near the
+ * diagonal, so the envelope of a tree (a rag doll) or a heap is narrow
+ * where the order the rows came in is not. */
+void SparseBackend::computeBandOrder() {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<std::size_t>(p.n);
+  auto degree = [&](int i) { return p.rowStart[U(i) + 1] - p.rowStart[U(i)]; };
+  bandOrder_.clear();
+  bandRank_.assign(n, -1); /* -1 = not numbered yet */
+  for (;;) {
+    int start = -1;
+    for (std::size_t i = 0; i < n; ++i)
+      if (bandRank_[i] < 0 && (start < 0 || degree(static_cast<int>(i)) < degree(start))) start = static_cast<int>(i);
+    if (start < 0) break;
+    bandRank_[U(start)] = 0;
+    bandOrder_.push_back(start);
+    for (std::size_t head = bandOrder_.size() - 1; head < bandOrder_.size(); ++head) {
+      const auto i = U(bandOrder_[head]);
+      queue_.clear();
+      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+        const int j = p.col[U(k)];
+        if (bandRank_[U(j)] < 0) {
+          bandRank_[U(j)] = 0;
+          queue_.push_back(j);
+        }
+      }
+      std::sort(queue_.begin(), queue_.end(),
+                [&](int a, int b) { return degree(a) != degree(b) ? degree(a) < degree(b) : a < b; });
+      bandOrder_.insert(bandOrder_.end(), queue_.begin(), queue_.end());
+    }
+  }
+  std::reverse(bandOrder_.begin(), bandOrder_.end());
 }
 
 /* AMD on the whole matrix's pattern (CSR of a symmetric matrix is also its
@@ -272,7 +364,8 @@ bool SparseBackend::solveSparse(std::size_t m) {
 void SparseBackend::fallback(const std::vector<unsigned char> &set, std::vector<MeReal> &lambda) {
   const std::size_t m = naturalRows_.size();
   if (m <= kDenseFallback) {
-    gatherEnvelope(naturalRows_, true);
+    envelope_.begin(static_cast<int>(m)); /* full rows: a dense LDL^T */
+    fillEnvelope(naturalRows_);
     envelope_.factor();
     factor_ = Factor::Envelope;
     buildRhs(naturalRows_, set, lambda);

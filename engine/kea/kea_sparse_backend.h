@@ -4,12 +4,15 @@
  *
  * The free block (A + eps I)_FF is factorised one of two ways:
  *
- *  - Envelope LDL^T (kea_envelope_ldlt.h) on the free rows in their natural
- *    order, when the block has at most kEnvelopeRows rows or its envelope is
- *    narrow (mean row width at most kEnvelopeWidth): contact groups and
- *    joint chains come from Mdt row by row, body by body, so their envelope
- *    is a band and the factorisation costs O(m w^2) for mean width w. This
- *    path allocates nothing once its arrays have grown to the problem.
+ *  - Envelope LDL^T (kea_envelope_ldlt.h), allocation-free once its arrays
+ *    have grown to the problem, and faster than the sparse LDL^T on small
+ *    and on banded blocks; taken when the block has at most kEnvelopeRows
+ *    rows or its envelope is a band (mean row width at most
+ *    kEnvelopeWidth). The rows keep the order Mdt gave them (contact groups
+ *    and joint chains come row by row, body by body, which is already a
+ *    band) unless that order's envelope is much larger than the matrix's
+ *    nonzeros; then they are renumbered by reverse Cuthill-McKee, once per
+ *    problem (a rag doll's tree, a heap).
  *
  *  - Otherwise a sparse LDL^T (Eigen's SimplicialLDLT) in a fill-reducing
  *    order (approximate minimum degree, computed once per problem for the
@@ -69,11 +72,15 @@ class SparseBackend {
   int factorizations() const { return factorizations_; }
 
  private:
-  enum class Factor { None, Envelope, Sparse };
+  enum class Factor { None, Envelope, BandEnvelope, Sparse };
 
   void buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set,
                 const std::vector<MeReal> &lambda);
-  bool gatherEnvelope(const std::vector<int> &rows, bool dense);
+  void factorise(const std::vector<unsigned char> &set);
+  std::size_t envelopeFirsts(const std::vector<int> &rows);
+  void fillEnvelope(const std::vector<int> &rows);
+  void chooseEnvelopeOrder();
+  void computeBandOrder();
   void computeOrder();
   void buildOrderedUpper();
   void gatherUpper(std::size_t m, MeReal shift);
@@ -103,6 +110,10 @@ class SparseBackend {
   /* The free rows ascending (naturalRows_), in elimination order
    * (orderedRows_, sparse path), and the free rows of the kept factor. */
   std::vector<int> naturalRows_, orderedRows_, factoredSet_;
+  /* The whole matrix's rows in reverse Cuthill-McKee order, and the free
+   * rows in that order (envelope path when the natural order is wide). */
+  std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
+  bool orderChosen_ = false, useBandOrder_ = false;
   std::vector<int> position_, order_, rank_, upStart_, upRow_;
   std::vector<std::pair<int, int>> entries_;
   std::vector<MeReal> upVal_, wScratch_, rhs_, x_;
