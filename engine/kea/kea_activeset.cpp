@@ -16,18 +16,26 @@
  *
  * Friction rows: their bounds depend on the normal lambdas. The inner
  * pivoting solves the LCP with the bounds frozen at the current lambda; then
- * the bounds are recomputed from the new normal lambdas and, if any moved,
- * the inner solve is repeated from the current sets. This fixed-point
- * iteration is the approximate handling the contract describes: it is not
- * guaranteed to converge, but does in practice (friction bounds only grow or
- * shrink with their normal force, which changes little once the contact set
- * is right); the iteration cap bounds it either way. After 10 rounds the
- * bound update is relaxed by half (kea_activeset_core.h), which turns the
- * usual failure, a 2-cycle of the bounds, into convergence.
+ * the bounds are recomputed from the new normal lambdas. The fixed point is
+ * reached when every clamped row's bound is unchanged (to well below the
+ * solved threshold) and every free row still lies in its new box (a free
+ * row's bounds do not enter the linear solve); otherwise the inner solve is
+ * repeated from the current sets (with the same factorisation when the free
+ * set does not change). A friction row that was clamped only because its
+ * normal impulse was zero (lo = hi = 0) starts that next round free. This
+ * fixed-point iteration is the approximate handling the contract describes:
+ * it is not guaranteed to converge, but does in practice (friction bounds
+ * only grow or shrink with their normal force, which changes little once
+ * the contact set is right); the iteration cap bounds it either way. After
+ * 10 rounds the bound update is relaxed by half (kea_activeset_core.h),
+ * which turns the usual failure, a 2-cycle of the bounds, into convergence.
  *
- * A warm start (last step's lambda) gives the initial sets: rows at a finite
- * bound start clamped there, the rest free. A good guess usually needs one
- * or two linear solves.
+ * A warm start (last step's lambda, friction rows included) gives the
+ * initial bounds (friction boxes from the warm normal impulses) and the
+ * initial sets: rows at a finite bound, or within half the solved threshold
+ * of it, start clamped there, the rest free. A warm start that is already a
+ * solution is confirmed by one linear solve (one factorisation); a good
+ * guess usually needs one or two.
  *
  * The pivoting logic lives in kea_activeset_core.h and is shared with the
  * sparse solver (kea_sparse.cpp); this file supplies the dense matrix

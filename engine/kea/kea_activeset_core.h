@@ -37,7 +37,7 @@ enum RowSet : unsigned char { Free = 0, AtLo = 1, AtHi = 2 };
  * a KeaWorkspace) so that a solve no larger than an earlier one allocates
  * nothing. */
 struct ActiveSetScratch {
-  std::vector<MeReal> lo, hi, newLo, newHi, best;
+  std::vector<MeReal> lo, hi, newLo, newHi, best, start;
   std::vector<unsigned char> set;
   /* The sets tried during single pivoting, n bytes each, back to back. */
   std::vector<unsigned char> tried;
@@ -147,8 +147,12 @@ void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Back
   s.tried.reserve(4 * n);
   std::vector<unsigned char> &set = s.set;
 
+  /* The best iterate so far. The starting point counts too, but its
+   * residual (a product with A) is only needed when no iterate reaches the
+   * solved threshold, so it is scored at the end, if at all. */
+  s.start = r.lambda;
   s.best = r.lambda;
-  MeReal bestResidual = backend.residual(r.lambda, {});
+  MeReal bestResidual = kInf;
   /* Whether best and bestResidual are r.lambda and its residual, with r.w
    * its w: then the final residual need not be computed again. */
   bool bestIsCurrent = false;
@@ -241,6 +245,14 @@ void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Back
     s.hi.swap(s.newHi);
   }
 
+  if (bestResidual > threshold) {
+    const MeReal startResidual = backend.residual(s.start, {});
+    if (startResidual < bestResidual) {
+      bestResidual = startResidual;
+      s.best = s.start;
+      bestIsCurrent = false;
+    }
+  }
   if (bestIsCurrent) {
     r.residual = bestResidual;
   } else {

@@ -92,10 +92,19 @@
  * with. KeaSolveSparse (kea_sparse.cpp) takes A in CSR, as Mdt builds it
  * (A's sparsity follows body sharing), and is what the step uses: the same
  * active-set logic (shared code, kea_activeset_core.h) with the free block
- * factorised by a sparse LDL^T under an AMD ordering (dense LDL^T for free
- * blocks of at most 20 rows; the factorisation is reused while the free set
- * is unchanged), and PGS sweeping the CSR rows. A chain (banded A) costs
- * O(n) per pivot step / sweep.
+ * factorised by an envelope (profile) LDL^T for blocks of at most 96 rows
+ * or banded ones, else by a sparse LDL^T under an AMD ordering
+ * (kea_sparse_backend.h; KeaOptions::envelopeRows overrides the choice);
+ * the factorisation is reused while the free set is unchanged. PGS sweeps
+ * the CSR rows. A chain or a stack (banded A) costs O(n) per pivot step /
+ * sweep.
+ *
+ * Workspace. KeaSolveSparse with a KeaWorkspace keeps every array of the
+ * solve in the workspace and writes into the caller's KeaResult: once a
+ * workspace has solved a problem with n rows, solving problems with at most
+ * n rows allocates nothing, except on the sparse-LDL^T path (blocks over 96
+ * rows that are not banded), a breakdown (least-squares fallback), an
+ * unusually long single-pivoting history, and the warnings.
  * TODO (sparsity): still open: assembling J M^-1 J^T through the platform
  * kernels in Kea itself (Mdt assembles A today), and incremental (rank-one)
  * updates of the factorisation between pivot steps instead of refactorising.
