@@ -57,7 +57,7 @@ namespace {
 struct DenseBackend {
   const LcpProblem &p;
   MeReal eps;
-  std::vector<std::size_t> freeRows, factoredRows;
+  std::vector<int> freeRows, factoredRows;
   std::vector<MeReal> rhs, x;
   detail::EnvelopeSystem block;
   int factorizations = 0;
@@ -73,14 +73,14 @@ struct DenseBackend {
     for (std::size_t i = 0; i < n; ++i) {
       if (set[i] == detail::AtLo) lambda[i] = lo[i];
       else if (set[i] == detail::AtHi) lambda[i] = hi[i];
-      else freeRows.push_back(i);
+      else freeRows.push_back(static_cast<int>(i));
     }
     const std::size_t m = freeRows.size();
     if (m == 0) return;
     if (!block.factored || freeRows != factoredRows) factorise();
     rhs.assign(m, MeReal(0));
     for (std::size_t a = 0; a < m; ++a) {
-      const std::size_t i = freeRows[a];
+      const auto i = static_cast<std::size_t>(freeRows[a]);
       const MeReal *row = p.A.data() + i * n;
       MeReal r = p.b[i];
       for (std::size_t j = 0; j < n; ++j)
@@ -89,7 +89,19 @@ struct DenseBackend {
     }
     x.resize(m);
     block.solve(rhs, x);
-    for (std::size_t a = 0; a < m; ++a) lambda[freeRows[a]] = x[a];
+    for (std::size_t a = 0; a < m; ++a) lambda[static_cast<std::size_t>(freeRows[a])] = x[a];
+  }
+
+  /* See kea_friction_coupling.h. */
+  std::span<const int> factorRows() const {
+    return block.factored && freeRows == factoredRows ? std::span<const int>(freeRows) : std::span<const int>();
+  }
+  void solveWithFactor(std::span<const MeReal> in, std::span<MeReal> out) { block.solve(in, out); }
+  void column(int row, std::span<const int> position, std::span<MeReal> out) const {
+    const auto n = static_cast<std::size_t>(p.n);
+    const MeReal *a = p.A.data() + static_cast<std::size_t>(row) * n;
+    for (std::size_t c = 0; c < n; ++c)
+      if (position[c] >= 0) out[static_cast<std::size_t>(position[c])] = a[c];
   }
 
   /* The free block (A + eps I)_FF, lower triangle, full rows. */
@@ -99,8 +111,9 @@ struct DenseBackend {
     block.begin(static_cast<int>(m));
     block.layout();
     for (std::size_t a = 0; a < m; ++a) {
-      const MeReal *row = p.A.data() + freeRows[a] * n;
-      for (std::size_t c = 0; c <= a; ++c) block.value[block.at(static_cast<int>(a), static_cast<int>(c))] = row[freeRows[c]];
+      const MeReal *row = p.A.data() + static_cast<std::size_t>(freeRows[a]) * n;
+      for (std::size_t c = 0; c <= a; ++c)
+        block.value[block.at(static_cast<int>(a), static_cast<int>(c))] = row[static_cast<std::size_t>(freeRows[c])];
       block.value[block.at(static_cast<int>(a), static_cast<int>(a))] += eps;
     }
     block.factor();

@@ -22,6 +22,7 @@
 #ifndef KARMA_KEA_ACTIVESET_CORE_H
 #define KARMA_KEA_ACTIVESET_CORE_H
 
+#include "kea_friction_coupling.h"
 #include "kea_internal.h"
 
 #include <algorithm>
@@ -37,10 +38,11 @@ enum RowSet : unsigned char { Free = 0, AtLo = 1, AtHi = 2 };
  * a KeaWorkspace) so that a solve no larger than an earlier one allocates
  * nothing. */
 struct ActiveSetScratch {
-  std::vector<MeReal> lo, hi, newLo, newHi, best, start;
+  std::vector<MeReal> lo, hi, newLo, newHi, best, start, saved;
   std::vector<unsigned char> set;
   /* The sets tried during single pivoting, n bytes each, back to back. */
   std::vector<unsigned char> tried;
+  CouplingScratch coupling;
 };
 
 /* Whether `set` is one of the sets in `tried` (a linear scan: single
@@ -127,6 +129,7 @@ void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Back
    * later rounds are relaxed (see below). */
   constexpr int kPlainOuter = 10;
   constexpr int kBlockTries = 3; /* Judice-Pires: block steps allowed without progress */
+  constexpr int kCouplingTries = 3;
 
   r.lambda.assign(n, MeReal(0));
   r.w.assign(n, MeReal(0));
@@ -145,6 +148,10 @@ void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Back
   s.newHi.resize(n);
   /* Room for a few single-pivot sets; a longer history grows the array. */
   s.tried.reserve(4 * n);
+  if (!p.findex.empty()) {
+    s.saved.reserve(n);
+    ReserveCoupling(n, s.coupling);
+  }
   std::vector<unsigned char> &set = s.set;
 
   /* The best iterate so far. The starting point counts too, but its
@@ -158,6 +165,8 @@ void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Back
   bool bestIsCurrent = false;
   int solves = 0;
   bool cycle = false, done = false;
+  /* Coupled friction steps that may still fail (see below). */
+  int couplingTries = kCouplingTries;
 
   int outer = 0;
   while (!done && !cycle && solves < cap) {
@@ -223,6 +232,47 @@ void ActiveSetCore(const RowView &p, const KeaOptions &o, const char *name, Back
       break;
     }
     ++r.frictionRounds;
+    /* The tied rows' exact step (kea_friction_coupling.h), unless a row's
+     * box has just opened (its set is guessed again below). It is kept
+     * only when the sets stay consistent under the bounds of the coupled
+     * lambda (the fixed point is then reached); otherwise lambda goes back
+     * and the plain update below is taken (the set is not the final one,
+     * and the plain rounds approach the boundary the coupled step jumped
+     * over; keeping the jump can cycle). After kCouplingTries such
+     * failures the solve continues with plain rounds only. */
+    bool opened = false;
+    for (std::size_t i = 0; i < n; ++i)
+      opened = opened || (set[i] != Free && s.lo[i] == s.hi[i] && s.newLo[i] < s.newHi[i]);
+    if (couplingTries > 0 && !opened && solves < cap) {
+      s.saved = r.lambda;
+      if (CoupleFriction(p, set, backend, s.coupling, r.lambda)) {
+        ++solves;
+        ComputeBounds(p, r.lambda, s.newLo, s.newHi);
+        for (std::size_t i = 0; i < n; ++i) {
+          if (set[i] == AtLo) r.lambda[i] = s.newLo[i];
+          else if (set[i] == AtHi) r.lambda[i] = s.newHi[i];
+        }
+        const MeReal residual = backend.residual(r.lambda, r.w);
+        bestIsCurrent = residual < bestResidual;
+        if (bestIsCurrent) {
+          bestResidual = residual;
+          s.best = r.lambda;
+        }
+        bool agree = true;
+        for (std::size_t i = 0; i < n && agree; ++i)
+          agree = Wanted(set[i], r.lambda[i], r.w[i], s.newLo[i], s.newHi[i], slack) == set[i];
+        if (agree) {
+          done = true;
+          break;
+        }
+        r.lambda.swap(s.saved);
+        bestIsCurrent = false;
+        --couplingTries;
+        ComputeBounds(p, r.lambda, s.newLo, s.newHi);
+      } else {
+        r.lambda.swap(s.saved); /* a step that did not apply may have moved some rows */
+      }
+    }
     /* A fixed point not reached after kPlainOuter rounds is usually a
      * 2-cycle (the bounds flip between two values and the solver runs to
      * its cap: 40000 solves seen in pile1000). From then on the update is

@@ -98,6 +98,33 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
 }
 
+std::span<const int> SparseBackend::factorRows() const {
+  switch (factor_) {
+    case Factor::Envelope: return naturalRows_;
+    case Factor::BandEnvelope: return bandRows_;
+    case Factor::Sparse: return ldltOk_ ? std::span<const int>(orderedRows_) : std::span<const int>();
+    default: return {};
+  }
+}
+
+void SparseBackend::solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x) {
+  if (factor_ != Factor::Sparse) {
+    envelope_.solve(rhs, x);
+    return;
+  }
+  const Vec sol = ldlt_.solve(Eigen::Map<const Vec>(rhs.data(), static_cast<Eigen::Index>(rhs.size())));
+  std::copy(sol.data(), sol.data() + sol.size(), x.begin());
+}
+
+void SparseBackend::column(int row, std::span<const int> position, std::span<MeReal> out) const {
+  /* A is symmetric: column `row` is row `row`. */
+  const SparseLcpProblem &p = *p_;
+  for (int k = p.rowStart[U(row)]; k < p.rowStart[U(row) + 1]; ++k) {
+    const int c = position[U(p.col[U(k)])];
+    if (c >= 0) out[U(c)] = p.val[U(k)];
+  }
+}
+
 void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set,
                              const std::vector<MeReal> &lambda) {
   /* rhs = b_F - A_FC lambda_C */

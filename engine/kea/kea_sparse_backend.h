@@ -68,6 +68,11 @@ class SparseBackend {
   void solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
                  const std::vector<MeReal> &hi, std::vector<MeReal> &lambda);
 
+  /* See kea_friction_coupling.h. */
+  std::span<const int> factorRows() const;
+  void solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x);
+  void column(int row, std::span<const int> position, std::span<MeReal> out) const;
+
   /* Factorisations since reset(). */
   int factorizations() const { return factorizations_; }
 
