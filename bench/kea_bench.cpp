@@ -8,7 +8,8 @@
 //       (b changed by 0.2%, as from one step to the next of a resting
 //       scene); entry 0 = the allocating KeaSolveSparse, 1 = the workspace
 //       one; start 0 = cold (lambda = 0), 1 = warm-started from the
-//       previous step's solution.
+//       previous step's solution, 2 = from its own solution (the least a
+//       solve costs: one factorisation and one check).
 //   BM_Path/<problem>/<path>/<start>  the same with the free blocks forced
 //       onto one factorisation (path 0 = sparse LDL^T, 1 = envelope LDL^T),
 //       for the crossover that sets the default rule.
@@ -20,6 +21,7 @@
 #include "kea_lcp.h"
 
 #include <climits>
+#include <cstdint>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -36,6 +38,7 @@ struct Case {
   std::string name;
   ContactProblem previous, next;
   std::vector<MeReal> warm;  // the previous step's solution
+  std::vector<MeReal> own;   // this step's own solution
 };
 
 ContactProblem NextStep(const ContactProblem &p) {
@@ -48,8 +51,9 @@ ContactProblem NextStep(const ContactProblem &p) {
 }
 
 Case Make(std::string name, ContactProblem p) {
-  Case c{std::move(name), p, NextStep(p), {}};
+  Case c{std::move(name), p, NextStep(p), {}, {}};
   c.warm = karma::kea::KeaSolveSparse(c.previous.sparse(), KeaOptions{}).lambda;
+  c.own = karma::kea::KeaSolveSparse(c.next.sparse(), KeaOptions{}).lambda;
   return c;
 }
 
@@ -81,13 +85,21 @@ void Count(benchmark::State &state, const R &r) {
   if constexpr (requires { r.factorizations; }) state.counters["factorizations"] = r.factorizations;
 }
 
-// args: case, entry (0 allocating, 1 workspace), start (0 cold, 1 warm)
+// The start: 0 cold, 1 the previous step's solution, 2 the problem's own.
+void SetStart(KeaOptions &o, const Case &c, std::int64_t start) {
+  if (start == 1) o.warmStart = c.warm;
+  if (start == 2) o.warmStart = c.own;
+}
+
+const char *StartName(std::int64_t start) { return start == 0 ? " cold" : start == 1 ? " warm" : " own"; }
+
+// args: case, entry (0 allocating, 1 workspace), start
 void BM_Solve(benchmark::State &state) {
   const Case &c = Cases()[static_cast<std::size_t>(state.range(0))];
   const bool workspaceEntry = state.range(1) == 1;
   KeaOptions o;
   o.warnings = false;
-  if (state.range(2) == 1) o.warmStart = c.warm;
+  SetStart(o, c, state.range(2));
   const karma::kea::SparseLcpProblem p = c.next.sparse();
   std::unique_ptr<KeaWorkspace, WorkspaceDeleter> workspace(karma::kea::KeaWorkspaceCreate());
   KeaResult r;
@@ -96,7 +108,7 @@ void BM_Solve(benchmark::State &state) {
     else r = karma::kea::KeaSolveSparse(p, o);
     benchmark::DoNotOptimize(r.lambda.data());
   }
-  state.SetLabel(c.name + (workspaceEntry ? " workspace" : " allocating") + (state.range(2) ? " warm" : " cold"));
+  state.SetLabel(c.name + (workspaceEntry ? " workspace" : " allocating") + StartName(state.range(2)));
   Count(state, r);
 }
 
@@ -106,13 +118,13 @@ void ForcePath(O &o, bool envelope) {
   if constexpr (requires { o.envelopeRows; }) o.envelopeRows = envelope ? INT_MAX : -1;
 }
 
-// args: case, path (0 sparse LDL^T, 1 envelope LDL^T), start (0 cold, 1 warm)
+// args: case, path (0 sparse LDL^T, 1 envelope LDL^T), start
 void BM_Path(benchmark::State &state) {
   const Case &c = Cases()[static_cast<std::size_t>(state.range(0))];
   KeaOptions o;
   o.warnings = false;
   ForcePath(o, state.range(1) == 1);
-  if (state.range(2) == 1) o.warmStart = c.warm;
+  SetStart(o, c, state.range(2));
   const karma::kea::SparseLcpProblem p = c.next.sparse();
   std::unique_ptr<KeaWorkspace, WorkspaceDeleter> workspace(karma::kea::KeaWorkspaceCreate());
   KeaResult r;
@@ -120,14 +132,14 @@ void BM_Path(benchmark::State &state) {
     karma::kea::KeaSolveSparse(p, o, *workspace, r);
     benchmark::DoNotOptimize(r.lambda.data());
   }
-  state.SetLabel(c.name + (state.range(1) ? " envelope" : " sparse") + (state.range(2) ? " warm" : " cold"));
+  state.SetLabel(c.name + (state.range(1) ? " envelope" : " sparse") + StartName(state.range(2)));
   Count(state, r);
 }
 
 void SolveArgs(benchmark::internal::Benchmark *b) {
   for (int c = 0; c < 6; ++c)
     for (int entry = 0; entry < 2; ++entry)
-      for (int start = 0; start < 2; ++start) b->Args({c, entry, start});
+      for (int start = 0; start < 3; ++start) b->Args({c, entry, start});
 }
 
 void PathArgs(benchmark::internal::Benchmark *b) {
