@@ -85,8 +85,11 @@ TEST(KeaWarmStart, PerturbedProblemConvergesInFewSolves) {
     const KeaResult c = KeaSolveSparse(next.sparse(), KeaOptions{});
     ASSERT_EQ(w.status, KeaStatus::Solved) << t.name;
     ASSERT_EQ(c.status, KeaStatus::Solved) << t.name;
-    EXPECT_LE(2 * w.iterations, c.iterations + 1) << t.name << " warm " << w.iterations << "/" << w.factorizations << "/" << w.frictionRounds << " cold " << c.iterations << "/" << c.factorizations << "/" << c.frictionRounds;
-    if (std::getenv("KEA_WARM_COUNTS")) std::printf("%s warm %d/%d/%d cold %d/%d/%d\n", t.name.c_str(), w.iterations, w.factorizations, w.frictionRounds, c.iterations, c.factorizations, c.frictionRounds);
+    // A few solves, about half the cold ones or fewer.
+    const std::string counts = t.name + ": warm " + std::to_string(w.iterations) + " solves, cold " +
+                               std::to_string(c.iterations);
+    EXPECT_LE(w.iterations, 6) << counts;
+    EXPECT_LE(2 * w.iterations, c.iterations + 1) << counts;
     // Both answers solve the same LCP to its tolerance.
     const double scale = 1 + MaxAbs(c.lambda);
     for (std::size_t i = 0; i < c.lambda.size(); ++i)
