@@ -3,7 +3,8 @@
 // solution is confirmed by one linear solve and one factorisation with the
 // same answer; a slightly changed problem (b perturbed, as from one step to
 // the next of a resting scene) converges in a few solves; the workspace
-// entry point gives bit-identical answers to the allocating one.
+// entry point gives bit-identical answers to the allocating one; the two
+// factorisations of the free blocks (sparse, envelope) give the same answers.
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
 
@@ -113,6 +114,31 @@ TEST(KeaWarmStart, WorkspaceEntryMatchesTheAllocatingOneBitForBit) {
       EXPECT_EQ(reused.iterations, fresh.iterations) << it->name;
       EXPECT_TRUE(reused.lambda == fresh.lambda) << it->name;
       EXPECT_TRUE(reused.w == fresh.w) << it->name;
+    }
+  }
+}
+
+TEST(KeaFactorisations, SparseAndEnvelopePathsAgree) {
+  // The same problems with every free block forced onto the sparse LDL^T,
+  // onto the envelope LDL^T, and under the default rule: the same answers
+  // to the tolerance (the paths differ in rounding only).
+  std::vector<Named> problems = Problems();
+  problems.push_back({"pile32", kea_test::Pile(32, 20, 1)});
+  problems.push_back({"pile64", kea_test::Pile(64, 40, 2)});
+  for (const Named &t : problems) {
+    KeaOptions sparse, envelope, byRule;
+    sparse.envelopeRows = -1;
+    envelope.envelopeRows = 1 << 20;
+    const KeaResult s = KeaSolveSparse(t.problem.sparse(), sparse);
+    const KeaResult e = KeaSolveSparse(t.problem.sparse(), envelope);
+    const KeaResult d = KeaSolveSparse(t.problem.sparse(), byRule);
+    ASSERT_EQ(s.status, KeaStatus::Solved) << t.name;
+    ASSERT_EQ(e.status, KeaStatus::Solved) << t.name;
+    ASSERT_EQ(d.status, KeaStatus::Solved) << t.name;
+    const double scale = 1 + MaxAbs(s.lambda);
+    for (std::size_t i = 0; i < s.lambda.size(); ++i) {
+      EXPECT_NEAR(e.lambda[i], s.lambda[i], 10 * kTol * scale) << t.name << " row " << i;
+      EXPECT_NEAR(d.lambda[i], s.lambda[i], 10 * kTol * scale) << t.name << " row " << i;
     }
   }
 }
