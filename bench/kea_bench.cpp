@@ -13,7 +13,8 @@
 //   BM_Path/<problem>/<path>/<start>  the same with the free blocks forced
 //       onto one factorisation (path 0 = sparse LDL^T, 1 = envelope LDL^T),
 //       for the crossover that sets the default rule.
-// Counters: solves (linear solves per solve), factorizations.
+// Counters: solves (linear solves per solve), factorizations, friction_rounds
+// (fixed-point rounds after the first consistent set).
 // Run e.g.  build/release/bench/kea_bench --benchmark_repetitions=3
 #include <benchmark/benchmark.h>
 
@@ -82,7 +83,10 @@ struct WorkspaceDeleter {
 template <class R>
 void Count(benchmark::State &state, const R &r) {
   state.counters["solves"] = r.iterations;
-  if constexpr (requires { r.factorizations; }) state.counters["factorizations"] = r.factorizations;
+  if constexpr (requires { r.factorizations; }) {
+    state.counters["factorizations"] = r.factorizations;
+    state.counters["friction_rounds"] = r.frictionRounds;
+  }
 }
 
 // The start: 0 cold, 1 the previous step's solution, 2 the problem's own.
