@@ -178,11 +178,11 @@ void SparseBackend::chooseEnvelopeOrder() {
   const SparseLcpProblem &p = *p_;
   const auto n = static_cast<std::size_t>(p.n);
   constexpr std::size_t kOrderSlack = 3; /* in halves: 1.5 */
-  std::size_t natural = 0, lower = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    natural += i - std::min(i, U(p.col[U(p.rowStart[i])])) + 1;
-    for (int k = p.rowStart[i]; k < p.rowStart[i + 1] && U(p.col[U(k)]) <= i; ++k) ++lower;
-  }
+  /* Symmetric with every diagonal present: the lower triangle holds
+   * (nnz + n) / 2 entries. */
+  const std::size_t lower = (U(p.rowStart[n]) + n) / 2;
+  std::size_t natural = 0;
+  for (std::size_t i = 0; i < n; ++i) natural += i - std::min(i, U(p.col[U(p.rowStart[i])])) + 1;
   orderChosen_ = true;
   useBandOrder_ = false;
   if (2 * natural <= kOrderSlack * lower) return;
@@ -207,12 +207,18 @@ std::size_t SparseBackend::envelopeFirsts(const std::vector<int> &rows) {
   for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
   envelope_.begin(static_cast<int>(m));
   std::size_t entries = 0;
+  /* Rows in ascending order (the natural order) have ascending positions
+   * along a CSR row, so the first free column found is the leftmost. */
+  const bool ascending = &rows == &naturalRows_;
   for (std::size_t a = 0; a < m; ++a) {
     const auto i = U(rows[a]);
     int first = static_cast<int>(a);
     for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
       const int c = position_[U(p.col[U(k)])];
-      if (c >= 0 && c < first) first = c;
+      if (c >= 0 && c < first) {
+        first = c;
+        if (ascending) break;
+      }
     }
     envelope_.first[a] = first;
     entries += a - U(first) + 1;
