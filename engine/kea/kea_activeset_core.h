@@ -149,7 +149,7 @@ class ActiveSetRun {
   /* The initial lambda, bounds and sets; false when there is nothing to
    * solve (n = 0). */
   bool start() {
-    r_.lambda.assign(n_, MeReal(0));
+    InitialLambda(o_, n_, r_.lambda);
     r_.w.assign(n_, MeReal(0));
     r_.iterations = 0;
     r_.frictionRounds = 0;
@@ -158,7 +158,6 @@ class ActiveSetRun {
       r_.status = KeaStatus::Solved;
       return false;
     }
-    if (!o_.warmStart.empty()) std::copy(o_.warmStart.begin(), o_.warmStart.end(), r_.lambda.begin());
     ComputeBounds(p_, r_.lambda, s_.lo, s_.hi);
     InitialSets(r_.lambda, slack_, s_);
     s_.newLo.resize(n_);

@@ -4,6 +4,7 @@
 
 #include "kea_lcp.h"
 
+#include <algorithm>
 #include <limits>
 #include <span>
 #include <vector>
@@ -40,6 +41,14 @@ void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector
  * for a given lambda and its w (bounds computed from lambda, row by row:
  * no allocation). */
 MeReal ComplementarityResidual(const RowView &p, std::span<const MeReal> lambda, std::span<const MeReal> w);
+
+/* lambda (resized to n) = the warm start, or zeros without one. The warm
+ * start may be lambda itself (a caller re-solving from its last result). */
+inline void InitialLambda(const KeaOptions &o, std::size_t n, std::vector<MeReal> &lambda) {
+  if (!o.warmStart.empty() && o.warmStart.data() == lambda.data() && lambda.size() == n) return;
+  lambda.assign(n, MeReal(0));
+  if (!o.warmStart.empty()) std::copy(o.warmStart.begin(), o.warmStart.end(), lambda.begin());
+}
 
 /* Warns "<function>: bad input: <why>; ..." and returns false. */
 bool Reject(const char *function, const char *why);

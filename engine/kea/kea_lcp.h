@@ -155,7 +155,7 @@ struct KeaOptions {
   /* Optional initial lambda (empty or n values), e.g. last step's impulses.
    * The active-set method derives its initial active set from it; PGS starts
    * its sweeps from it. Without it both start from lambda = 0 clamped into
-   * the bounds. */
+   * the bounds. It may be the result's own lambda (n values). */
   std::span<const MeReal> warmStart;
   /* Emit MeWarning on IterationLimit / CycleDetected. BadInput always warns. */
   bool warnings = true;

@@ -60,11 +60,10 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   const detail::RowView rows = detail::Rows(p);
   const MeReal threshold = detail::SolvedThreshold(rows, o);
 
-  r.lambda.assign(n, MeReal(0));
+  detail::InitialLambda(o, n, r.lambda);
   r.w.assign(n, MeReal(0));
   r.factorizations = 0;
   r.frictionRounds = 0;
-  if (!o.warmStart.empty()) std::copy(o.warmStart.begin(), o.warmStart.end(), r.lambda.begin());
 
   detail::ComputeBounds(rows, r.lambda, s.lo, s.hi);
   for (std::size_t i = 0; i < n; ++i) r.lambda[i] = std::clamp(r.lambda[i], s.lo[i], s.hi[i]);

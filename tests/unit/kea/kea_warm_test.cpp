@@ -142,3 +142,30 @@ TEST(KeaFactorisations, SparseAndEnvelopePathsAgree) {
     }
   }
 }
+
+TEST(KeaWarmStart, ResultReusedAsItsOwnWarmStart) {
+  // A caller may warm-start a workspace solve from the result it writes
+  // into: the answer is the same as from a copy.
+  std::unique_ptr<KeaWorkspace, WorkspaceDeleter> workspace(KeaWorkspaceCreate());
+  for (const Named &t : Problems()) {
+    for (KeaMethod method : {KeaMethod::ActiveSet, KeaMethod::PGS}) {
+      KeaOptions o;
+      o.method = method;
+      o.warnings = false;
+      KeaResult result;
+      KeaSolveSparse(t.problem.sparse(), o, *workspace, result);
+      const std::vector<MeReal> copy = result.lambda;
+      KeaOptions fromCopy = o, fromItself = o;
+      fromCopy.warmStart = copy;
+      fromItself.warmStart = result.lambda;
+      KeaResult expected;
+      KeaSolveSparse(t.problem.sparse(), fromCopy, *workspace, expected);
+      KeaSolveSparse(t.problem.sparse(), fromItself, *workspace, result);
+      EXPECT_TRUE(result.lambda == expected.lambda) << t.name;
+      EXPECT_EQ(result.iterations, expected.iterations) << t.name;
+      if (method == KeaMethod::ActiveSet) {
+        EXPECT_EQ(result.iterations, 1) << t.name;
+      }
+    }
+  }
+}
