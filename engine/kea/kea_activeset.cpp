@@ -16,58 +16,51 @@
  *
  * Friction rows: their bounds depend on the normal lambdas. The inner
  * pivoting solves the LCP with the bounds frozen at the current lambda; then
- * the bounds are recomputed from the new normal lambdas and, if any moved,
- * the inner solve is repeated from the current sets. This fixed-point
- * iteration is the approximate handling the contract describes: it is not
- * guaranteed to converge, but does in practice (friction bounds only grow or
- * shrink with their normal force, which changes little once the contact set
- * is right); the iteration cap bounds it either way. After 10 rounds the
- * bound update is relaxed by half (kea_activeset_core.h), which turns the
- * usual failure, a 2-cycle of the bounds, into convergence.
+ * the bounds are recomputed from the new normal lambdas. The fixed point is
+ * reached when every clamped row's bound is unchanged (to well below the
+ * solved threshold) and every free row still lies in its new box (a free
+ * row's bounds do not enter the linear solve); otherwise the inner solve is
+ * repeated from the current sets (with the same factorisation when the free
+ * set does not change). A friction row that was clamped only because its
+ * normal impulse was zero (lo = hi = 0) starts that next round free. This
+ * fixed-point iteration is the approximate handling the contract describes:
+ * it is not guaranteed to converge, but does in practice (friction bounds
+ * only grow or shrink with their normal force, which changes little once
+ * the contact set is right); the iteration cap bounds it either way. After
+ * 10 rounds the bound update is relaxed by half (kea_activeset_core.h),
+ * which turns the usual failure, a 2-cycle of the bounds, into convergence.
  *
- * A warm start (last step's lambda) gives the initial sets: rows at a finite
- * bound start clamped there, the rest free. A good guess usually needs one
- * or two linear solves.
+ * A warm start (last step's lambda, friction rows included) gives the
+ * initial bounds (friction boxes from the warm normal impulses) and the
+ * initial sets: rows at a finite bound, or within half the solved threshold
+ * of it, start clamped there, the rest free. A warm start that is already a
+ * solution is confirmed by one linear solve (one factorisation); a good
+ * guess usually needs one or two.
  *
  * The pivoting logic lives in kea_activeset_core.h and is shared with the
  * sparse solver (kea_sparse.cpp); this file supplies the dense matrix
  * operations: the residual over the dense rows and a dense LDL^T of the free
- * block. */
+ * block (kea_envelope_ldlt.h, with a least-squares fallback when it breaks
+ * down), re-used while the free set does not change. */
 #include "kea_activeset_core.h"
-
-#include <Eigen/Dense>
+#include "kea_envelope_ldlt.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace karma::kea {
-namespace detail {
-
-void SolveDenseBlock(std::vector<MeReal> &block, std::vector<MeReal> &rhs, int m, std::vector<MeReal> &x) {
-  using Mat = Eigen::Matrix<MeReal, Eigen::Dynamic, Eigen::Dynamic>;
-  using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
-  const Eigen::Map<const Mat> A(block.data(), m, m);
-  const Eigen::Map<const Vec> b(rhs.data(), m);
-  Vec sol;
-  Eigen::LDLT<Mat> ldlt(A);
-  if (ldlt.info() == Eigen::Success) sol = ldlt.solve(b);
-  if (sol.size() != m || !sol.allFinite()) {
-    /* Not positive semi-definite, or breakdown: a least-squares solve. */
-    sol = A.completeOrthogonalDecomposition().solve(b);
-  }
-  x.assign(sol.data(), sol.data() + m);
-}
-
-}  // namespace detail
-
 namespace {
 
-/* The dense matrix operations of the active-set core. */
+/* The dense matrix operations of the active-set core. The free block is
+ * factorised by the envelope LDL^T with full rows (a dense LDL^T), kept
+ * while the free set does not change. */
 struct DenseBackend {
   const LcpProblem &p;
   MeReal eps;
-  std::vector<std::size_t> freeRows;
-  std::vector<MeReal> block, rhs, x;
+  std::vector<int> freeRows, factoredRows;
+  std::vector<MeReal> rhs, x;
+  detail::EnvelopeSystem block;
+  int factorizations = 0;
 
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w) { return KeaResidual(p, eps, lambda, w); }
 
@@ -80,25 +73,52 @@ struct DenseBackend {
     for (std::size_t i = 0; i < n; ++i) {
       if (set[i] == detail::AtLo) lambda[i] = lo[i];
       else if (set[i] == detail::AtHi) lambda[i] = hi[i];
-      else freeRows.push_back(i);
+      else freeRows.push_back(static_cast<int>(i));
     }
     const std::size_t m = freeRows.size();
     if (m == 0) return;
-    block.assign(m * m, MeReal(0));
+    if (!block.factored || freeRows != factoredRows) factorise();
     rhs.assign(m, MeReal(0));
     for (std::size_t a = 0; a < m; ++a) {
-      const std::size_t i = freeRows[a];
+      const auto i = static_cast<std::size_t>(freeRows[a]);
       const MeReal *row = p.A.data() + i * n;
-      /* Column-major; the block is symmetric, so row a is column a. */
-      for (std::size_t c = 0; c < m; ++c) block[c * m + a] = row[freeRows[c]];
-      block[a * m + a] += eps;
       MeReal r = p.b[i];
       for (std::size_t j = 0; j < n; ++j)
         if (set[j] != detail::Free) r -= row[j] * lambda[j];
       rhs[a] = r;
     }
-    detail::SolveDenseBlock(block, rhs, static_cast<int>(m), x);
-    for (std::size_t a = 0; a < m; ++a) lambda[freeRows[a]] = x[a];
+    x.resize(m);
+    block.solve(rhs, x);
+    for (std::size_t a = 0; a < m; ++a) lambda[static_cast<std::size_t>(freeRows[a])] = x[a];
+  }
+
+  /* See kea_friction_coupling.h. */
+  std::span<const int> factorRows() const {
+    return block.factored && freeRows == factoredRows ? std::span<const int>(freeRows) : std::span<const int>();
+  }
+  void solveWithFactor(std::span<const MeReal> in, std::span<MeReal> out) { block.solve(in, out); }
+  void column(int row, std::span<const int> position, std::span<MeReal> out) const {
+    const auto n = static_cast<std::size_t>(p.n);
+    const MeReal *a = p.A.data() + static_cast<std::size_t>(row) * n;
+    for (std::size_t c = 0; c < n; ++c)
+      if (position[c] >= 0) out[static_cast<std::size_t>(position[c])] = a[c];
+  }
+
+  /* The free block (A + eps I)_FF, lower triangle, full rows. */
+  void factorise() {
+    const auto n = static_cast<std::size_t>(p.n);
+    const std::size_t m = freeRows.size();
+    block.begin(static_cast<int>(m));
+    block.layout();
+    for (std::size_t a = 0; a < m; ++a) {
+      const MeReal *row = p.A.data() + static_cast<std::size_t>(freeRows[a]) * n;
+      for (std::size_t c = 0; c <= a; ++c)
+        block.value[block.at(static_cast<int>(a), static_cast<int>(c))] = row[static_cast<std::size_t>(freeRows[c])];
+      block.value[block.at(static_cast<int>(a), static_cast<int>(a))] += eps;
+    }
+    block.factor();
+    factoredRows = freeRows;
+    ++factorizations;
   }
 };
 
@@ -107,8 +127,12 @@ struct DenseBackend {
 KeaResult KeaSolveActiveSet(const LcpProblem &p, const KeaOptions &o) {
   static const char *const kName = "KeaSolveActiveSet";
   if (!detail::Validate(p, o, kName)) return detail::BadInputResult(p.n);
-  DenseBackend backend{p, o.epsilon, {}, {}, {}, {}};
-  return detail::ActiveSetCore(detail::Rows(p), o, kName, backend);
+  DenseBackend backend{p, o.epsilon, {}, {}, {}, {}, {}, 0};
+  detail::ActiveSetScratch scratch;
+  KeaResult r;
+  detail::ActiveSetCore(detail::Rows(p), o, kName, backend, scratch, r);
+  r.factorizations = backend.factorizations;
+  return r;
 }
 
 }  // namespace karma::kea

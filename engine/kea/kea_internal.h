@@ -4,6 +4,7 @@
 
 #include "kea_lcp.h"
 
+#include <algorithm>
 #include <limits>
 #include <span>
 #include <vector>
@@ -37,8 +38,17 @@ void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector
                    std::vector<MeReal> &hi);
 
 /* The contract's residual max_i |lambda_i - clamp(lambda_i - w_i, lo_i, hi_i)|
- * for a given lambda and its w (bounds computed from lambda). */
+ * for a given lambda and its w (bounds computed from lambda, row by row:
+ * no allocation). */
 MeReal ComplementarityResidual(const RowView &p, std::span<const MeReal> lambda, std::span<const MeReal> w);
+
+/* lambda (resized to n) = the warm start, or zeros without one. The warm
+ * start may be lambda itself (a caller re-solving from its last result). */
+inline void InitialLambda(const KeaOptions &o, std::size_t n, std::vector<MeReal> &lambda) {
+  if (!o.warmStart.empty() && o.warmStart.data() == lambda.data() && lambda.size() == n) return;
+  lambda.assign(n, MeReal(0));
+  if (!o.warmStart.empty()) std::copy(o.warmStart.begin(), o.warmStart.end(), lambda.begin());
+}
 
 /* Warns "<function>: bad input: <why>; ..." and returns false. */
 bool Reject(const char *function, const char *why);
@@ -61,11 +71,6 @@ KeaResult BadInputResult(int n);
 
 /* Tolerance * (1 + max|b|): the residual below which the problem is solved. */
 MeReal SolvedThreshold(const RowView &p, const KeaOptions &o);
-
-/* Solves a dense symmetric block (the active set's free rows) by LDL^T,
- * falling back to a least-squares (complete orthogonal decomposition) solve
- * when the factorisation breaks down. block is m x m, column-major; rhs m. */
-void SolveDenseBlock(std::vector<MeReal> &block, std::vector<MeReal> &rhs, int m, std::vector<MeReal> &x);
 
 /* Emits the iteration-cap / cycle warnings when options.warnings is set. */
 void WarnIterationLimit(const KeaOptions &o, const char *function, int iterations, MeReal residual);

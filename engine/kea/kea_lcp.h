@@ -92,10 +92,19 @@
  * with. KeaSolveSparse (kea_sparse.cpp) takes A in CSR, as Mdt builds it
  * (A's sparsity follows body sharing), and is what the step uses: the same
  * active-set logic (shared code, kea_activeset_core.h) with the free block
- * factorised by a sparse LDL^T under an AMD ordering (dense LDL^T for free
- * blocks of at most 20 rows; the factorisation is reused while the free set
- * is unchanged), and PGS sweeping the CSR rows. A chain (banded A) costs
- * O(n) per pivot step / sweep.
+ * factorised by an envelope (profile) LDL^T for blocks of at most 96 rows
+ * or banded ones, else by a sparse LDL^T under an AMD ordering
+ * (kea_sparse_backend.h; KeaOptions::envelopeRows overrides the choice);
+ * the factorisation is reused while the free set is unchanged. PGS sweeps
+ * the CSR rows. A chain or a stack (banded A) costs O(n) per pivot step /
+ * sweep.
+ *
+ * Workspace. KeaSolveSparse with a KeaWorkspace keeps every array of the
+ * solve in the workspace and writes into the caller's KeaResult: once a
+ * workspace has solved a problem with n rows, solving problems with at most
+ * n rows allocates nothing, except on the sparse-LDL^T path (blocks over 96
+ * rows that are not banded), a breakdown (least-squares fallback), an
+ * unusually long single-pivoting history, and the warnings.
  * TODO (sparsity): still open: assembling J M^-1 J^T through the platform
  * kernels in Kea itself (Mdt assembles A today), and incremental (rank-one)
  * updates of the factorisation between pivot steps instead of refactorising.
@@ -146,10 +155,17 @@ struct KeaOptions {
   /* Optional initial lambda (empty or n values), e.g. last step's impulses.
    * The active-set method derives its initial active set from it; PGS starts
    * its sweeps from it. Without it both start from lambda = 0 clamped into
-   * the bounds. */
+   * the bounds. It may be the result's own lambda (n values). */
   std::span<const MeReal> warmStart;
   /* Emit MeWarning on IterationLimit / CycleDetected. BadInput always warns. */
   bool warnings = true;
+  /* KeaSolveSparse's choice of factorisation for a free block of m rows
+   * (see kea_sparse_backend.h): 0 = the default rule (the envelope LDL^T
+   * when m <= 96 or the block's envelope is a band of mean width <= 32,
+   * else the sparse LDL^T); > 0: the envelope LDL^T exactly when m <=
+   * envelopeRows; < 0: always the sparse LDL^T. The answer is the same up to
+   * rounding; only cost and allocation differ (the sparse path allocates). */
+  int envelopeRows = 0;
 };
 
 struct KeaResult {
@@ -158,6 +174,12 @@ struct KeaResult {
   KeaStatus status = KeaStatus::BadInput;
   int iterations = 0;          /* linear solves (active set) or sweeps (PGS) */
   MeReal residual = 0;         /* max complementarity violation (absolute) */
+  /* Statistics (active set; 0 for PGS): factorisations of a free block (a
+   * solve whose free set is the previous solve's re-uses its factor), and
+   * friction fixed-point rounds that needed another inner solve (0 when
+   * the first consistent free set already met its own friction bounds). */
+  int factorizations = 0;
+  int frictionRounds = 0;
 };
 
 /* The same problem with A in compressed sparse rows: both triangles stored,

@@ -25,9 +25,8 @@ KeaResult KeaSolvePGS(const LcpProblem &p, const KeaOptions &o) {
   const MeReal threshold = detail::SolvedThreshold(detail::Rows(p), o);
 
   KeaResult r;
-  r.lambda.assign(n, MeReal(0));
+  detail::InitialLambda(o, n, r.lambda);
   r.w.assign(n, MeReal(0));
-  if (!o.warmStart.empty()) std::copy(o.warmStart.begin(), o.warmStart.end(), r.lambda.begin());
 
   std::vector<MeReal> lo, hi;
   detail::ComputeBounds(detail::Rows(p), r.lambda, lo, hi);

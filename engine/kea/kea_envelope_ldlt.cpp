@@ -1,0 +1,128 @@
+/* kea_envelope_ldlt.cpp: the envelope LDL^T (see kea_envelope_ldlt.h). */
+#include "kea_envelope_ldlt.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace karma::kea::detail {
+namespace {
+
+/* sum_k a[k] b[k] in four interleaved partial sums (a fixed order, so the
+ * result is the same run to run; the partial sums let the compiler keep
+ * four multiply-adds in flight or in one vector register). */
+MeReal Dot(const MeReal *a, const MeReal *b, int count) {
+  MeReal s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int k = 0;
+  for (; k + 4 <= count; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < count; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
+}  // namespace
+
+bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value) {
+  for (int i = 0; i < m; ++i) {
+    const int fi = first[static_cast<std::size_t>(i)];
+    MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)]; /* rowI[j - fi] = entry (i, j) */
+    /* u_ij = a_ij - sum_{k in both envelopes, k < j} u_ik l_jk */
+    for (int j = fi; j < i; ++j) {
+      const int fj = first[static_cast<std::size_t>(j)];
+      const MeReal *rowJ = value.data() + start[static_cast<std::size_t>(j)];
+      const int k0 = std::max(fi, fj);
+      const MeReal *ui = rowI + (k0 - fi), *lj = rowJ + (k0 - fj);
+      rowI[j - fi] -= Dot(ui, lj, j - k0);
+    }
+    /* l_ij = u_ij / d_j and d_i = a_ii - sum_j u_ij l_ij */
+    const MeReal aii = rowI[i - fi];
+    MeReal d = aii;
+    for (int j = fi; j < i; ++j) {
+      const MeReal dj = value[static_cast<std::size_t>(start[static_cast<std::size_t>(j + 1)] - 1)];
+      const MeReal u = rowI[j - fi];
+      const MeReal l = u / dj;
+      rowI[j - fi] = l;
+      d -= u * l;
+    }
+    if (!(aii > 0) || !(d > kPivotFloor * aii)) return false;
+    rowI[i - fi] = d;
+  }
+  return true;
+}
+
+void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start,
+                       std::span<const MeReal> value, std::span<MeReal> x) {
+  /* L y = rhs, row by row. */
+  for (int i = 0; i < m; ++i) {
+    const int fi = first[static_cast<std::size_t>(i)];
+    const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
+    MeReal s = x[static_cast<std::size_t>(i)];
+    for (int k = fi; k < i; ++k) s -= rowI[k - fi] * x[static_cast<std::size_t>(k)];
+    x[static_cast<std::size_t>(i)] = s;
+  }
+  /* D z = y */
+  for (int i = 0; i < m; ++i) x[static_cast<std::size_t>(i)] /= value[static_cast<std::size_t>(start[static_cast<std::size_t>(i + 1)] - 1)];
+  /* L^T x = z, by rows of L from the bottom: x_i is final once the rows
+   * below it have been subtracted. */
+  for (int i = m - 1; i > 0; --i) {
+    const int fi = first[static_cast<std::size_t>(i)];
+    const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
+    const MeReal xi = x[static_cast<std::size_t>(i)];
+    for (int k = fi; k < i; ++k) x[static_cast<std::size_t>(k)] -= rowI[k - fi] * xi;
+  }
+}
+
+void EnvelopeSystem::reserve(std::size_t rows, std::size_t entries) {
+  first.reserve(rows);
+  start.reserve(rows + 1);
+  value.reserve(entries);
+  original.reserve(entries);
+}
+
+void EnvelopeSystem::begin(int rows) {
+  m = rows;
+  first.assign(static_cast<std::size_t>(m), 0);
+  factored = broken = false;
+}
+
+void EnvelopeSystem::layout() {
+  start.resize(static_cast<std::size_t>(m) + 1);
+  start[0] = 0;
+  for (int i = 0; i < m; ++i)
+    start[static_cast<std::size_t>(i) + 1] = start[static_cast<std::size_t>(i)] + i - first[static_cast<std::size_t>(i)] + 1;
+  value.assign(size(), MeReal(0));
+  factored = broken = false;
+}
+
+void EnvelopeSystem::factor() {
+  original.assign(value.begin(), value.begin() + static_cast<std::ptrdiff_t>(size()));
+  broken = !EnvelopeLdltFactor(m, first, start, value);
+  factored = true;
+}
+
+void EnvelopeSystem::solve(std::span<const MeReal> rhs, std::span<MeReal> x) const {
+  const auto size = static_cast<std::size_t>(m);
+  if (!broken) {
+    std::copy(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(size), x.begin());
+    EnvelopeLdltSolve(m, first, start, value, x);
+    bool finite = true;
+    for (std::size_t i = 0; i < size; ++i) finite = finite && std::isfinite(x[i]);
+    if (finite) return;
+  }
+  /* Breakdown: least squares on the original (symmetric) matrix. */
+  using Mat = Eigen::Matrix<MeReal, Eigen::Dynamic, Eigen::Dynamic>;
+  using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
+  Mat a = Mat::Zero(m, m);
+  for (int i = 0; i < m; ++i)
+    for (int j = first[static_cast<std::size_t>(i)]; j <= i; ++j) a(i, j) = a(j, i) = original[at(i, j)];
+  const Vec b = Eigen::Map<const Vec>(rhs.data(), m);
+  const Vec sol = a.completeOrthogonalDecomposition().solve(b);
+  for (std::size_t i = 0; i < size; ++i) x[i] = std::isfinite(sol(static_cast<Eigen::Index>(i))) ? sol(static_cast<Eigen::Index>(i)) : MeReal(0);
+}
+
+}  // namespace karma::kea::detail

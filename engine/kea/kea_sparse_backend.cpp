@@ -1,0 +1,425 @@
+/* kea_sparse_backend.cpp: the sparse matrix operations of the active-set
+ * core (see kea_sparse_backend.h). */
+#include "kea_sparse_backend.h"
+
+#include "kea_activeset_core.h"
+
+#include <Eigen/OrderingMethods>
+
+#include <algorithm>
+#include <cmath>
+
+namespace karma::kea::detail {
+namespace {
+
+using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
+
+std::size_t U(int i) { return static_cast<std::size_t>(i); }
+
+}  // namespace
+
+MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<const MeReal> lambda,
+                              std::span<MeReal> w) {
+  const auto n = static_cast<std::size_t>(p.n);
+  for (std::size_t i = 0; i < n; ++i) {
+    MeReal wi = -p.b[i] + eps * lambda[i];
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) wi += p.val[U(k)] * lambda[U(p.col[U(k)])];
+    w[i] = wi;
+  }
+  return ComplementarityResidual(Rows(p), lambda, w);
+}
+
+void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows) {
+  p_ = &p;
+  eps_ = eps;
+  const auto n = static_cast<std::size_t>(p.n);
+  position_.assign(n, -1);
+  naturalRows_.reserve(n);
+  /* Reverse Cuthill-McKee scratch (computeBandOrder). */
+  bandRank_.reserve(n);
+  queue_.reserve(n);
+  factoredSet_.reserve(n);
+  rhs_.reserve(n);
+  x_.reserve(n);
+  wScratch_.reserve(n);
+  /* Room for the largest envelope the rule below accepts, so that no free
+   * set of this problem makes the envelope grow. */
+  std::size_t accepted = std::max(kEnvelopeRows * (kEnvelopeRows + 1) / 2, kEnvelopeWidth * n);
+  if (envelopeRows > 0) accepted = static_cast<std::size_t>(envelopeRows) * (static_cast<std::size_t>(envelopeRows) + 1) / 2;
+  if (envelopeRows < 0) accepted = 0;
+  envelope_.reserve(n, std::min(accepted, n * (n + 1) / 2));
+  envelopeRows_ = envelopeRows;
+  order_.clear();
+  bandOrder_.clear();
+  orderChosen_ = useBandOrder_ = false;
+  bandRows_.reserve(n);
+  bandOrder_.reserve(n);
+  factor_ = Factor::None;
+  ldltOk_ = false;
+  factorizations_ = 0;
+}
+
+MeReal SparseBackend::residual(std::span<const MeReal> lambda, std::span<MeReal> w) {
+  if (w.size() == lambda.size()) return SparseMultiplyResidual(*p_, eps_, lambda, w);
+  wScratch_.resize(lambda.size());
+  return SparseMultiplyResidual(*p_, eps_, lambda, wScratch_);
+}
+
+void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
+                              const std::vector<MeReal> &hi, std::vector<MeReal> &lambda) {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<std::size_t>(p.n);
+  naturalRows_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (set[i] == AtLo) lambda[i] = lo[i];
+    else if (set[i] == AtHi) lambda[i] = hi[i];
+    else naturalRows_.push_back(static_cast<int>(i));
+  }
+  const std::size_t m = naturalRows_.size();
+  if (m == 0) return;
+
+  if (factor_ == Factor::None || naturalRows_ != factoredSet_) {
+    factorise(set);
+    factoredSet_ = naturalRows_;
+    ++factorizations_;
+  }
+
+  const std::vector<int> &rows = factor_ == Factor::Envelope ? naturalRows_
+                                 : factor_ == Factor::BandEnvelope ? bandRows_
+                                                                   : orderedRows_;
+  buildRhs(rows, set, lambda);
+  x_.resize(m);
+  if (factor_ != Factor::Sparse) {
+    envelope_.solve(rhs_, x_);
+  } else if (!solveSparse(m)) {
+    fallback(set, lambda);
+    return;
+  }
+  for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
+}
+
+std::span<const int> SparseBackend::factorRows() const {
+  switch (factor_) {
+    case Factor::Envelope: return naturalRows_;
+    case Factor::BandEnvelope: return bandRows_;
+    case Factor::Sparse: return ldltOk_ ? std::span<const int>(orderedRows_) : std::span<const int>();
+    default: return {};
+  }
+}
+
+void SparseBackend::solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x) {
+  if (factor_ != Factor::Sparse) {
+    envelope_.solve(rhs, x);
+    return;
+  }
+  const Vec sol = ldlt_.solve(Eigen::Map<const Vec>(rhs.data(), static_cast<Eigen::Index>(rhs.size())));
+  std::copy(sol.data(), sol.data() + sol.size(), x.begin());
+}
+
+void SparseBackend::column(int row, std::span<const int> position, std::span<MeReal> out) const {
+  /* A is symmetric: column `row` is row `row`. */
+  const SparseLcpProblem &p = *p_;
+  for (int k = p.rowStart[U(row)]; k < p.rowStart[U(row) + 1]; ++k) {
+    const int c = position[U(p.col[U(k)])];
+    if (c >= 0) out[U(c)] = p.val[U(k)];
+  }
+}
+
+void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set,
+                             const std::vector<MeReal> &lambda) {
+  /* rhs = b_F - A_FC lambda_C */
+  const SparseLcpProblem &p = *p_;
+  rhs_.resize(rows.size());
+  for (std::size_t a = 0; a < rows.size(); ++a) {
+    const auto i = U(rows[a]);
+    MeReal r = p.b[i];
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const auto j = U(p.col[U(k)]);
+      if (set[j] != Free) r -= p.val[U(k)] * lambda[j];
+    }
+    rhs_[a] = r;
+  }
+}
+
+/* The choice of factorisation for the free block (see
+ * kea_sparse_backend.h): the envelope in the rows' own order when it is a
+ * band; else, under the default rule, the envelope in reverse Cuthill-McKee
+ * order when the block is small or that order makes it a band; else the
+ * sparse LDL^T. */
+void SparseBackend::factorise(const std::vector<unsigned char> &set) {
+  const std::size_t m = naturalRows_.size();
+  if (envelopeRows_ >= 0) {
+    if (!orderChosen_) chooseEnvelopeOrder();
+    if (useBandOrder_) {
+      bandRows_.clear();
+      for (int i : bandOrder_)
+        if (set[U(i)] == Free) bandRows_.push_back(i);
+    }
+    const std::vector<int> &rows = useBandOrder_ ? bandRows_ : naturalRows_;
+    const std::size_t entries = envelopeFirsts(rows);
+    const bool accept = envelopeRows_ > 0 ? m <= static_cast<std::size_t>(envelopeRows_)
+                                          : m <= kEnvelopeRows || entries <= kEnvelopeWidth * m;
+    if (accept) {
+      fillEnvelope(rows);
+      envelope_.factor();
+      factor_ = useBandOrder_ ? Factor::BandEnvelope : Factor::Envelope;
+      return;
+    }
+  }
+  factoriseSparse(set);
+}
+
+/* The order of the envelope path, once per problem. Any order's envelope
+ * holds the lower triangle's nonzeros, so when the natural order's envelope
+ * is within kOrderSlack of that count no renumbering can gain much and the
+ * rows keep their order (stacks, chains: O(n) to check). Otherwise reverse
+ * Cuthill-McKee is computed and kept if its envelope is smaller. */
+void SparseBackend::chooseEnvelopeOrder() {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<std::size_t>(p.n);
+  constexpr std::size_t kOrderSlack = 3; /* in halves: 1.5 */
+  /* Symmetric with every diagonal present: the lower triangle holds
+   * (nnz + n) / 2 entries. */
+  const std::size_t lower = (U(p.rowStart[n]) + n) / 2;
+  std::size_t natural = 0;
+  for (std::size_t i = 0; i < n; ++i) natural += i - std::min(i, U(p.col[U(p.rowStart[i])])) + 1;
+  orderChosen_ = true;
+  useBandOrder_ = false;
+  if (2 * natural <= kOrderSlack * lower) return;
+  computeBandOrder();
+  for (std::size_t r = 0; r < n; ++r) bandRank_[U(bandOrder_[r])] = static_cast<int>(r);
+  std::size_t band = 0;
+  for (std::size_t r = 0; r < n; ++r) {
+    const auto i = U(bandOrder_[r]);
+    std::size_t first = r;
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) first = std::min(first, U(bandRank_[U(p.col[U(k)])]));
+    band += r - first + 1;
+  }
+  useBandOrder_ = band < natural;
+}
+
+/* envelope_.first[] for the free block with its rows in the order of
+ * `rows` (row a's leftmost free column, by position in `rows`); returns the
+ * envelope's size. */
+std::size_t SparseBackend::envelopeFirsts(const std::vector<int> &rows) {
+  const SparseLcpProblem &p = *p_;
+  const std::size_t m = rows.size();
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
+  envelope_.begin(static_cast<int>(m));
+  std::size_t entries = 0;
+  /* Rows in ascending order (the natural order) have ascending positions
+   * along a CSR row, so the first free column found is the leftmost. */
+  const bool ascending = &rows == &naturalRows_;
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto i = U(rows[a]);
+    int first = static_cast<int>(a);
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int c = position_[U(p.col[U(k)])];
+      if (c >= 0 && c < first) {
+        first = c;
+        if (ascending) break;
+      }
+    }
+    envelope_.first[a] = first;
+    entries += a - U(first) + 1;
+  }
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
+  return entries;
+}
+
+/* Lays the envelope out (firsts from envelopeFirsts on the same rows) and
+ * stores the free block (A + eps I)_FF in it. */
+void SparseBackend::fillEnvelope(const std::vector<int> &rows) {
+  const SparseLcpProblem &p = *p_;
+  const std::size_t m = rows.size();
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
+  envelope_.layout();
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto i = U(rows[a]);
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int c = position_[U(p.col[U(k)])];
+      if (c >= 0 && U(c) <= a) envelope_.value[envelope_.at(static_cast<int>(a), c)] = p.val[U(k)];
+    }
+    envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(a))] += eps_;
+  }
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
+}
+
+/* Reverse Cuthill-McKee on the whole matrix's graph (rows joined by a
+ * nonzero), once per problem: each connected component is numbered breadth
+ * first from a row of least degree, the unnumbered neighbours of a row
+ * taken by increasing degree (then index), and the whole numbering is
+ * reversed (George & Liu, ch. 4). This keeps each row's nonzeros near the
+ * diagonal, so the envelope of a tree (a rag doll) or a heap is narrow
+ * where the order the rows came in is not. */
+void SparseBackend::computeBandOrder() {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<std::size_t>(p.n);
+  auto degree = [&](int i) { return p.rowStart[U(i) + 1] - p.rowStart[U(i)]; };
+  bandOrder_.clear();
+  bandRank_.assign(n, -1); /* -1 = not numbered yet */
+  for (;;) {
+    int start = -1;
+    for (std::size_t i = 0; i < n; ++i)
+      if (bandRank_[i] < 0 && (start < 0 || degree(static_cast<int>(i)) < degree(start))) start = static_cast<int>(i);
+    if (start < 0) break;
+    bandRank_[U(start)] = 0;
+    bandOrder_.push_back(start);
+    for (std::size_t head = bandOrder_.size() - 1; head < bandOrder_.size(); ++head) {
+      const auto i = U(bandOrder_[head]);
+      queue_.clear();
+      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+        const int j = p.col[U(k)];
+        if (bandRank_[U(j)] < 0) {
+          bandRank_[U(j)] = 0;
+          queue_.push_back(j);
+        }
+      }
+      std::sort(queue_.begin(), queue_.end(),
+                [&](int a, int b) { return degree(a) != degree(b) ? degree(a) < degree(b) : a < b; });
+      bandOrder_.insert(bandOrder_.end(), queue_.begin(), queue_.end());
+    }
+  }
+  std::reverse(bandOrder_.begin(), bandOrder_.end());
+}
+
+/* AMD on the whole matrix's pattern (CSR of a symmetric matrix is also its
+ * CSC). order_ lists the rows in elimination order.
+ *
+ * Each free block is then eliminated in the induced order (its rows in the
+ * order AMD gave them). The fill of a principal submatrix under the induced
+ * order is never more than the fill of the whole matrix under the full
+ * order, so this keeps the factorisation sparse without re-running AMD (the
+ * largest cost of a factorisation) at every pivot step. */
+void SparseBackend::computeOrder() {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<Eigen::Index>(p.n);
+  const auto nnz = static_cast<Eigen::Index>(p.rowStart[U(p.n)]);
+  const Eigen::Map<const SpMat> full(n, n, nnz, p.rowStart.data(), p.col.data(), p.val.data());
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> pinv;
+  Eigen::AMDOrdering<int> amd;
+  amd(full.selfadjointView<Eigen::Upper>(), pinv);
+  order_.assign(pinv.indices().data(), pinv.indices().data() + pinv.indices().size());
+  if (order_.size() != U(p.n)) {
+    order_.resize(U(p.n));
+    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
+  }
+  buildOrderedUpper();
+}
+
+/* The upper triangle in elimination order, once per problem: for the row at
+ * rank r (order_[r]), its entries at rank <= r, sorted by rank
+ * (upStart_/upRow_/upVal_). A free block is a principal submatrix and its
+ * rows keep their relative order, so gatherUpper only filters these lists:
+ * no sorting per pivot step. */
+void SparseBackend::buildOrderedUpper() {
+  const SparseLcpProblem &p = *p_;
+  const auto n = static_cast<std::size_t>(p.n);
+  rank_.resize(n);
+  for (std::size_t r = 0; r < n; ++r) rank_[U(order_[r])] = static_cast<int>(r);
+  upStart_.assign(n + 1, 0);
+  upRow_.clear();
+  upVal_.clear();
+  for (std::size_t r = 0; r < n; ++r) {
+    const auto i = U(order_[r]);
+    entries_.clear(); /* (rank of the column, CSR index) */
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int c = rank_[U(p.col[U(k)])];
+      if (c <= static_cast<int>(r)) entries_.emplace_back(c, k);
+    }
+    std::sort(entries_.begin(), entries_.end());
+    for (const auto &[c, k] : entries_) {
+      upRow_.push_back(p.col[U(k)]);
+      upVal_.push_back(p.val[U(k)]);
+    }
+    upStart_[r + 1] = static_cast<int>(upRow_.size());
+  }
+}
+
+/* The free block in elimination order (orderedRows_): column a holds free
+ * row a's entries on and above the diagonal (positions <= a), sorted.
+ * `shift` is added to the diagonal. */
+void SparseBackend::gatherUpper(std::size_t m, MeReal shift) {
+  for (std::size_t a = 0; a < m; ++a) position_[U(orderedRows_[a])] = static_cast<int>(a);
+  std::size_t bound = 0;
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto r = U(rank_[U(orderedRows_[a])]);
+    bound += U(upStart_[r + 1] - upStart_[r]);
+  }
+  block_.resize(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
+  block_.resizeNonZeros(static_cast<Eigen::Index>(bound));
+  int *outer = block_.outerIndexPtr();
+  int *inner = block_.innerIndexPtr();
+  MeReal *value = block_.valuePtr();
+  int at = 0;
+  for (std::size_t a = 0; a < m; ++a) {
+    outer[a] = at;
+    const auto r = U(rank_[U(orderedRows_[a])]);
+    for (int k = upStart_[r]; k < upStart_[r + 1]; ++k) {
+      /* Ranks <= r, so a free column's position is <= a. */
+      const int c = position_[U(upRow_[U(k)])];
+      if (c < 0) continue;
+      inner[at] = c;
+      value[at] = upVal_[U(k)] + (c == static_cast<int>(a) ? eps_ + shift : MeReal(0));
+      ++at;
+    }
+  }
+  outer[m] = at;
+  block_.resizeNonZeros(at); /* shrinks the size only: the entries stay */
+  for (std::size_t a = 0; a < m; ++a) position_[U(orderedRows_[a])] = -1;
+}
+
+void SparseBackend::factoriseSparse(const std::vector<unsigned char> &set) {
+  const std::size_t m = naturalRows_.size();
+  if (order_.empty()) computeOrder();
+  orderedRows_.clear();
+  for (int i : order_)
+    if (set[U(i)] == Free) orderedRows_.push_back(i);
+  gatherUpper(m, 0);
+  ldlt_.computePreordered(block_);
+  ldltOk_ = ldlt_.info() == Eigen::Success;
+  factor_ = Factor::Sparse;
+}
+
+/* x_ = the sparse factor's solution for rhs_; false when it broke down or
+ * gave non-finite values. */
+bool SparseBackend::solveSparse(std::size_t m) {
+  if (!ldltOk_) return false;
+  const Vec x = ldlt_.solve(Eigen::Map<const Vec>(rhs_.data(), static_cast<Eigen::Index>(m)));
+  if (!x.allFinite()) return false;
+  std::copy(x.data(), x.data() + m, x_.begin());
+  return true;
+}
+
+/* The sparse factorisation broke down (or gave non-finite values): a dense
+ * solve with least-squares fallback up to kDenseFallback rows (kept as the
+ * factor of this free set), a diagonally shifted sparse LDL^T beyond. */
+void SparseBackend::fallback(const std::vector<unsigned char> &set, std::vector<MeReal> &lambda) {
+  const std::size_t m = naturalRows_.size();
+  if (m <= kDenseFallback) {
+    envelope_.begin(static_cast<int>(m)); /* full rows: a dense LDL^T */
+    fillEnvelope(naturalRows_);
+    envelope_.factor();
+    factor_ = Factor::Envelope;
+    buildRhs(naturalRows_, set, lambda);
+    envelope_.solve(rhs_, x_);
+    for (std::size_t a = 0; a < m; ++a) lambda[U(naturalRows_[a])] = x_[a];
+    return;
+  }
+  /* A small shift on the diagonal makes a semi-definite block definite. */
+  const SparseLcpProblem &p = *p_;
+  MeReal diagMax = 0;
+  for (int i : naturalRows_)
+    for (int k = p.rowStart[U(i)]; k < p.rowStart[U(i) + 1]; ++k)
+      if (p.col[U(k)] == i) diagMax = std::max(diagMax, std::fabs(p.val[U(k)]));
+  gatherUpper(m, std::sqrt(ME_REAL_EPSILON) * (1 + diagMax));
+  const Ldlt shifted(block_);
+  Vec x;
+  if (shifted.info() == Eigen::Success) x = shifted.solve(Eigen::Map<const Vec>(rhs_.data(), static_cast<Eigen::Index>(m)));
+  if (x.size() != static_cast<Eigen::Index>(m) || !x.allFinite()) x = Vec::Zero(static_cast<Eigen::Index>(m));
+  /* The kept factorisation is the unshifted one; drop it. */
+  factor_ = Factor::None;
+  for (std::size_t a = 0; a < m; ++a) lambda[U(orderedRows_[a])] = x(static_cast<Eigen::Index>(a));
+}
+
+}  // namespace karma::kea::detail

@@ -1,0 +1,135 @@
+/* kea_sparse_backend.h: the matrix operations of the active-set core
+ * (kea_activeset_core.h) for a matrix in compressed sparse rows (not
+ * installed).
+ *
+ * The free block (A + eps I)_FF is factorised one of two ways:
+ *
+ *  - Envelope LDL^T (kea_envelope_ldlt.h), allocation-free once its arrays
+ *    have grown to the problem, and faster than the sparse LDL^T on small
+ *    and on banded blocks; taken when the block has at most kEnvelopeRows
+ *    rows or its envelope is a band (mean row width at most
+ *    kEnvelopeWidth). The rows keep the order Mdt gave them (contact groups
+ *    and joint chains come row by row, body by body, which is already a
+ *    band) unless that order's envelope is much larger than the matrix's
+ *    nonzeros; then they are renumbered by reverse Cuthill-McKee, once per
+ *    problem (a rag doll's tree, a heap).
+ *
+ *  - Otherwise a sparse LDL^T (Eigen's SimplicialLDLT) in a fill-reducing
+ *    order (approximate minimum degree, computed once per problem for the
+ *    whole matrix; see computeOrder). This path allocates (Eigen's
+ *    factorisation does); it is for blocks of pile size.
+ *
+ * Either factorisation is kept while the free set does not change (the
+ * friction fixed point re-solving with new bounds, a warm start confirming
+ * its set): only the right-hand side is rebuilt and solved again. A
+ * factorisation that breaks down (not positive definite, e.g. eps = 0 with
+ * redundant rows) falls back to a dense least-squares solve for blocks up
+ * to kDenseFallback rows, and to a slightly shifted sparse LDL^T beyond. */
+#ifndef KARMA_KEA_SPARSE_BACKEND_H
+#define KARMA_KEA_SPARSE_BACKEND_H
+
+#include "kea_envelope_ldlt.h"
+#include "kea_internal.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace karma::kea::detail {
+
+/* w = (A + eps I) lambda - b over the CSR rows (w: n values); returns the
+ * contract's residual of lambda. */
+MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<const MeReal> lambda,
+                              std::span<MeReal> w);
+
+class SparseBackend {
+ public:
+  /* Free blocks up to this many rows take the envelope path whatever their
+   * envelope (see docs/NOTES.md, "Kea workspace", for the measurement);
+   * KeaOptions::envelopeRows overrides this rule. */
+  static constexpr std::size_t kEnvelopeRows = 96;
+  /* Larger blocks take it when their mean envelope row width is at most
+   * this (a band: chains, stacks). */
+  static constexpr std::size_t kEnvelopeWidth = 32;
+  /* Breakdown of the sparse factorisation: dense least squares up to this
+   * size. */
+  static constexpr std::size_t kDenseFallback = 600;
+
+  /* Starts a solve of `p` (which must outlive it) with eps on the diagonal;
+   * forgets the previous problem's ordering and factorisation, keeps the
+   * arrays. */
+  void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0);
+
+  /* See kea_activeset_core.h. */
+  MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w);
+  void solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
+                 const std::vector<MeReal> &hi, std::vector<MeReal> &lambda);
+
+  /* See kea_friction_coupling.h. */
+  std::span<const int> factorRows() const;
+  void solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x);
+  void column(int row, std::span<const int> position, std::span<MeReal> out) const;
+
+  /* Factorisations since reset(). */
+  int factorizations() const { return factorizations_; }
+
+ private:
+  enum class Factor { None, Envelope, BandEnvelope, Sparse };
+
+  void buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set,
+                const std::vector<MeReal> &lambda);
+  void factorise(const std::vector<unsigned char> &set);
+  std::size_t envelopeFirsts(const std::vector<int> &rows);
+  void fillEnvelope(const std::vector<int> &rows);
+  void chooseEnvelopeOrder();
+  void computeBandOrder();
+  void computeOrder();
+  void buildOrderedUpper();
+  void gatherUpper(std::size_t m, MeReal shift);
+  void factoriseSparse(const std::vector<unsigned char> &set);
+  bool solveSparse(std::size_t m);
+  void fallback(const std::vector<unsigned char> &set, std::vector<MeReal> &lambda);
+
+  using SpMat = Eigen::SparseMatrix<MeReal, Eigen::ColMajor, int>;
+  /* The block comes already in elimination order: no reordering inside. */
+  using Ldlt = Eigen::SimplicialLDLT<SpMat, Eigen::Upper, Eigen::NaturalOrdering<int>>;
+  /* Ldlt::compute() runs Eigen's ordering step even for the natural order,
+   * which copies the block twice (a quarter of the time of a factorisation
+   * in pile1000's 12000-row partitions). The block is already ordered and
+   * stored as its upper triangle with sorted columns, which is exactly what
+   * the symbolic and numeric phases take, so they are called directly. */
+  class PreorderedLdlt : public Ldlt {
+   public:
+    void computePreordered(const SpMat &a) {
+      this->analyzePattern_preordered(a, true);
+      this->template factorize_preordered<true>(a);
+    }
+  };
+
+  const SparseLcpProblem *p_ = nullptr;
+  MeReal eps_ = 0;
+  int envelopeRows_ = 0; /* KeaOptions::envelopeRows */
+  /* The free rows ascending (naturalRows_), in elimination order
+   * (orderedRows_, sparse path), and the free rows of the kept factor. */
+  std::vector<int> naturalRows_, orderedRows_, factoredSet_;
+  /* The whole matrix's rows in reverse Cuthill-McKee order, and the free
+   * rows in that order (envelope path when the natural order is wide). */
+  std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
+  bool orderChosen_ = false, useBandOrder_ = false;
+  std::vector<int> position_, order_, rank_, upStart_, upRow_;
+  std::vector<std::pair<int, int>> entries_;
+  std::vector<MeReal> upVal_, wScratch_, rhs_, x_;
+  EnvelopeSystem envelope_;
+  SpMat block_;
+  PreorderedLdlt ldlt_;
+  Factor factor_ = Factor::None;
+  bool ldltOk_ = false;
+  int factorizations_ = 0;
+};
+
+}  // namespace karma::kea::detail
+
+#endif

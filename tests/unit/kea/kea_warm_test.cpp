@@ -1,0 +1,171 @@
+// Warm starts of the sparse active-set solver on problems with the step's
+// structure (kea_contact_problems.h): a problem warm-started from its own
+// solution is confirmed by one linear solve and one factorisation with the
+// same answer; a slightly changed problem (b perturbed, as from one step to
+// the next of a resting scene) converges in a few solves; the workspace
+// entry point gives bit-identical answers to the allocating one; the two
+// factorisations of the free blocks (sparse, envelope) give the same answers.
+#include "kea_contact_problems.h"
+#include "kea_lcp.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace karma::kea;
+using kea_test::ContactProblem;
+
+namespace {
+
+#if KARMA_DOUBLE
+constexpr double kTol = 1e-8;
+#else
+constexpr double kTol = 2e-3;
+#endif
+
+struct Named {
+  std::string name;
+  ContactProblem problem;
+};
+
+std::vector<Named> Problems() {
+  std::vector<Named> all;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    all.push_back({"stack3 seed " + std::to_string(seed), kea_test::Stack(3, seed)});
+    all.push_back({"stack6 seed " + std::to_string(seed), kea_test::Stack(6, seed)});
+    all.push_back({"stack6 frictionless seed " + std::to_string(seed), kea_test::Stack(6, seed, false)});
+    all.push_back({"car seed " + std::to_string(seed), kea_test::Car(seed)});
+    all.push_back({"chain100 seed " + std::to_string(seed), kea_test::Chain(100, seed)});
+  }
+  return all;
+}
+
+double MaxAbs(const std::vector<MeReal> &v) {
+  double m = 0;
+  for (MeReal x : v) m = std::max(m, std::fabs(double(x)));
+  return m;
+}
+
+struct WorkspaceDeleter {
+  void operator()(KeaWorkspace *w) const { KeaWorkspaceDestroy(w); }
+};
+
+}  // namespace
+
+TEST(KeaWarmStart, OwnSolutionIsConfirmedByOneSolve) {
+  for (const Named &t : Problems()) {
+    const KeaResult cold = KeaSolveSparse(t.problem.sparse(), KeaOptions{});
+    ASSERT_EQ(cold.status, KeaStatus::Solved) << t.name;
+    KeaOptions warm;
+    warm.warmStart = cold.lambda;
+    const KeaResult again = KeaSolveSparse(t.problem.sparse(), warm);
+    EXPECT_EQ(again.status, KeaStatus::Solved) << t.name;
+    EXPECT_EQ(again.iterations, 1) << t.name;
+    EXPECT_EQ(again.factorizations, 1) << t.name;
+    EXPECT_EQ(again.frictionRounds, 0) << t.name;
+    const double scale = 1 + MaxAbs(cold.lambda);
+    for (std::size_t i = 0; i < cold.lambda.size(); ++i)
+      EXPECT_NEAR(again.lambda[i], cold.lambda[i], kTol * scale) << t.name << " row " << i;
+  }
+}
+
+TEST(KeaWarmStart, PerturbedProblemConvergesInFewSolves) {
+  for (const Named &t : Problems()) {
+    const KeaResult cold = KeaSolveSparse(t.problem.sparse(), KeaOptions{});
+    ASSERT_EQ(cold.status, KeaStatus::Solved) << t.name;
+    ContactProblem next = t.problem;
+    const double bMax = MaxAbs(next.b);
+    for (std::size_t i = 0; i < next.b.size(); ++i)
+      next.b[i] += static_cast<MeReal>(1e-3 * bMax * kea_test::Jitter(99, static_cast<unsigned>(i)));
+    KeaOptions warm;
+    warm.warmStart = cold.lambda;
+    const KeaResult w = KeaSolveSparse(next.sparse(), warm);
+    const KeaResult c = KeaSolveSparse(next.sparse(), KeaOptions{});
+    ASSERT_EQ(w.status, KeaStatus::Solved) << t.name;
+    ASSERT_EQ(c.status, KeaStatus::Solved) << t.name;
+    // A few solves, about half the cold ones or fewer.
+    const std::string counts = t.name + ": warm " + std::to_string(w.iterations) + " solves, cold " +
+                               std::to_string(c.iterations);
+    EXPECT_LE(w.iterations, 6) << counts;
+    EXPECT_LE(2 * w.iterations, c.iterations + 1) << counts;
+    // Both answers solve the same LCP to its tolerance.
+    const double scale = 1 + MaxAbs(c.lambda);
+    for (std::size_t i = 0; i < c.lambda.size(); ++i)
+      EXPECT_NEAR(w.lambda[i], c.lambda[i], 10 * kTol * scale) << t.name << " row " << i;
+  }
+}
+
+TEST(KeaWarmStart, WorkspaceEntryMatchesTheAllocatingOneBitForBit) {
+  std::unique_ptr<KeaWorkspace, WorkspaceDeleter> workspace(KeaWorkspaceCreate());
+  KeaResult reused;
+  for (KeaMethod method : {KeaMethod::ActiveSet, KeaMethod::PGS}) {
+    // Largest first, so that later solves run in a grown workspace.
+    std::vector<Named> problems = Problems();
+    for (auto it = problems.rbegin(); it != problems.rend(); ++it) {
+      KeaOptions o;
+      o.method = method;
+      o.warnings = false;
+      const KeaResult fresh = KeaSolveSparse(it->problem.sparse(), o);
+      KeaSolveSparse(it->problem.sparse(), o, *workspace, reused);
+      EXPECT_EQ(reused.status, fresh.status) << it->name;
+      EXPECT_EQ(reused.iterations, fresh.iterations) << it->name;
+      EXPECT_TRUE(reused.lambda == fresh.lambda) << it->name;
+      EXPECT_TRUE(reused.w == fresh.w) << it->name;
+    }
+  }
+}
+
+TEST(KeaFactorisations, SparseAndEnvelopePathsAgree) {
+  // The same problems with every free block forced onto the sparse LDL^T,
+  // onto the envelope LDL^T, and under the default rule: the same answers
+  // to the tolerance (the paths differ in rounding only).
+  std::vector<Named> problems = Problems();
+  problems.push_back({"pile32", kea_test::Pile(32, 20, 1)});
+  problems.push_back({"pile64", kea_test::Pile(64, 40, 2)});
+  for (const Named &t : problems) {
+    KeaOptions sparse, envelope, byRule;
+    sparse.envelopeRows = -1;
+    envelope.envelopeRows = 1 << 20;
+    const KeaResult s = KeaSolveSparse(t.problem.sparse(), sparse);
+    const KeaResult e = KeaSolveSparse(t.problem.sparse(), envelope);
+    const KeaResult d = KeaSolveSparse(t.problem.sparse(), byRule);
+    ASSERT_EQ(s.status, KeaStatus::Solved) << t.name;
+    ASSERT_EQ(e.status, KeaStatus::Solved) << t.name;
+    ASSERT_EQ(d.status, KeaStatus::Solved) << t.name;
+    const double scale = 1 + MaxAbs(s.lambda);
+    for (std::size_t i = 0; i < s.lambda.size(); ++i) {
+      EXPECT_NEAR(e.lambda[i], s.lambda[i], 10 * kTol * scale) << t.name << " row " << i;
+      EXPECT_NEAR(d.lambda[i], s.lambda[i], 10 * kTol * scale) << t.name << " row " << i;
+    }
+  }
+}
+
+TEST(KeaWarmStart, ResultReusedAsItsOwnWarmStart) {
+  // A caller may warm-start a workspace solve from the result it writes
+  // into: the answer is the same as from a copy.
+  std::unique_ptr<KeaWorkspace, WorkspaceDeleter> workspace(KeaWorkspaceCreate());
+  for (const Named &t : Problems()) {
+    for (KeaMethod method : {KeaMethod::ActiveSet, KeaMethod::PGS}) {
+      KeaOptions o;
+      o.method = method;
+      o.warnings = false;
+      KeaResult result;
+      KeaSolveSparse(t.problem.sparse(), o, *workspace, result);
+      const std::vector<MeReal> copy = result.lambda;
+      KeaOptions fromCopy = o, fromItself = o;
+      fromCopy.warmStart = copy;
+      fromItself.warmStart = result.lambda;
+      KeaResult expected;
+      KeaSolveSparse(t.problem.sparse(), fromCopy, *workspace, expected);
+      KeaSolveSparse(t.problem.sparse(), fromItself, *workspace, result);
+      EXPECT_TRUE(result.lambda == expected.lambda) << t.name;
+      EXPECT_EQ(result.iterations, expected.iterations) << t.name;
+      if (method == KeaMethod::ActiveSet) {
+        EXPECT_EQ(result.iterations, 1) << t.name;
+      }
+    }
+  }
+}
