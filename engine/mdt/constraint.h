@@ -72,6 +72,9 @@ struct Row {
   // constraint's row-by-row memory (MdtConstraint::warm).
   MeReal warm;
   bool warmSet;
+  // Contact normal rows: a speed J v must reach after the positions have
+  // moved (a bounce found apart, within the step); 0 for none.
+  MeReal bounceAfter;
 };
 
 // The step's view of the world, handed to every constraint.

@@ -3,7 +3,10 @@
  * it is faster than 8 m/s, halving its speed (the wall's resistance), and
  * keeps the contacts otherwise, so the slow ball bounces back. A ball that
  * has started through the wall is let through until it is out on the other
- * side (a flag in its body's user data), or it would be stopped half-way. */
+ * side (the side it came from, in its body's user data), or it would be
+ * stopped half-way. Contacts come a little before the touch (they are
+ * reported as far apart as the ball can close in a step), so "out" means
+ * past the wall on the far side, not merely clear of it. */
 #include "sample.h"
 
 #include <stdio.h>
@@ -32,10 +35,12 @@ static MeBool MEAPI WallCollisionCB(McdIntersectResult *c, MdtContactGroupID cg)
   MdtBodyGetLinearVelocity(ball, vel);
   if (MeVector3Magnitude(vel) > THRESH) {
     /* Fast enough to pass through: slow it down, delete the contacts. */
+    MeVector3 p;
     printf("step %d: a ball hits the wall at %.2f m/s and goes through\n", steps_, (double)MeVector3Magnitude(vel));
     MeVector3Scale(vel, (MeReal)0.5);
     MdtBodySetLinearVelocity(ball, vel[0], vel[1], vel[2]);
-    *passing = 1;
+    MdtBodyGetPosition(ball, p);
+    *passing = p[0] < 0 ? -1 : 1; /* the side it comes from */
     return 0;
   }
   /* Keep the contacts: the ball bounces off (reported while it still
@@ -55,7 +60,7 @@ static void ClearPassing(void) {
   for (i = 0; i < BALLS; ++i) {
     MeVector3 p;
     MdtBodyGetPosition(ball_[i], p);
-    if (passing_[i] && MeFabs(p[0]) > wallHalf + radius) passing_[i] = 0;
+    if (passing_[i] && p[0] * (MeReal)passing_[i] < 0 && MeFabs(p[0]) > wallHalf + radius) passing_[i] = 0;
   }
 }
 

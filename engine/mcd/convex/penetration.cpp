@@ -10,7 +10,7 @@
 // direction (either sign) are candidates; the largest s(n) wins, except
 // that between two flat-faced shapes (neither a sphere nor a sphyl) the
 // rule of box_box.cpp applies, "x clearly better than y" meaning
-// s_x > 0.95 s_y + 0.01 size (size = half the smaller shape's scale):
+// s_x > s_y + 0.05 |s_y| + 0.01 size (size = half the smaller shape's scale):
 //   the face      A's best face normal or B's, whichever is clearly better,
 //                 else the one whose supporting polygon has the larger area
 //                 (A's on a tie)
@@ -189,7 +189,7 @@ bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep) 
     const bool flat = !(roundA || roundB) && classBest[0] > -INFINITY && classBest[1] > -INFINITY;
     if (flat) {
         const double size = 0.5 * std::fmin(a.scale, b.scale);
-        auto clearlyBetter = [&](double x, double y) { return x > 0.95 * y + 0.01 * size; };
+        auto clearlyBetter = [&](double x, double y) { return x > y + 0.05 * std::fabs(y) + 0.01 * size; };
         int face = FeatureArea(b, classN[1]) > FeatureArea(a, -classN[0]) ? 1 : 0;
         if (clearlyBetter(classBest[1], classBest[0])) face = 1;
         else if (clearlyBetter(classBest[0], classBest[1])) face = 0;

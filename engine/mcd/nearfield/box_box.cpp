@@ -8,9 +8,10 @@
 //
 // Choosing the axis. The best (largest s) of each class is found: s1 over
 // box 1's faces, s2 over box 2's, se over the edge axes. "x is clearly
-// better than y" means  s_x > 0.95 s_y + 0.01 h  (h = the smallest half
-// extent of the two boxes): both s are <= 0 in overlap, so x must be
-// shallower by 5% of y's depth plus 1% of the box size.
+// better than y" means  s_x > s_y + 0.05 |s_y| + 0.01 h  (h = the smallest
+// half extent of the two boxes): x must be shallower (in overlap) or
+// farther apart (for a speculative contact) by 5% of y's separation plus
+// 1% of the box size.
 //   reference face  box 2's if s2 is clearly better than s1, box 1's if s1
 //                   is clearly better than s2; otherwise the larger of the
 //                   two faces (box 1's on equal areas)
@@ -52,7 +53,7 @@ using namespace karma::mcd::prim;
 
 namespace {
 
-// "Clearly better" (see the top of the file): s_x > 0.95 s_y + 0.01 h.
+// "Clearly better" (see the top of the file): s_x > s_y + 0.05 |s_y| + 0.01 h.
 constexpr MeReal kRelative = (MeReal)0.95, kAbsolute = (MeReal)0.01;
 
 struct Box {
@@ -218,7 +219,9 @@ int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
         }
     const MeReal hmin = std::fmin(std::fmin(std::fmin(b1.h[0], b1.h[1]), b1.h[2]),
                                   std::fmin(std::fmin(b2.h[0], b2.h[1]), b2.h[2]));
-    auto clearlyBetter = [&](MeReal x, MeReal y) { return x > kRelative * y + kAbsolute * hmin; };
+    auto clearlyBetter = [&](MeReal x, MeReal y) {
+        return x > y + (1 - kRelative) * std::fabs(y) + kAbsolute * hmin;
+    };
     int face = b2.FaceArea(axis[1]) > b1.FaceArea(axis[0]) ? 1 : 0;
     if (clearlyBetter(best[1], best[0])) face = 1;
     else if (clearlyBetter(best[0], best[1])) face = 0;

@@ -29,12 +29,16 @@ void RegisterInteractionQuietly(McdFramework *fw, int a, int b, const McdInterac
 inline MeMatrix4Ptr ModelTM(const McdModel *m) { return m->instance.tm; }
 
 // The fixed order in which a same-type pair is computed: true when `a`
-// goes first. By the address of the world TM (the model's or, for an
+// goes first. By the models' sort keys where they differ (so the result
+// does not depend on creation order, as the guide promises); on equal keys
+// by the address of the world TM (the model's or, for an
 // aggregate's child, the child's own storage), then of the geometry, then
 // of the model: it does not change while the models move, and it is the
 // same whichever model an aggregate's stand-in copy is, so (a, b) and
 // (b, a) give mirrored contacts with the same feature ids.
 inline bool ComputedFirst(const McdModel *a, const McdModel *b) {
+    const MeI32 ka = EffectiveSortKey(a), kb = EffectiveSortKey(b);
+    if (ka != kb) return ka < kb;
     const std::less<const void *> before;
     if (a->instance.tm != b->instance.tm) return before(a->instance.tm, b->instance.tm);
     if (a->instance.geometry != b->instance.geometry)

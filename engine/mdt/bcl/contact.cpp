@@ -12,9 +12,13 @@
 //              speculative (depth < 0, the shapes a gap g = -depth apart):
 //              speed = -g / h, so the bodies may close the gap within the
 //              step but no further (the row pushes only if they would);
-//              when they approach fast enough to close it within the step
-//              and restitution applies, speed = the restitution speed (the
-//              bounce starts up to g early instead of one step late);
+//              an impact within the step (|vrel| h >= g, vrel the mean of
+//              J v at the step's start and after the forces) with
+//              restitution e bounces at t* = g / |vrel|: speed =
+//              e |vrel| - (1 + e) g / h
+//              puts the body where the bounce takes it by the step's end,
+//              and after the positions move the bounce speed e |vrel|
+//              itself is given (Row::bounceAfter, step/bounce.cpp);
 //   primary    along d1 (Friction1D and 2D), target speed slide1, softness
 //              slip1 / h (velocity = slip * force) or epsilon; force bound
 //              friction1 (Box) or frictionCoefficient1 * normal force
@@ -72,6 +76,18 @@ void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2) {
 
 namespace {
 
+// J v* of a row: the velocities predicted from the forces (the step's
+// stage 2 runs before the rows are written).
+MeReal predictedRowVelocity(const MdtContact *c, const Row &row) {
+  MeReal v = 0;
+  for (int i = 0; i < 2; ++i) {
+    const MdtBody *b = c->body[i];
+    if (!b || !b->enabled) continue;
+    v += MeVector3Dot(row.J[2 * i], b->vPred) + MeVector3Dot(row.J[2 * i + 1], b->wPred);
+  }
+  return v;
+}
+
 void frictionRow(MdtContact *c, RowSink &sink, const StepContext &ctx, const Anchors &a,
                  const MeVector3 d, int normalRow, MdtFrictionModel model, MeReal limit,
                  MeReal coefficient, MeReal slip, MeReal slide) {
@@ -126,10 +142,22 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
   const MeReal bounce =
       (prm.restitution > 0 && vrel < -prm.velThreshold) ? -prm.restitution * vrel : 0;
   if (c->penetration < 0) {
-    // Speculative: close the gap, no further; an impact within the step
-    // bounces at once.
-    const bool impact = -vrel * ctx.h >= -c->penetration;
-    n.speed = impact && bounce > 0 ? bounce : c->penetration * ctx.invH;
+    // Apart: the approach over the step is the mean of the velocities at
+    // its start and after the forces (gravity speeds a falling body up).
+    const MeReal approach = (MeReal)0.5 * (vrel + predictedRowVelocity(c, n));
+    const MeReal gap = -c->penetration;
+    const bool impact = -approach * ctx.h >= gap;
+    const MeReal bounce =
+        (prm.restitution > 0 && approach < -prm.velThreshold) ? -prm.restitution * approach : 0;
+    if (impact && bounce > 0) {
+      // The impact falls within the step, at t = gap / |vrel|: the step's
+      // velocity takes the body where the bounce would have by the step's
+      // end; the bounce speed itself is given after the positions move.
+      n.speed = bounce - gap * ctx.invH * (1 + prm.restitution);
+      n.bounceAfter = bounce;
+    } else {
+      n.speed = -gap * ctx.invH;  // close the gap, no further
+    }
   } else {
     const MeReal correct = ctx.gamma * ctx.invH * c->penetration;
     n.speed = bounce > correct ? bounce : correct;

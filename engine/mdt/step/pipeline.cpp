@@ -22,6 +22,7 @@ bool stepPartition(MdtWorldID world, StepScratch &s, const Partition &part, cons
   const std::span<const MeReal> lambda = solveProblem(world, s, problem);
   applyImpulses(s, part, rows, lambda, ctx);
   integratePartition(s, part, ctx.h);
+  applyBounces(s, part, rows, problem);
   s.arena.release(mark);
   return autoDisablePartition(world, s, part, ctx.h);
 }

@@ -28,6 +28,7 @@
 #include <cmath>
 
 #include "partition_solver.h"
+#include "small_lcp.h"
 
 namespace karma::mdt {
 
@@ -38,7 +39,7 @@ constexpr int kDefaultSweeps = 50;
 MeReal defaultTolerance() { return sizeof(MeReal) == 4 ? (MeReal)1e-4 : (MeReal)1e-10; }
 
 // Contact normal blocks of at most this many rows are solved as one unit.
-constexpr int kMaxBlock = 4;
+constexpr int kMaxBlock = kSmallLcpMax;
 
 struct Workspace {
   std::span<MeReal> mj;     // 12 per row: M^-1 J^T, per side (lin, ang)
@@ -167,38 +168,11 @@ MeReal update(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda,
   return std::fabs(next - old) * d;
 }
 
-// Solves A_FF x_F = y_F in place (Gaussian elimination; A is symmetric
-// positive definite, so no pivoting), F given by `mask` over k rows.
-bool solveSubset(const MeReal *A, int k, unsigned mask, MeReal *y) {
-  int idx[kMaxBlock], n = 0;
-  for (int i = 0; i < k; ++i)
-    if (mask & (1u << i)) idx[n++] = i;
-  MeReal M[kMaxBlock][kMaxBlock + 1];
-  for (int a = 0; a < n; ++a) {
-    for (int c = 0; c < n; ++c) M[a][c] = A[idx[a] * kMaxBlock + idx[c]];
-    M[a][n] = y[idx[a]];
-  }
-  for (int a = 0; a < n; ++a) {
-    if (!(M[a][a] > 0)) return false;
-    for (int r = a + 1; r < n; ++r) {
-      const MeReal f = M[r][a] / M[a][a];
-      for (int c = a; c <= n; ++c) M[r][c] -= f * M[a][c];
-    }
-  }
-  for (int a = n - 1; a >= 0; --a) {
-    MeReal v = M[a][n];
-    for (int c = a + 1; c < n; ++c) v -= M[a][c] * y[idx[c]];
-    y[idx[a]] = v / M[a][a];
-  }
-  return true;
-}
-
-// One exact update of normal block b: the k rows' impulses x minimise
-// together, i.e. solve the small LCP  w' = w + A_bb (x - lambda_b),
-// x >= lo, w' >= 0, complementary, by trying the free sets from the
-// largest down (in a fixed order); the first consistent one is the unique
-// answer (A_bb is positive definite). Returns the largest velocity change,
-// or -1 when no set fits (rounding): the caller then updates row by row.
+// One exact update of normal block b: the k rows' impulses x together
+// solve the small LCP  w' = w + A_bb (x - lambda_b) = A_bb x - q >= 0,
+// x >= lo, complementary (small_lcp.h). Returns the largest velocity
+// change, or -1 when no set fits (rounding): the caller then updates row by
+// row.
 MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int b) {
   const int first = p.normalBlock[(size_t)b], k = p.normalBlock[(size_t)b + 1] - first;
   const MeReal *A = &w.blockA[(size_t)b * kMaxBlock * kMaxBlock];
@@ -215,43 +189,15 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
     q[i] = -slack;
     for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
   }
-  const unsigned all = (1u << k) - 1;
-  for (int freeCount = k; freeCount >= 0; --freeCount) {
-    for (unsigned mask = all;; --mask) {
-      if (__builtin_popcount(mask) == freeCount) {
-        MeReal x[kMaxBlock];
-        for (int i = 0; i < k; ++i) {
-          x[i] = q[i];
-          if (!(mask & (1u << i))) continue;
-          for (int j = 0; j < k; ++j)
-            if (!(mask & (1u << j))) x[i] -= A[i * kMaxBlock + j] * lo[j];
-        }
-        for (int i = 0; i < k; ++i)
-          if (!(mask & (1u << i))) x[i] = lo[i];
-        bool fits = solveSubset(A, k, mask, x);
-        for (int i = 0; i < k && fits; ++i) {
-          if (mask & (1u << i)) {
-            fits = x[i] >= lo[i];
-          } else {
-            MeReal wi = -q[i];
-            for (int j = 0; j < k; ++j) wi += A[i * kMaxBlock + j] * x[j];
-            fits = wi >= 0;
-          }
-        }
-        if (fits) {
-          MeReal biggest = 0;
-          for (int i = 0; i < k; ++i) {
-            lambda[(size_t)rows[i]] = x[i];
-            push(p, w, rows[i], x[i] - lam[i]);
-            biggest = std::max(biggest, std::fabs(x[i] - lam[i]) * w.diag[(size_t)rows[i]]);
-          }
-          return biggest;
-        }
-      }
-      if (mask == 0) break;
-    }
+  MeReal x[kMaxBlock];
+  if (!SolveSmallLcp(A, q, lo, k, x)) return -1;
+  MeReal biggest = 0;
+  for (int i = 0; i < k; ++i) {
+    lambda[(size_t)rows[i]] = x[i];
+    push(p, w, rows[i], x[i] - lam[i]);
+    biggest = std::max(biggest, std::fabs(x[i] - lam[i]) * w.diag[(size_t)rows[i]]);
   }
-  return -1;
+  return biggest;
 }
 
 // Row i's turn in a sweep: its block once per sweep, else the row alone.

@@ -105,6 +105,9 @@ void applyImpulses(StepScratch &s, const Partition &p, const PartitionRows &rows
                    std::span<const MeReal> lambda, const StepContext &ctx);
 // Stage 7.
 void integratePartition(StepScratch &s, const Partition &p, MeReal h);
+// Stage 7b: the bounces owed by impacts found apart (bounce.cpp).
+void applyBounces(StepScratch &s, const Partition &p, const PartitionRows &rows,
+                  const BodySpaceProblem &problem);
 // Stage 8: updates each body's rest time from its new velocities and
 // accelerations; true if the whole partition has rested for the alive window
 // and was put to sleep.

@@ -1,0 +1,72 @@
+// small_lcp.cpp: the small exact LCP of small_lcp.h.
+#include "small_lcp.h"
+
+namespace karma::mdt {
+
+namespace {
+
+constexpr int kStride = kSmallLcpMax;
+
+// Solves A_FF x_F = y_F in place (Gaussian elimination without pivoting,
+// A being symmetric positive definite), F given by `mask` over k rows.
+bool solveSubset(const MeReal *A, int k, unsigned mask, MeReal *y) {
+  int idx[kSmallLcpMax], n = 0;
+  for (int i = 0; i < k; ++i)
+    if (mask & (1u << i)) idx[n++] = i;
+  MeReal M[kSmallLcpMax][kSmallLcpMax + 1];
+  for (int a = 0; a < n; ++a) {
+    for (int c = 0; c < n; ++c) M[a][c] = A[idx[a] * kStride + idx[c]];
+    M[a][n] = y[idx[a]];
+  }
+  for (int a = 0; a < n; ++a) {
+    if (!(M[a][a] > 0)) return false;
+    for (int r = a + 1; r < n; ++r) {
+      const MeReal f = M[r][a] / M[a][a];
+      for (int c = a; c <= n; ++c) M[r][c] -= f * M[a][c];
+    }
+  }
+  for (int a = n - 1; a >= 0; --a) {
+    MeReal v = M[a][n];
+    for (int c = a + 1; c < n; ++c) v -= M[a][c] * y[idx[c]];
+    y[idx[a]] = v / M[a][a];
+  }
+  return true;
+}
+
+// x for free set `mask` (clamped rows at lo); true if it fits the LCP.
+bool trySet(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned mask, MeReal *x) {
+  for (int i = 0; i < k; ++i) {
+    x[i] = q[i];
+    if (!(mask & (1u << i))) continue;
+    for (int j = 0; j < k; ++j)
+      if (!(mask & (1u << j))) x[i] -= A[i * kStride + j] * lo[j];
+  }
+  for (int i = 0; i < k; ++i)
+    if (!(mask & (1u << i))) x[i] = lo[i];
+  if (!solveSubset(A, k, mask, x)) return false;
+  for (int i = 0; i < k; ++i) {
+    if (mask & (1u << i)) {
+      if (!(x[i] >= lo[i])) return false;
+    } else {
+      MeReal wi = -q[i];
+      for (int j = 0; j < k; ++j) wi += A[i * kStride + j] * x[j];
+      if (!(wi >= 0)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool SolveSmallLcp(const MeReal *A, const MeReal *q, const MeReal *lo, int k, MeReal *x) {
+  const unsigned all = (1u << k) - 1;
+  for (int freeCount = k; freeCount >= 0; --freeCount) {
+    for (unsigned mask = all;; --mask) {
+      if (__builtin_popcount(mask) == freeCount && trySet(A, q, lo, k, mask, x)) return true;
+      if (mask == 0) break;
+    }
+  }
+  return false;
+}
+
+}  // namespace karma::mdt
