@@ -188,48 +188,62 @@ std::vector<BoxSpec> PitWalls() {
             {{len, t, hgt}, {mid, hi + t / 2, hgt / 2}, 0, 0}};
 }
 
-// True when a box-box McdIntersect gives the same bits for the same model1
-// and model2 poses whichever model was created first. The two runs differ
-// only in which model (the first or the second created) plays model1; the
-// keys follow the roles (model1 has the lower key in both).
+// The contacts of one box-box McdIntersect with model1 at `upper` and
+// model2 at `lower`; model1 gets the lower key.
+std::vector<McdContact> BoxBoxContacts(McdModelID m1, McdModelID m2, MeMatrix4Ptr upper,
+                                       MeMatrix4Ptr lower) {
+    McdModelSetTransformPtr(m1, upper);
+    McdModelSetTransformPtr(m2, lower);
+    McdModelSetSortKey(m1, 1);
+    McdModelSetSortKey(m2, 2);
+    McdModelUpdate(m1);
+    McdModelUpdate(m2);
+    McdModelPair *pair = McdModelPairCreate(m1, m2);
+    McdHello(pair);
+    McdContact contacts[16];
+    McdIntersectResult r{};
+    r.contacts = contacts;
+    r.contactMaxCount = 16;
+    McdIntersect(pair, &r);
+    McdGoodbye(pair);
+    McdModelPairDestroy(pair);
+    return std::vector<McdContact>(contacts, contacts + r.contactCount);
+}
+
+bool SameBits(const std::vector<McdContact> &a, const std::vector<McdContact> &b) {
+    if (a.size() != b.size() || a.empty()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::memcmp(a[i].position, b[i].position, sizeof a[i].position) != 0 ||
+            std::memcmp(a[i].normal, b[i].normal, sizeof a[i].normal) != 0 ||
+            std::memcmp(&a[i].separation, &b[i].separation, sizeof a[i].separation) != 0)
+            return false;
+    }
+    return true;
+}
+
+// True when box-box McdIntersect gives the same bits for the same model1
+// and model2 poses whichever model was created first, over a few resting
+// poses (a box yawed and shifted on another, 1 mm deep). The two runs of a
+// pose differ only in which model (the first or the second created) plays
+// model1; the keys follow the roles (model1 has the lower key in both).
 bool BoxBoxIgnoresCreationOrder() {
     McdFrameworkID fw = McdInit(0, 4, 0, 1);
     McdPrimitivesRegisterTypes(fw);
     McdPrimitivesRegisterInteractions(fw);
     McdGeometryID box = McdBoxCreate(fw, (MeReal)0.4, (MeReal)0.4, (MeReal)0.4);
     McdModelID first = McdModelCreate(box), second = McdModelCreate(box);
-    MeMatrix4 lower, upper;
-    MeMatrix4TMMakeIdentity(lower);
-    MeMatrix4TMMakeIdentity(upper);
-    const MeReal c = std::cos((MeReal)0.3), s = std::sin((MeReal)0.3);
-    upper[0][0] = c, upper[0][1] = s, upper[1][0] = -s, upper[1][1] = c;
-    MeMatrix4TMSetPosition(upper, (MeReal)0.05, (MeReal)0.02, (MeReal)0.399);
-    std::vector<McdContact> runs[2];
-    for (int run = 0; run < 2; ++run) {
-        McdModelID m1 = run == 0 ? first : second, m2 = run == 0 ? second : first;
-        McdModelSetTransformPtr(m1, upper);
-        McdModelSetTransformPtr(m2, lower);
-        McdModelSetSortKey(m1, 1);
-        McdModelSetSortKey(m2, 2);
-        McdModelUpdate(m1);
-        McdModelUpdate(m2);
-        McdModelPair *pair = McdModelPairCreate(m1, m2);
-        McdHello(pair);
-        McdContact contacts[16];
-        McdIntersectResult r{};
-        r.contacts = contacts;
-        r.contactMaxCount = 16;
-        McdIntersect(pair, &r);
-        runs[run].assign(contacts, contacts + r.contactCount);
-        McdGoodbye(pair);
-        McdModelPairDestroy(pair);
-    }
-    bool same = runs[0].size() == runs[1].size() && !runs[0].empty();
-    for (std::size_t i = 0; same && i < runs[0].size(); ++i) {
-        const McdContact &a = runs[0][i], &b = runs[1][i];
-        same = std::memcmp(a.position, b.position, sizeof a.position) == 0 &&
-               std::memcmp(a.normal, b.normal, sizeof a.normal) == 0 &&
-               std::memcmp(&a.separation, &b.separation, sizeof a.separation) == 0;
+    bool same = true;
+    for (int pose = 0; pose < 6; ++pose) {
+        MeMatrix4 lower, upper;
+        MeMatrix4TMMakeIdentity(lower);
+        MeMatrix4TMMakeIdentity(upper);
+        const MeReal yaw = (MeReal)0.13 * (MeReal)(pose + 1);
+        const MeReal c = std::cos(yaw), s = std::sin(yaw);
+        upper[0][0] = c, upper[0][1] = s, upper[1][0] = -s, upper[1][1] = c;
+        MeMatrix4TMSetPosition(upper, (MeReal)0.011 * (MeReal)pose, (MeReal)-0.007 * (MeReal)pose,
+                               (MeReal)0.399);
+        same = same && SameBits(BoxBoxContacts(first, second, upper, lower),
+                                BoxBoxContacts(second, first, upper, lower));
     }
     McdModelDestroy(first);
     McdModelDestroy(second);
