@@ -4,7 +4,8 @@
  *   MstUniverseSizes sizes = MstUniverseDefaultSizes;
  *   MstUniverseID u = MstUniverseCreate(&sizes);
  *   ... MstModelAndBodyCreate / MstFixedModelCreate ...
- *   MstUniverseStep(u, h);   // McdSpaceUpdateAll; MstBridgeUpdateContacts;
+ *   MstUniverseStep(u, h);   // models' keys and padding for the step;
+ *                            // McdSpaceUpdateAll; MstBridgeUpdateContacts;
  *                            // MdtWorldStep
  *   MstUniverseDestroy(u);   // every body, constraint, model, geometry
  *
