@@ -12,6 +12,7 @@
 
 #include "kea_lcp.h"
 #include "kernels.h"
+#include "reference_inline.h"
 #include "partition_solver.h"
 
 namespace karma::mdt {
@@ -62,8 +63,9 @@ std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
   return mj;
 }
 
-Csr assemble(const BodySpaceProblem &p, StepArena &arena) {
-  const platform::Kernels &kern = platform::ActiveKernels();
+// `entry` is one body's share of an entry (the platform's rowPairEntry).
+template <class Entry>
+Csr assemble(const BodySpaceProblem &p, StepArena &arena, Entry entry) {
   const int m = p.rowCount;
   std::span<int> bodyRowStart, bodyRows;
   rowsByBody(p, arena, bodyRowStart, bodyRows);
@@ -94,7 +96,7 @@ Csr assemble(const BodySpaceProblem &p, StepArena &arena) {
         // Row j's M^-1 J^T half that belongs to body bi.
         const int sideJ = p.body0[(size_t)j] == bi ? 0 : 1;
         const MeReal *mjj = &mj[(size_t)j * 12 + (size_t)(sideJ * 6)];
-        const MeReal v = kern.rowPairEntry(Ji + side * 6, Ji + side * 6 + 3, mjj, mjj + 3);
+        const MeReal v = entry(Ji + side * 6, Ji + side * 6 + 3, mjj, mjj + 3);
         if (seen[(size_t)j] != i) {
           seen[(size_t)j] = i;
           acc[(size_t)j] = 0;
@@ -132,7 +134,15 @@ class KeaSolver final : public PartitionSolver {
     SolveReport report;
     std::fill(lambda.begin(), lambda.end(), MeReal(0));
     if (p.rowCount == 0) return report;
-    const Csr a = assemble(p, arena);
+    // The reference backend's entry inline (the same bits, no indirect call
+    // per entry); any other backend through its table.
+    const platform::Kernels &kern = platform::ActiveKernels();
+    const Csr a = &kern == &platform::ReferenceKernels()
+                      ? assemble(p, arena,
+                                 [](const MeReal *jl, const MeReal *ja, const MeReal *ml, const MeReal *ma) {
+                                   return platform::reference::RowPairEntry(jl, ja, ml, ma);
+                                 })
+                      : assemble(p, arena, kern.rowPairEntry);
     kea::SparseLcpProblem prob;
     prob.n = p.rowCount;
     prob.rowStart = a.rowStart;

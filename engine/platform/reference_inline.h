@@ -1,0 +1,33 @@
+/* reference_inline.h: the reference backend's arithmetic as inline
+ * functions (not installed). reference.cpp builds its kernel table from
+ * them, and a caller in a hot loop may call them directly when the active
+ * backend is the reference one: the same operations in the same order, so
+ * the same bits, without an indirect call per entry. */
+#ifndef KARMA_PLATFORM_REFERENCE_INLINE_H
+#define KARMA_PLATFORM_REFERENCE_INLINE_H
+
+#include "MePrecision.h"
+
+namespace karma::platform::reference {
+
+inline void BodyMinvJt(MeReal invMass, const MeReal invInertiaWorld[3][3], const MeReal jl[3],
+                       const MeReal ja[3], MeReal outLin[3], MeReal outAng[3]) {
+  outLin[0] = jl[0] * invMass;
+  outLin[1] = jl[1] * invMass;
+  outLin[2] = jl[2] * invMass;
+  for (int r = 0; r < 3; ++r) {
+    const MeReal *row = invInertiaWorld[r];
+    outAng[r] = row[0] * ja[0] + row[1] * ja[1] + row[2] * ja[2];
+  }
+}
+
+inline MeReal RowPairEntry(const MeReal jl_i[3], const MeReal ja_i[3], const MeReal minvJtLin_j[3],
+                           const MeReal minvJtAng_j[3]) {
+  const MeReal lin = jl_i[0] * minvJtLin_j[0] + jl_i[1] * minvJtLin_j[1] + jl_i[2] * minvJtLin_j[2];
+  const MeReal ang = ja_i[0] * minvJtAng_j[0] + ja_i[1] * minvJtAng_j[1] + ja_i[2] * minvJtAng_j[2];
+  return lin + ang;
+}
+
+}  // namespace karma::platform::reference
+
+#endif
