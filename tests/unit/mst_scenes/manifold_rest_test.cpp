@@ -2,7 +2,8 @@
 // 60 Hz, for the box-box manifolds (engine/mcd/nearfield/box_box.cpp):
 //  - two 0.5 m cubes stacked on a plane with every relative yaw from 0 to
 //    45 degrees in 1 degree steps rest for 10 s with at most 1 mm
-//    penetration;
+//    penetration, and so do they with the upper cube also tilted by 0.5
+//    degree and placed 1 mm clear (it tips flat);
 //  - a column of 10 cubes with small random yaws and tilts (pile1000's:
 //    yaw within +-0.3 rad, tilts within +-0.1 rad), each placed 1 mm above
 //    the one below so that it tips flat onto it, stands for 20 s with at
@@ -176,4 +177,45 @@ TEST(ManifoldRest, TenCubeColumnWithRandomTiltsStandsWithin2mm) {
     EXPECT_GT(height, 4.5) << "the column fell";
     EXPECT_LT(offset, 0.25) << "the column fell";
     EXPECT_LE(landedPen, 2e-3);
+}
+
+// The same with the upper cube also tilted by 0.5 degree about x and z,
+// placed 1 mm clear of the lower one: it tips flat and rests.
+TEST(ManifoldRest, TwoCubesAtEveryYawWithATiltSettleWithin1mm) {
+    double worstPen = 0, worstDrift = 0;
+    int worstYaw = -1;
+    const double tilt = 0.5 * M_PI / 180;
+    for (int deg = 0; deg <= 45; ++deg) {
+        Scene s;
+        s.addCube(0, 0.25, 0, 0, 0, 0);
+        // Half the vertical extent of the tilted cube: h (|cos a cos b| + ...).
+        MeMatrix3 R;
+        Orientation(R, deg * M_PI / 180, tilt, tilt);
+        double half = 0;
+        for (int k = 0; k < 3; ++k) half += 0.5 * kSide * std::fabs((double)R[k][1]);
+        MdtBodyID top = s.addCube(0, 0.5 + half + 1e-3, 0, deg * M_PI / 180, tilt, tilt);
+        MeVector3 settled, end;
+        double pen = 0;
+        int fewest = 99;
+        for (int i = 0; i < 600; ++i) {  // 10 s; the first second to tip flat
+            s.step();
+            if (i == 60) MdtBodyGetPosition(top, settled);
+            if (i < 60) continue;
+            pen = std::max(pen, s.deepest());
+            int n = 0;
+            for (MdtContactID c = MdtBodyGetFirstContact(top); c; c = MdtBodyGetNextContact(top, c))
+                ++n;
+            fewest = std::min(fewest, n);
+        }
+        MdtBodyGetPosition(top, end);
+        const double drift = Horizontal(settled, end);
+        if (pen > worstPen) worstPen = pen, worstYaw = deg;
+        worstDrift = std::max(worstDrift, drift);
+        EXPECT_GE(fewest, 3) << deg << " degrees";
+        EXPECT_LE(pen, 1e-3) << deg << " degrees";
+        EXPECT_LT(drift, 1e-3) << deg << " degrees";
+    }
+    std::printf("[ figures  ] two cubes, yaw 0..45 deg, tilt 0.5 deg, 1..10 s at 60 Hz: worst "
+                "penetration %.3f mm (at %d deg), worst top drift %.3f mm\n",
+                worstPen * 1e3, worstYaw, worstDrift * 1e3);
 }
