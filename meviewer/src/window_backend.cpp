@@ -164,6 +164,9 @@ std::unique_ptr<Backend> CreateWindowBackend(int width, int height, std::string 
   /* The window surface through X11's own image transfer, not an OpenGL
    * renderer: GLX and OSMesa in one process crash in Mesa. */
   SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+  /* X11 (also under XWayland), where -screenshot can read the window back;
+   * $SDL_VIDEODRIVER still chooses another. */
+  SDL_SetHint(SDL_HINT_VIDEODRIVER, "x11");
   if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
     error = std::string("SDL cannot use the display: ") + SDL_GetError();
     return nullptr;
