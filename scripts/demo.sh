@@ -3,7 +3,7 @@
 # QuadBike tutorial's scripted ride (tutorials/quadbike/README.md) headless:
 # PNG frames, the trajectory and the video quadbike.mp4 (ffmpeg comes with
 # the other packages; were it missing, the frames are still made), all under
-# out/quadbike/. The render prints a progress line every 10 s.
+# out/quadbike/. The render prints its progress (frame n of N, elapsed, to go).
 #
 # The ride is 8 s at 60 steps/s; every second frame is kept (241 frames at
 # 640x480, 0 to 480), so the video plays at 30 frames/s in real time.
