@@ -24,6 +24,9 @@ function(karma_library target export_name)
   get_target_property(type ${target} TYPE)
   if(NOT type STREQUAL "INTERFACE_LIBRARY")
     target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:karma_build_flags>)
+    # The libraries are C++; a program linked by the C compiler (a C-only
+    # project) gets the C++ runtime from here.
+    target_link_libraries(${target} INTERFACE "$<$<LINK_LANGUAGE:C>:stdc++>")
     set_target_properties(${target} PROPERTIES
       OUTPUT_NAME "karma_${export_name}"
       CXX_VISIBILITY_PRESET hidden

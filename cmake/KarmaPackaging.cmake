@@ -22,7 +22,7 @@ install(FILES "${KARMA_GENERATED_INCLUDE_DIR}/karma/MeConfig.h"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/karma")
 
 get_property(karma_targets GLOBAL PROPERTY KARMA_EXPORTED_TARGETS)
-install(TARGETS ${karma_targets} KarmaKarma
+install(TARGETS ${karma_targets} KarmaKarma karma-golden
         EXPORT KarmaTargets
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
@@ -44,11 +44,40 @@ install(FILES "${PROJECT_BINARY_DIR}/KarmaConfig.cmake"
               "${PROJECT_BINARY_DIR}/KarmaConfigVersion.cmake"
         DESTINATION "${KARMA_INSTALL_CMAKEDIR}")
 
-# karma.pc lists the real (non-interface) libraries, dependents first, so a
-# static link resolves in one pass.
-set(KARMA_PC_LIBS "")
-list(REVERSE karma_targets)
+# karma.pc lists the real (non-interface) libraries, each before every
+# library it links (a depth-first walk of the link graph), so a static link
+# resolves in one pass; the dependencies outside Karma come from their own
+# .pc files (Requires.private), and the C++ runtime from Libs.private, so a
+# C program links with `cc ... $(pkg-config --static --libs karma)`.
+function(karma_visit_links target)
+  get_property(seen GLOBAL PROPERTY KARMA_LINK_SEEN)
+  if(target IN_LIST seen)
+    return()
+  endif()
+  set_property(GLOBAL APPEND PROPERTY KARMA_LINK_SEEN ${target})
+  get_target_property(links ${target} LINK_LIBRARIES)
+  get_target_property(interface_links ${target} INTERFACE_LINK_LIBRARIES)
+  foreach(link IN LISTS links interface_links)
+    string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" link "${link}")
+    if(TARGET "${link}")
+      get_target_property(real "${link}" ALIASED_TARGET)
+      if(NOT real)
+        set(real "${link}")
+      endif()
+      if(real IN_LIST karma_targets)
+        karma_visit_links(${real})
+      endif()
+    endif()
+  endforeach()
+  set_property(GLOBAL APPEND PROPERTY KARMA_LINK_ORDER ${target})
+endfunction()
 foreach(t IN LISTS karma_targets)
+  karma_visit_links(${t})
+endforeach()
+get_property(karma_link_order GLOBAL PROPERTY KARMA_LINK_ORDER)
+list(REVERSE karma_link_order) # dependents first
+set(KARMA_PC_LIBS "")
+foreach(t IN LISTS karma_link_order)
   get_target_property(type ${t} TYPE)
   if(NOT type STREQUAL "INTERFACE_LIBRARY")
     get_target_property(out ${t} OUTPUT_NAME)
@@ -60,5 +89,10 @@ string(REGEX REPLACE "/$" "" KARMA_PC_TO_PREFIX "${KARMA_PC_TO_PREFIX}")
 configure_file("${PROJECT_SOURCE_DIR}/cmake/karma.pc.in" "${PROJECT_BINARY_DIR}/karma.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/karma.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
 
-# The golden tool, for users who pin their own programs' outputs.
-install(TARGETS karma-golden RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+# The golden tool (exported as Karma::karma-golden) and karma_add_golden_test()
+# with its driver, for users who pin their own programs' outputs
+# (docs/GOLDEN.md, "Golden-test your own program"); KarmaConfig.cmake
+# includes KarmaGoldenTest.cmake.
+install(FILES "${PROJECT_SOURCE_DIR}/tools/golden/KarmaGoldenTest.cmake"
+              "${PROJECT_SOURCE_DIR}/tools/golden/run_golden.cmake"
+        DESTINATION "${KARMA_INSTALL_CMAKEDIR}")

@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Karma needs to build, test and render, if
 # any are missing. Safe to run again: it does nothing when all are present.
+# apt's output goes to a log file; the script prints one line saying what
+# it installs, and the log's end only if apt fails.
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git   # toolchain
   libeigen3-dev libccd-dev libqhull-dev              # maths, convex collision, hulls
   libosmesa6-dev                                     # offscreen OpenGL (MeViewer)
+  libsdl2-dev                                        # MeViewer's window (-window)
   libstb-dev                                         # PNG/BMP read and write
+  ffmpeg                                             # videos (-video)
   libgtest-dev libgmock-dev libbenchmark-dev         # tests and benchmarks
+  xvfb xauth xdotool                                 # the window test: X server, synthetic input
 )
 
 missing=()
@@ -23,7 +28,6 @@ if [ ${#missing[@]} -eq 0 ]; then
   exit 0
 fi
 
-echo "install-deps: installing ${missing[*]}"
 if [ "$(id -u)" -ne 0 ]; then
   if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
     echo "install-deps: need root to install: ${missing[*]}" >&2; exit 1
@@ -31,6 +35,13 @@ if [ "$(id -u)" -ne 0 ]; then
 else
   SUDO=""
 fi
+log=$(mktemp /tmp/karma-install-deps.XXXXXX.log)
+echo "install-deps: installing ${#missing[@]} Debian packages and what they need" \
+     "(compilers, CMake, maths, OpenGL, SDL2, ffmpeg, test tools): ${missing[*]}; apt's log: $log"
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if ! { $SUDO apt-get update -qq && $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"; } >"$log" 2>&1; then
+  echo "install-deps: apt failed; the end of $log:" >&2
+  tail -n 30 "$log" >&2
+  exit 1
+fi
+echo "install-deps: done"

@@ -108,6 +108,23 @@ void FreeList(RGraphic *g) {
   }
 }
 
+/* The window, the offscreen renderer or nothing, as the options ask. A
+ * window that cannot open falls back to offscreen drawing with a warning.
+ * NULL (with a warning) when nothing that draws can be made. */
+std::unique_ptr<Backend> CreateBackend(ViewerOptions &opts, bool draws) {
+  std::string error;
+  if (opts.backend == BackendKind::Window) {
+    if (std::unique_ptr<Backend> window = CreateWindowBackend(opts.width, opts.height, error)) return window;
+    MeWarning(0, "RRenderContextCreate: %s; drawing offscreen instead", error.c_str());
+    opts.backend = BackendKind::GL;
+    opts.record.clear(), opts.screenshot.clear();
+  }
+  if (!draws) return CreateNullBackend();
+  std::unique_ptr<Backend> gl = CreateGLBackend(opts.width, opts.height, error);
+  if (!gl) MeWarning(0, "RRenderContextCreate: %s; no render context (try -null)", error.c_str());
+  return gl;
+}
+
 } // namespace
 
 RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLineOptions *overrideOptions,
@@ -132,7 +149,12 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
     return nullptr;
   }
 
-  const bool draws = opts.backend == BackendKind::GL || opts.backend == BackendKind::Profile;
+  const bool draws =
+      opts.backend == BackendKind::GL || opts.backend == BackendKind::Profile || opts.backend == BackendKind::Window;
+  if (opts.backend != BackendKind::Window && (!opts.record.empty() || !opts.screenshot.empty())) {
+    MeWarning(0, "RRenderContextCreate: -record and -screenshot need a window (-window); ignored");
+    opts.record.clear(), opts.screenshot.clear();
+  }
   if (!draws && !opts.outDir.empty()) {
     MeWarning(0, "RRenderContextCreate: -out %s is ignored: the %s backend draws nothing", opts.outDir.c_str(),
               opts.backend == BackendKind::Null ? "-null" : "-bench");
@@ -162,16 +184,8 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
     return nullptr;
   }
 
-  std::unique_ptr<Backend> backend;
-  if (draws) {
-    backend = CreateGLBackend(opts.width, opts.height, error);
-    if (!backend) {
-      MeWarning(0, "RRenderContextCreate: %s; no render context (try -null)", error.c_str());
-      return nullptr;
-    }
-  } else {
-    backend = CreateNullBackend();
-  }
+  std::unique_ptr<Backend> backend = CreateBackend(opts, draws);
+  if (!backend) return nullptr;
 
   RRender *rc = static_cast<RRender *>(MeMemoryAPI.createZeroed(sizeof(RRender)));
   if (!rc) {
@@ -187,6 +201,11 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
   rc->m_pPrivate->options = opts;
   rc->m_pPrivate->backend = std::move(backend);
   rc->m_pPrivate->controls.script = std::move(script);
+  if (!opts.record.empty()) {
+    rc->m_pPrivate->controls.record = std::fopen(opts.record.c_str(), "w");
+    if (!rc->m_pPrivate->controls.record)
+      MeWarning(0, "RRenderContextCreate: cannot write the key record '%s'; nothing is recorded", opts.record.c_str());
+  }
   rc->m_pPrivate->videoTempDir = videoTempDir;
   rc->m_pPrivate->font.name = "font";
   rc->m_pPrivate->font.image = MakeFontImage();
@@ -212,6 +231,7 @@ int MEAPI RRenderContextDestroy(RRender *rc) {
     std::error_code ec;
     std::filesystem::remove_all(rc->m_pPrivate->videoTempDir, ec);
   }
+  if (rc->m_pPrivate->controls.record) std::fclose(rc->m_pPrivate->controls.record);
   delete rc->m_pPrivate;
   MeMemoryAPI.destroy(rc);
   return 0;

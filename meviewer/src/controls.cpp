@@ -1,7 +1,9 @@
 /* controls.cpp: the control callbacks and the input phase of a frame.
  *
- * Without a window, keys come from the -keys / -keyfile script
- * (keyscript.cpp). A key press runs, in this order of precedence: the open
+ * Keys come from the -keys / -keyfile script (keyscript.cpp) and, with a
+ * window, from the user (window_backend.cpp) after the script's events of
+ * the frame; -record writes the user's events as a script that replays
+ * them at the same frames. A key press runs, in this order of precedence: the open
  * menu's handling of it (menu.cpp), Escape's quit, F1's help toggle, the action whose key it
  * is (Action1 with no callback opens the default menu), the arrow-style
  * control bound to it. A key already down does not press again (no
@@ -64,6 +66,35 @@ void ReleaseKey(RRender *rc, int key) {
   held.erase(std::remove(held.begin(), held.end(), key), held.end());
 }
 
+namespace {
+
+/* One recorded event: "FRAME:TEXT" on its own line. */
+void Record(RRender *rc, const std::string &text) {
+  std::FILE *f = rc->m_pPrivate->controls.record;
+  if (!f) return;
+  std::fprintf(f, "%d:%s\n", rc->m_nFrame, text.c_str());
+  std::fflush(f);
+}
+
+} // namespace
+
+void LiveKey(RRender *rc, int key, bool down) {
+  Record(rc, std::string(down ? "press " : "release ") + KeyName(key));
+  if (down) PressKey(rc, key);
+  else ReleaseKey(rc, key);
+}
+
+void LiveMouse(RRender *rc, int x, int y, int buttons) {
+  Record(rc, "mouse " + std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(buttons));
+  Controls &c = rc->m_pPrivate->controls;
+  if (c.mouse) c.mouse(rc, x, y, buttons, c.mouseData);
+}
+
+void LiveQuit(RRender *rc) {
+  Record(rc, "quit");
+  rc->m_pPrivate->quit = true;
+}
+
 void ProcessInput(RRender *rc) {
   RRenderPrivate *p = rc->m_pPrivate;
   Controls &c = p->controls;
@@ -80,6 +111,7 @@ void ProcessInput(RRender *rc) {
     case KeyEvent::Quit: p->quit = true; break;
     }
   }
+  p->backend->PollInput(rc);
 }
 
 } // namespace karma::viewer

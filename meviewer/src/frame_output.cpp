@@ -29,6 +29,16 @@ std::string FrameFileName(long frame, bool bmp) {
   return name;
 }
 
+bool WritePng(const std::string &path, const Image &image, std::string &error) {
+  if (image.width <= 0 || image.height <= 0 ||
+      !stbi_write_png(path.c_str(), image.width, image.height, image.channels, image.pixels.data(),
+                      image.width * image.channels)) {
+    error = "cannot write " + path;
+    return false;
+  }
+  return true;
+}
+
 bool WriteFrameImage(const std::string &dir, long frame, bool bmp, const Image &image, std::string &error) {
   const std::string path = dir + "/" + FrameFileName(frame, bmp);
   if (image.width <= 0 || image.height <= 0 ||

@@ -80,9 +80,11 @@ std::unique_ptr<Backend> CreateGLBackend(int width, int height, std::string &err
  * LeakSanitizer reports them at exit in every program that draws. Builds
  * with AddressSanitizer tell LeakSanitizer to ignore leaks from inside
  * libOSMesa only; leaks of our own allocations are still reported. The
- * hook is weak, so a program that defines its own wins. */
+ * window's libraries (SDL2, X11 and what SDL loads) keep caches of their own
+ * until exit and are ignored the same way. The hook is weak, so a program
+ * that defines its own wins. */
 #if defined(__SANITIZE_ADDRESS__)
 extern "C" __attribute__((weak, visibility("default"))) const char *__lsan_default_suppressions() {
-  return "leak:libOSMesa.so\n";
+  return "leak:libOSMesa.so\nleak:libSDL2\nleak:libX11\nleak:libdbus\n";
 }
 #endif

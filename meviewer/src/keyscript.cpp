@@ -13,7 +13,8 @@
  *   12:quit            as if Escape were pressed
  *
  * KEY is one printable character (a, 7, +) or a name, in any case: Up Down
- * Left Right Return Escape Tab Space F1..F12. Frames count from 0 like the
+ * Left Right Return Escape Tab Space F1..F12, and Semicolon and Hash for the
+ * two characters the grammar uses (KeyName writes those two by name). Frames count from 0 like the
  * output files; events of one frame happen in the order written, before
  * that frame's tick. */
 #include "viewer_internal.h"
@@ -33,7 +34,8 @@ struct Named {
 };
 const Named kNames[] = {{"Up", kKeyUp},         {"Down", kKeyDown},     {"Left", kKeyLeft},
                         {"Right", kKeyRight},   {"Return", kKeyReturn}, {"Escape", kKeyEscape},
-                        {"Tab", kKeyTab},       {"Space", kKeySpace}};
+                        {"Tab", kKeyTab},       {"Space", kKeySpace},   {"Semicolon", ';'},
+                        {"Hash", '#'}};
 
 std::string Trim(const std::string &s) {
   const std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
@@ -122,7 +124,8 @@ bool ParseKeyScript(const std::string &text, std::vector<KeyEvent> &out, std::st
       ev.kind = verb == "press" ? KeyEvent::Press : verb == "release" ? KeyEvent::Release : KeyEvent::Tap;
       ev.key = ParseKeyName(arg);
       if (ev.key < 0)
-        return fail("unknown key '" + arg + "' (a printable character, or Up Down Left Right Return Escape Tab Space F1..F12)");
+        return fail("unknown key '" + arg + "' (a printable character, or Up Down Left Right Return Escape Tab Space "
+                    "Semicolon Hash F1..F12)");
     } else if (verb == "action") {
       long n = 0;
       if (!ParseLong(arg, 0, R_MAX_ACTIONS - 1, n)) return fail("the action number must be 0.." + std::to_string(R_MAX_ACTIONS - 1));

@@ -16,14 +16,15 @@
 namespace karma::viewer {
 namespace {
 
-const char *const kBackendNames[] = {"-gl", "-d3d", "-null", "-bench", "-profile"};
-const BackendKind kBackendKinds[] = {BackendKind::GL, BackendKind::GL, BackendKind::Null, BackendKind::Bench,
-                                     BackendKind::Profile};
-constexpr int kBackendCount = 5;
+const char *const kBackendNames[] = {"-gl", "-d3d", "-null", "-bench", "-profile", "-window"};
+const BackendKind kBackendKinds[] = {BackendKind::GL,    BackendKind::GL,      BackendKind::Null,
+                                     BackendKind::Bench, BackendKind::Profile, BackendKind::Window};
+constexpr int kBackendCount = 6;
 
 /* Options taking a value, then flags; used for the misspelling check. */
 const char *const kKnownOptions[] = {"-gl",  "-d3d", "-null",  "-bench", "-profile", "-frames",
-                                     "-out", "-every", "-bmp", "-size", "-help", "-keys", "-keyfile", "-video"};
+                                     "-out", "-every", "-bmp", "-size", "-help", "-keys", "-keyfile", "-video",
+                                     "-window", "-record", "-screenshot"};
 /* Options the project's own programs read (golden runs pass them to every
  * program), never reported as unknown. */
 const char *const kProgramOptions[] = {"-platform", "-trajectory"};
@@ -83,6 +84,7 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
     const int i = MeCommandLineOptionsCheckForList(o, kBackendNames, kBackendCount, eat ? 1 : 0);
     if (i < 0) break;
     out.backend = kBackendKinds[i];
+    out.backendGiven = true;
     if (!eat) {
       /* Without eating the same name would be found again; take the last
        * backend option in the list instead. */
@@ -109,7 +111,9 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
                                 {"-size", "WxH, each 16..8192, e.g. 640x480"},
                                 {"-keys", "a key script, e.g. \"10:key Return\""},
                                 {"-keyfile", "a key script file"},
-                                {"-video", "a video file name (.mp4 or .gif)"}};
+                                {"-video", "a video file name (.mp4 or .gif)"},
+                                {"-record", "a file for the window's key script"},
+                                {"-screenshot", "a PNG file name"}};
   for (const ValueOption &v : values) {
     bool missing = false;
     const char *text = Value(o, v.name, eat, missing);
@@ -129,6 +133,8 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
     else if (!*text) ok = false;
     else if (!std::strcmp(v.name, "-keyfile")) out.keyFile = text;
     else if (!std::strcmp(v.name, "-video")) out.video = text;
+    else if (!std::strcmp(v.name, "-record")) out.record = text;
+    else if (!std::strcmp(v.name, "-screenshot")) out.screenshot = text;
     else out.outDir = text;
     if (!ok) {
       error = std::string("bad value '") + text + "' for " + v.name + ": want " + v.want;
@@ -159,7 +165,10 @@ int Distance(const char *a, const char *b) {
 
 const char *HelpText() {
   return "MeViewer options (any program that draws with MeViewer reads these):\n"
-         "  -gl            draw with OpenGL, offscreen through OSMesa (the default)\n"
+         "  -gl            draw with OpenGL, offscreen through OSMesa (the default\n"
+         "                 when there is no display or -frames is given)\n"
+         "  -window        draw the same frames in a window and take keys and the mouse\n"
+         "                 from it (the default when $DISPLAY is set and -frames is not)\n"
          "  -d3d           the same as -gl (kept for the guide's programs)\n"
          "  -null          run the loop without drawing anything\n"
          "  -bench         as -null, and print per-frame timing statistics at exit\n"
@@ -174,16 +183,28 @@ const char *HelpText() {
          "  -keyfile FILE  the same, the script read from FILE (after -keys' events)\n"
          "  -video FILE    after the run, assemble the frames into FILE with ffmpeg\n"
          "                 (.gif: an animated GIF, otherwise H.264 MP4; 30 frames/s)\n"
+         "  -record FILE   with a window, write the keys and mouse moves as a key script\n"
+         "                 that replays the session (e.g. offscreen with -keyfile FILE)\n"
+         "  -screenshot F  with a window, save it as the display shows it at exit (PNG)\n"
          "  -help          print this list and exit\n"
          "Textures are found as NAME.bmp in: the working directory, $KARMA_DATA_DIR,\n"
          "the program's directory and its data/ and ../share/karma/ folders, the\n"
          "build tree's share/karma/, then Karma's installed share/karma/ folder.\n";
 }
 
+bool DisplayPresent() {
+  const char *display = std::getenv("DISPLAY");
+  return display && *display;
+}
+
+/* Without a backend option, a program with no frame limit opens a window
+ * when there is a display to show it on. */
 bool ParseViewerOptions(MeCommandLineOptions *options, MeCommandLineOptions *overrides, bool eat,
                         ViewerOptions &out, std::string &error) {
   out = ViewerOptions{};
-  return ParseOne(options, eat, out, error) && ParseOne(overrides, eat, out, error);
+  if (!ParseOne(options, eat, out, error) || !ParseOne(overrides, eat, out, error)) return false;
+  if (!out.backendGiven && out.frames < 0 && DisplayPresent()) out.backend = BackendKind::Window;
+  return true;
 }
 
 void ReportUnknownOptions(const MeCommandLineOptions *options) {

@@ -5,14 +5,17 @@
  * then exit(0), so the program's atexit cleanup runs. An exit request is
  * RRenderQuit, or -frames N once N frames have been drawn (frame numbers
  * start at 0; with -out, frame k goes to DIR/frame_k.png when k is a
- * multiple of -every). */
+ * multiple of -every). In a window a frame lasts at least 1/60 s, so the
+ * simulation runs no faster than real time at the guide's 60 steps/s; with
+ * -screenshot the window is saved as the display shows it after the last
+ * frame. */
 #include "viewer_internal.h"
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <unistd.h>
+#include <thread>
 
 using namespace karma::viewer;
 
@@ -24,9 +27,9 @@ double Ms(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-/* Writes frame `frame` if the options ask for it; shows progress on a
- * terminal. A failed write stops further writing with one message. */
-void OutputFrame(RRender *rc, bool &writeFailed, bool progress) {
+/* Writes frame `frame` if the options ask for it. A failed write stops
+ * further writing with one message. */
+void OutputFrame(RRender *rc, bool &writeFailed) {
   RRenderPrivate *p = rc->m_pPrivate;
   const ViewerOptions &o = p->options;
   if (o.outDir.empty() || writeFailed || rc->m_nFrame % o.every != 0) return;
@@ -37,13 +40,17 @@ void OutputFrame(RRender *rc, bool &writeFailed, bool progress) {
     writeFailed = true;
     return;
   }
-  if (progress) {
-    if (o.frames >= 0)
-      std::fprintf(stderr, "\rMeViewer: frame %d of %ld written to %s", rc->m_nFrame + 1, o.frames, o.outDir.c_str());
-    else
-      std::fprintf(stderr, "\rMeViewer: frame %d written to %s", rc->m_nFrame + 1, o.outDir.c_str());
-    std::fflush(stderr);
-  }
+}
+
+/* The shortest frame in a window: 1/60 s. */
+constexpr std::chrono::microseconds kWindowFrame{16667};
+
+void SaveScreenshot(RRender *rc) {
+  RRenderPrivate *p = rc->m_pPrivate;
+  Image shot;
+  std::string error;
+  if (!p->backend->Screenshot(shot, error) || !WritePng(p->options.screenshot, shot, error))
+    MeWarning(0, "RRun: -screenshot %s: %s", p->options.screenshot.c_str(), error.c_str());
 }
 
 } // namespace
@@ -55,8 +62,11 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
   }
   RRenderPrivate *p = rc->m_pPrivate;
   const ViewerOptions &o = p->options;
-  const bool progress = !o.outDir.empty() && p->videoTempDir.empty() && isatty(STDERR_FILENO);
-  if (o.frames < 0 && p->backend->Draws())
+  std::unique_ptr<ProgressLine> progress;
+  if (!o.outDir.empty())
+    progress = std::make_unique<ProgressLine>(o.frames, p->videoTempDir.empty() ? "written to " + o.outDir
+                                                                                : "for the video " + o.video);
+  if (o.frames < 0 && p->backend->Draws() && !p->backend->Live())
     MeInfo(0, "MeViewer: drawing offscreen with no frame limit; pass -frames N to stop after N frames");
   p->running = true;
   LoadPendingTextures(rc);
@@ -79,7 +89,8 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
       if (profiled) MeProfileEndSection("render");
     }
     const Clock::time_point t3 = Clock::now();
-    OutputFrame(rc, writeFailed, progress);
+    OutputFrame(rc, writeFailed);
+    if (progress) progress->FrameDone(rc->m_nFrame + 1);
     const Clock::time_point t4 = Clock::now();
     if (timed) {
       times.input.push_back(Ms(t0, t1));
@@ -90,8 +101,10 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
     }
     if (profiled) MeProfileEndFrame();
     ++rc->m_nFrame;
+    if (p->backend->Live()) std::this_thread::sleep_until(t0 + kWindowFrame);
   }
-  if (progress) std::fputc('\n', stderr);
+  progress.reset();
+  if (!o.screenshot.empty()) SaveScreenshot(rc);
   if (!o.video.empty() && !writeFailed) AssembleVideo(o.outDir, o.bmp, o.video);
   if (!p->videoTempDir.empty()) { /* frames made only for the video */
     std::error_code ec;

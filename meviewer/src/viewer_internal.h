@@ -8,18 +8,21 @@
 
 #include "MeViewer.h"
 
+#include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace karma::viewer {
 
-enum class BackendKind { GL, Null, Bench, Profile };
+enum class BackendKind { GL, Null, Bench, Profile, Window };
 
 /* Everything the viewer reads from the command line. */
 struct ViewerOptions {
   BackendKind backend = BackendKind::GL;
+  bool backendGiven = false; /* a backend option was on the command line */
   long frames = -1;     /* < 0: no limit */
   std::string outDir;   /* empty: no images */
   int every = 1;        /* write frames whose index is a multiple of this */
@@ -29,7 +32,11 @@ struct ViewerOptions {
   std::string keys;     /* -keys SCRIPT, then -keyfile FILE's text appended */
   std::string keyFile;  /* -keyfile FILE */
   std::string video;    /* -video FILE (.gif: GIF, anything else: H.264 MP4) */
+  std::string record;   /* -record FILE: the window's live input as a key script */
+  std::string screenshot; /* -screenshot FILE: the window as the display shows it, at exit */
 };
+/* True when a display is there to open windows on ($DISPLAY not empty). */
+bool DisplayPresent();
 
 /* The options text -help prints. */
 const char *HelpText();
@@ -93,13 +100,27 @@ public:
   virtual void DrawFrame(RRender *rc) = 0;
   /* The last frame as RGB, top row first. */
   virtual bool ReadFrame(Image &out) = 0;
+  /* A window: paced to real time, with live input and screenshots. */
+  virtual bool Live() const { return false; }
+  /* Hands the window's pending input to LiveKey / LiveMouse / LiveQuit. */
+  virtual void PollInput(RRender *) {}
+  /* The window's pixels as the display shows them (RGB, top row first). */
+  virtual bool Screenshot(Image &, std::string &error) {
+    error = "only a window has a screenshot";
+    return false;
+  }
 };
 std::unique_ptr<Backend> CreateNullBackend();
 /* NULL with `error` set when OSMesa cannot make a context. */
 std::unique_ptr<Backend> CreateGLBackend(int width, int height, std::string &error);
+/* A window of the frame size showing the OSMesa frames; NULL with `error`
+ * set when no window can be opened. */
+std::unique_ptr<Backend> CreateWindowBackend(int width, int height, std::string &error);
 
 /* Writes DIR/frame_NNNNN.png (or .bmp); false with `error` on failure. */
 bool WriteFrameImage(const std::string &dir, long frame, bool bmp, const Image &image, std::string &error);
+/* Writes `image` as a PNG file at `path`; false with `error` on failure. */
+bool WritePng(const std::string &path, const Image &image, std::string &error);
 /* "frame_00042.png" */
 std::string FrameFileName(long frame, bool bmp);
 
@@ -108,6 +129,26 @@ std::string FindInPath(const std::string &name);
 /* Runs ffmpeg on the frames written to `dir` to make `video`; reports the
  * outcome through MeInfo / MeWarning. Returns true on success. */
 bool AssembleVideo(const std::string &dir, bool bmp, const std::string &video);
+
+/* The progress line of a render to files (progress.cpp). */
+class ProgressLine {
+public:
+  /* total < 0: no frame limit. `what` says where the frames go. */
+  ProgressLine(long total, std::string what);
+  ~ProgressLine();
+  ProgressLine(const ProgressLine &) = delete;
+  ProgressLine &operator=(const ProgressLine &) = delete;
+  /* `done` frames (1 or more) have been drawn and written. */
+  void FrameDone(long done);
+
+private:
+  using Clock = std::chrono::steady_clock;
+  long total_;
+  std::string what_;
+  bool terminal_;
+  Clock::time_point start_, last_;
+  bool printed_ = false;
+};
 
 /* Per-phase timings of the loop, for -bench and -profile. */
 struct FrameTimes {
@@ -159,12 +200,19 @@ struct Controls {
   std::vector<int> held; /* keys down */
   std::vector<KeyEvent> script;
   std::size_t next = 0;  /* first script event not yet applied */
+  std::FILE *record = nullptr; /* -record: live events written as a key script */
 };
 /* The input phase of a frame: applies the script's events for this frame. */
 void ProcessInput(RRender *rc);
 /* A key going down / up, as a user would press it. */
 void PressKey(RRender *rc, int key);
 void ReleaseKey(RRender *rc, int key);
+/* Live input from a window, in the current frame's input phase: the same
+ * effect as the key-script events "F:press KEY" / "F:release KEY",
+ * "F:mouse X,Y,B" and "F:quit" at this frame F, which -record writes. */
+void LiveKey(RRender *rc, int key, bool down);
+void LiveMouse(RRender *rc, int x, int y, int buttons);
+void LiveQuit(RRender *rc);
 /* The open menu's reaction to a key; false if the menu does not use it. */
 bool MenuHandleKey(RRender *rc, int key);
 /* The open menu as 2D graphics (in no list), for one frame; the caller

@@ -4,20 +4,25 @@
 #                         [GOLDEN_PROGRAM <name>]   # golden/<name>/..., default: <target>
 #                         [BACKEND <backend>]       # default: reference
 #                         [ARGS <arg>...]           # the program's own arguments
-#                         [CHECK_ARGS <arg>...])    # extra `karma-golden check` options
+#                         [CHECK_ARGS <arg>...]     # extra `karma-golden check` options
+#                         [GOLDEN_ROOT <dir>])      # default: <project source>/golden
 #
 # Registers the CTest test <test>, labelled `golden`, which runs run_golden.cmake:
 # the program runs with ARGS followed by
 #     -platform <backend> -trajectory <out>/trajectory.txt -out <out>
 # in a fresh directory <out> of the build tree, and its output is compared with
-#     <source>/golden/<GOLDEN_PROGRAM>/<step>/<backend>-<KARMA_PRECISION>/
+#     <GOLDEN_ROOT>/<GOLDEN_PROGRAM>/<step>/<backend>-<precision>/
 # by `karma-golden check`. With KARMA_GOLDEN_REGENERATE=1 in the environment
-# (set only by scripts/golden-regen) the outputs replace the golden instead.
+# (Karma's scripts/golden-regen sets it) the outputs replace the golden instead.
+#
+# In Karma's own build the tool is the target karma-golden and the precision
+# KARMA_PRECISION; in a project that did find_package(Karma), which includes
+# this file, they are Karma::karma-golden and Karma_PRECISION.
 #
 # Arguments travel to the driver one -D variable each (ARG_COUNT, ARG_0, ...),
 # so they may contain spaces; they may not contain ';'.
 function(karma_add_golden_test)
-  cmake_parse_arguments(PARSE_ARGV 0 G "" "NAME;PROGRAM;STEP;GOLDEN_PROGRAM;BACKEND" "ARGS;CHECK_ARGS")
+  cmake_parse_arguments(PARSE_ARGV 0 G "" "NAME;PROGRAM;STEP;GOLDEN_PROGRAM;BACKEND;GOLDEN_ROOT" "ARGS;CHECK_ARGS")
   if(G_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "karma_add_golden_test: unexpected arguments: ${G_UNPARSED_ARGUMENTS}")
   endif()
@@ -35,8 +40,22 @@ function(karma_add_golden_test)
   if(NOT G_BACKEND)
     set(G_BACKEND reference)
   endif()
-  if(NOT KARMA_PRECISION MATCHES "^(single|double)$")
-    message(FATAL_ERROR "karma_add_golden_test: KARMA_PRECISION must be single or double")
+  if(NOT G_GOLDEN_ROOT)
+    set(G_GOLDEN_ROOT ${PROJECT_SOURCE_DIR}/golden)
+  endif()
+  set(precision "${KARMA_PRECISION}")
+  if(NOT precision)
+    set(precision "${Karma_PRECISION}")
+  endif()
+  if(NOT precision MATCHES "^(single|double)$")
+    message(FATAL_ERROR "karma_add_golden_test: KARMA_PRECISION (or Karma_PRECISION) must be single or double")
+  endif()
+  if(TARGET karma-golden)
+    set(tool karma-golden)
+  elseif(TARGET Karma::karma-golden)
+    set(tool Karma::karma-golden)
+  else()
+    message(FATAL_ERROR "karma_add_golden_test: no karma-golden target (find_package(Karma) first)")
   endif()
 
   set(defines)
@@ -59,12 +78,12 @@ function(karma_add_golden_test)
     COMMAND ${CMAKE_COMMAND}
       -DTEST_NAME=${G_NAME}
       -DPROGRAM=$<TARGET_FILE:${G_PROGRAM}>
-      -DGOLDEN_TOOL=$<TARGET_FILE:karma-golden>
+      -DGOLDEN_TOOL=$<TARGET_FILE:${tool}>
       -DGOLDEN_PROGRAM=${G_GOLDEN_PROGRAM}
       -DSTEP=${G_STEP}
       -DBACKEND=${G_BACKEND}
-      -DPRECISION=${KARMA_PRECISION}
-      -DGOLDEN_ROOT=${PROJECT_SOURCE_DIR}/golden
+      -DPRECISION=${precision}
+      -DGOLDEN_ROOT=${G_GOLDEN_ROOT}
       -DSOURCE_ROOT=${PROJECT_SOURCE_DIR}
       -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/golden-output/${G_NAME}
       ${defines}

@@ -99,7 +99,8 @@ if(NOT IS_DIRECTORY "${golden_dir}")
   message(FATAL_ERROR
     "golden ${key}: there is no golden directory ${golden_rel}.\n"
     "If this is a new program or step, look at its output in ${OUTPUT_DIR} first; when it is right, create the "
-    "golden with\n    scripts/golden-regen <build-dir> '^${TEST_NAME}$'\n"
+    "golden with\n    KARMA_GOLDEN_REGENERATE=1 ctest -R '^${TEST_NAME}$'\n"
+    "(in Karma's own tree: scripts/golden-regen <build-dir> '^${TEST_NAME}$')\n"
     "and commit it saying what the program shows (docs/GOLDEN.md).")
 endif()
 execute_process(COMMAND ${check_command} RESULT_VARIABLE check_result)
