@@ -9,6 +9,7 @@
 // most two) bodies; a row's entries are summed over both shared bodies and
 // stored in ascending column order, diagonal always present.
 #include <algorithm>
+#include <limits>
 
 #include "kea_lcp.h"
 #include "kernels.h"
@@ -64,6 +65,10 @@ std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
 }
 
 // `entry` is one body's share of an entry (the platform's rowPairEntry).
+// Row i's columns are the union of its bodies' row lists, each ascending,
+// so a merge gives them in order; an entry shared through both bodies is
+// (0 + share through body 0) + share through body 1, and the diagonal then
+// gets the softness.
 template <class Entry>
 Csr assemble(const BodySpaceProblem &p, StepArena &arena, Entry entry) {
   const int m = p.rowCount;
@@ -80,39 +85,46 @@ Csr assemble(const BodySpaceProblem &p, StepArena &arena, Entry entry) {
   a.rowStart = arena.take<int>((size_t)m + 1);
   a.col = arena.take<int>(bound);
   a.val = arena.take<MeReal>(bound);
-  std::span<MeReal> acc = arena.take<MeReal>((size_t)m);
-  std::span<int> seen = arena.filled<int>((size_t)m, -1);
   int nnz = 0;
   a.rowStart[0] = 0;
+  constexpr int kEnd = std::numeric_limits<int>::max();
   for (int i = 0; i < m; ++i) {
-    const int first = nnz;
     const MeReal *Ji = &p.J[(size_t)i * 12];
     const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
+    int at[2], end[2];
     for (int side = 0; side < 2; ++side) {
+      at[side] = bodies[side] >= 0 ? bodyRowStart[(size_t)bodies[side]] : 0;
+      end[side] = bodies[side] >= 0 ? bodyRowStart[(size_t)bodies[side] + 1] : 0;
+    }
+    // Body bi's share of entry (i, j): row j's M^-1 J^T half for bi.
+    auto share = [&](int side, int j) {
       const int bi = bodies[side];
-      if (bi < 0) continue;
-      for (int t = bodyRowStart[(size_t)bi]; t < bodyRowStart[(size_t)bi + 1]; ++t) {
-        const int j = bodyRows[(size_t)t];
-        // Row j's M^-1 J^T half that belongs to body bi.
-        const int sideJ = p.body0[(size_t)j] == bi ? 0 : 1;
-        const MeReal *mjj = &mj[(size_t)j * 12 + (size_t)(sideJ * 6)];
-        const MeReal v = entry(Ji + side * 6, Ji + side * 6 + 3, mjj, mjj + 3);
-        if (seen[(size_t)j] != i) {
-          seen[(size_t)j] = i;
-          acc[(size_t)j] = 0;
-          a.col[(size_t)nnz++] = j;
+      const int sideJ = p.body0[(size_t)j] == bi ? 0 : 1;
+      const MeReal *mjj = &mj[(size_t)j * 12 + (size_t)(sideJ * 6)];
+      return entry(Ji + side * 6, Ji + side * 6 + 3, mjj, mjj + 3);
+    };
+    bool diagonal = false;
+    while (at[0] < end[0] || at[1] < end[1]) {
+      const int j0 = at[0] < end[0] ? bodyRows[(size_t)at[0]] : kEnd;
+      const int j1 = at[1] < end[1] ? bodyRows[(size_t)at[1]] : kEnd;
+      const int j = std::min(j0, j1);
+      MeReal v = 0;
+      for (int side = 0; side < 2; ++side)
+        while (at[side] < end[side] && bodyRows[(size_t)at[side]] == j) {
+          v += share(side, j);
+          ++at[side];
         }
-        acc[(size_t)j] += v;
+      if (j == i) {
+        v += p.softness[(size_t)i];
+        diagonal = true;
       }
+      a.col[(size_t)nnz] = j;
+      a.val[(size_t)nnz++] = v;
     }
-    if (seen[(size_t)i] != i) {
-      seen[(size_t)i] = i;
-      acc[(size_t)i] = 0;
-      a.col[(size_t)nnz++] = i;
+    if (!diagonal) {  // a row with no enabled body (cannot happen) keeps its diagonal
+      a.col[(size_t)nnz] = i;
+      a.val[(size_t)nnz++] = 0 + p.softness[(size_t)i];
     }
-    acc[(size_t)i] += p.softness[(size_t)i];
-    std::sort(a.col.begin() + first, a.col.begin() + nnz);
-    for (int k = first; k < nnz; ++k) a.val[(size_t)k] = acc[(size_t)a.col[(size_t)k]];
     a.rowStart[(size_t)i + 1] = nnz;
   }
   a.col = a.col.first((size_t)nnz);
