@@ -53,8 +53,8 @@ void push(const BodySpaceProblem &p, StepScratch &s, const Partition &part, int 
 // `b`) together; one row at a time if the small LCP finds no answer.
 void bounceTogether(const BodySpaceProblem &p, StepScratch &s, const Partition &part, const int *ks,
                     const MeReal *b, int n) {
-  MeReal mj[kSmallLcpMax][12], q[kSmallLcpMax], lo[kSmallLcpMax] = {}, x[kSmallLcpMax];
-  MeReal A[kSmallLcpMax * kSmallLcpMax];
+  MeReal mj[kSmallLcpMax][12] = {}, q[kSmallLcpMax] = {}, lo[kSmallLcpMax] = {}, x[kSmallLcpMax] = {};
+  MeReal A[kSmallLcpMax * kSmallLcpMax] = {};
   for (int i = 0; i < n; ++i) q[i] = b[i] - rowResponse(p, s, part, ks[i], mj[i]);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {

@@ -176,8 +176,8 @@ MeReal update(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda,
 MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int b) {
   const int first = p.normalBlock[(size_t)b], k = p.normalBlock[(size_t)b + 1] - first;
   const MeReal *A = &w.blockA[(size_t)b * kMaxBlock * kMaxBlock];
-  MeReal lam[kMaxBlock], lo[kMaxBlock], q[kMaxBlock];
-  int rows[kMaxBlock];
+  MeReal lam[kMaxBlock] = {}, lo[kMaxBlock] = {}, q[kMaxBlock] = {};
+  int rows[kMaxBlock] = {};
   for (int i = 0; i < k; ++i) {
     rows[i] = p.normalRows[(size_t)(first + i)];
     lam[i] = lambda[(size_t)rows[i]];
@@ -189,7 +189,7 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
     q[i] = -slack;
     for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
   }
-  MeReal x[kMaxBlock];
+  MeReal x[kMaxBlock] = {};
   if (!SolveSmallLcp(A, q, lo, k, x)) return -1;
   MeReal biggest = 0;
   for (int i = 0; i < k; ++i) {
