@@ -14,6 +14,7 @@
 #include <functional>
 #include <vector>
 
+#include "MeConfig.h"
 #include "Mst.h"
 
 namespace {
@@ -268,10 +269,10 @@ void ExpectOrderIndependent(const char *name, const std::vector<BoxSpec> &specs,
 
 }  // namespace
 
-// The nearfield's same-type pairs (box-box, sphyl-sphyl) compute with the
-// lower-addressed model first (OrderedSameType, nearfield/prim_math.h), so
-// the contacts' bits follow the models' pool slots, i.e. creation order,
-// even when the space hands the pair over in key order.
+// The nearfield computes a same-type pair (box-box, sphyl-sphyl) in one
+// fixed order (ComputedFirst, nearfield/nearfield.h): by sort key, then by
+// address. Were it by address alone, the contacts' bits would follow the
+// models' pool slots, i.e. creation order; the probe checks that it is not.
 #define SKIP_WHILE_NEARFIELD_ORDERS_BY_ADDRESS()                                                \
     if (!BoxBoxIgnoresCreationOrder())                                                         \
     GTEST_SKIP() << "box-box contacts depend on which model was created first: "               \
@@ -293,6 +294,13 @@ TEST(SortKeyOrder, FourTowersOfThreeIndependentOfCreationOrder) {
 
 TEST(SortKeyOrder, FiftyBoxHeapIndependentOfCreationOrder) {
     SKIP_WHILE_NEARFIELD_ORDERS_BY_ADDRESS();
+#if KARMA_CHECK
+    // The check and sanitizer builds are unoptimised: the heap's one large
+    // partition on Kea's sparse path took 10 minutes there (4.5 minutes for
+    // its first 2 s). Release and double builds run it; the towers above
+    // check order independence in these builds too.
+    GTEST_SKIP() << "too slow in the unoptimised check build; run in release and double";
+#endif
     // Boxes land on boxes (a box on the ground has its centre at 0.15 m,
     // possibly 0.26 m when on edge).
     ExpectOrderIndependent("50-box heap", Heap(), PitWalls(), 0.4, 2.0);

@@ -62,17 +62,45 @@ TEST(StepAllocation, TheRagdollAllocatesNothing) { ExpectNoAllocationOnceSettled
 
 }  // namespace
 
-void *operator new(std::size_t n) {
+// Every form of the global operators is replaced, so whatever the library
+// allocates with one form it frees with the matching one (ASan checks).
+namespace {
+void *Counted(std::size_t n) {
   ++gNew;
-  if (void *p = std::malloc(n ? n : 1)) return p;
+  return std::malloc(n ? n : 1);
+}
+void *CountedAligned(std::size_t n, std::align_val_t a) {
+  ++gNew;
+  const std::size_t align = static_cast<std::size_t>(a);
+  return std::aligned_alloc(align, (n + align - 1) / align * align);
+}
+}  // namespace
+
+void *operator new(std::size_t n) {
+  if (void *p = Counted(n)) return p;
   throw std::bad_alloc();
 }
 void *operator new[](std::size_t n) {
-  ++gNew;
-  if (void *p = std::malloc(n ? n : 1)) return p;
+  if (void *p = Counted(n)) return p;
+  throw std::bad_alloc();
+}
+void *operator new(std::size_t n, const std::nothrow_t &) noexcept { return Counted(n); }
+void *operator new[](std::size_t n, const std::nothrow_t &) noexcept { return Counted(n); }
+void *operator new(std::size_t n, std::align_val_t a) {
+  if (void *p = CountedAligned(n, a)) return p;
+  throw std::bad_alloc();
+}
+void *operator new[](std::size_t n, std::align_val_t a) {
+  if (void *p = CountedAligned(n, a)) return p;
   throw std::bad_alloc();
 }
 void operator delete(void *p) noexcept { std::free(p); }
 void operator delete[](void *p) noexcept { std::free(p); }
 void operator delete(void *p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
+void operator delete(void *p, const std::nothrow_t &) noexcept { std::free(p); }
+void operator delete[](void *p, const std::nothrow_t &) noexcept { std::free(p); }
+void operator delete(void *p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void *p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void *p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void *p, std::size_t, std::align_val_t) noexcept { std::free(p); }
