@@ -30,10 +30,7 @@ MeReal rowResponse(const BodySpaceProblem &p, StepScratch &s, const Partition &p
     const MdtBody *body = s.partBodies[(size_t)(part.bodyStart + b)];
     const MeReal *lin = J + side * 6, *ang = lin + 3;
     jv += MeVector3Dot(lin, body->velocity) + MeVector3Dot(ang, body->angularVelocity);
-    const MeReal m = p.invMass[(size_t)b];
-    const MeReal *I = &p.invInertia[(size_t)b * 9];
-    for (int e = 0; e < 3; ++e) out[e] = m * lin[e];
-    for (int r = 0; r < 3; ++r) out[3 + r] = I[r * 3] * ang[0] + I[r * 3 + 1] * ang[1] + I[r * 3 + 2] * ang[2];
+    sideMinvJt(p, k, side, out);
   }
   return jv;
 }

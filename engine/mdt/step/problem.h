@@ -47,4 +47,15 @@ struct BodySpaceProblem {
   bool anyWarm = false;                       // a warm value is nonzero
 };
 
+// M^-1 J^T of one side of row `row` for body b (6 values: linear, angular):
+// invMass[b] J_lin and invInertia[b] J_ang.
+inline void sideMinvJt(const BodySpaceProblem &p, int row, int side, MeReal out[6]) {
+  const int b = side == 0 ? p.body0[(size_t)row] : p.body1[(size_t)row];
+  const MeReal *J = &p.J[(size_t)row * 12 + (size_t)(side * 6)];
+  const MeReal m = p.invMass[(size_t)b];
+  const MeReal *I = &p.invInertia[(size_t)b * 9];
+  for (int k = 0; k < 3; ++k) out[k] = m * J[k];
+  for (int r = 0; r < 3; ++r) out[3 + r] = I[r * 3] * J[3] + I[r * 3 + 1] * J[4] + I[r * 3 + 2] * J[5];
+}
+
 }  // namespace karma::mdt

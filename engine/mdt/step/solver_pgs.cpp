@@ -50,14 +50,6 @@ struct Workspace {
   std::span<int> visited;   // per block: the last sweep that solved it
 };
 
-// M^-1 J^T of one side of row i (6 values) for body b.
-void sideMinvJt(const BodySpaceProblem &p, int b, const MeReal *J, MeReal *out) {
-  const MeReal m = p.invMass[(size_t)b];
-  const MeReal *I = &p.invInertia[(size_t)b * 9];
-  for (int k = 0; k < 3; ++k) out[k] = m * J[k];
-  for (int r = 0; r < 3; ++r) out[3 + r] = I[r * 3] * J[3] + I[r * 3 + 1] * J[4] + I[r * 3 + 2] * J[5];
-}
-
 MeReal dot6(const MeReal *a, const MeReal *b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5];
 }
@@ -113,7 +105,7 @@ Workspace prepare(const BodySpaceProblem &p, StepArena &arena) {
     const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
     for (int side = 0; side < 2; ++side) {
       if (bodies[side] < 0) continue;
-      sideMinvJt(p, bodies[side], J + side * 6, mj + side * 6);
+      sideMinvJt(p, i, side, mj + side * 6);
       d += dot6(J + side * 6, mj + side * 6);
     }
     w.diag[(size_t)i] = d;
