@@ -6,6 +6,9 @@
 //   penetration  deepest contact penetration after the last step (mm)
 //   car_v, car_x chassis velocity (m/s) and position (m) at 5 s (analytic 16.18, 40.45)
 //   joint_err    ragdoll: largest joint gap over the run (mm)
+//   rows, solves, factorizations, friction_rounds
+//                per step, summed over partitions (MdtWorldGetStepStats)
+//   unsolved     partition solves over the run that did not reach tolerance
 // Run e.g.  build/bench/bench/anchor_scenes_bench --benchmark_repetitions=5
 // (Google Benchmark then reports the median and spread of the runs).
 #include <benchmark/benchmark.h>
@@ -18,6 +21,27 @@ namespace {
 
 using karma::scenes::AnchorScene;
 
+// The solver's work over a run (MdtWorldGetStepStats after every step).
+struct StatsSum {
+  double rows = 0, solves = 0, factorizations = 0, frictionRounds = 0, unsolved = 0;
+  void add(MdtWorldID world) {
+    MdtWorldStepStats s;
+    MdtWorldGetStepStats(world, &s);
+    rows += s.rows;
+    solves += s.keaIterations;
+    factorizations += s.keaFactorizations;
+    frictionRounds += s.keaFrictionRounds;
+    unsolved += s.keaUnsolved;
+  }
+  void report(benchmark::State &state, int steps) const {
+    state.counters["rows"] = rows / steps;
+    state.counters["solves"] = solves / steps;
+    state.counters["factorizations"] = factorizations / steps;
+    state.counters["friction_rounds"] = frictionRounds / steps;
+    state.counters["unsolved"] = unsolved;
+  }
+};
+
 // Steps = 0 runs the scene's own length; pile1000_first90 runs the first 90
 // steps of pile1000 (its landing, as the test does) for a quick figure.
 template <std::unique_ptr<AnchorScene> (*Make)(), int Steps = 0>
@@ -28,10 +52,15 @@ void BM_Scene(benchmark::State &state) {
     state.ResumeTiming();
     const auto start = std::chrono::steady_clock::now();
     const int steps = Steps > 0 ? Steps : scene->steps();
-    for (int i = 0; i < steps; ++i) scene->step();
+    StatsSum sum;
+    for (int i = 0; i < steps; ++i) {
+      scene->step();
+      sum.add(scene->world());
+    }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     state.PauseTiming();
+    sum.report(state, steps);
     const karma::scenes::SceneFigures f = scene->finish();
     state.counters["us_per_step"] = seconds * 1e6 / f.steps;
     state.counters["stable"] = f.stable() ? 1 : 0;

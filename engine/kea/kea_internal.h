@@ -65,6 +65,9 @@ bool Validate(const LcpProblem &p, const KeaOptions &o, const char *function);
  * 0, columns in range and strictly ascending within a row, every diagonal
  * present, finite values) and options; on failure warns and returns false. */
 bool ValidateSparse(const SparseLcpProblem &p, const KeaOptions &o, const char *function);
+/* The same checks for a problem whose CSR structure (rowStart, col) is
+ * known to be one that passed ValidateSparse: only the values and rows. */
+bool ValidateSparseValues(const SparseLcpProblem &p, const KeaOptions &o, const char *function);
 
 /* The BadInput result: zeros everywhere. */
 KeaResult BadInputResult(int n);

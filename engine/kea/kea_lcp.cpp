@@ -100,6 +100,11 @@ bool ValidateSparse(const SparseLcpProblem &p, const KeaOptions &o, const char *
   return ValidateRows(Rows(p), o, function);
 }
 
+bool ValidateSparseValues(const SparseLcpProblem &p, const KeaOptions &o, const char *function) {
+  if (!AllFinite(p.val)) return Reject(function, "A contains NaN or infinity");
+  return ValidateRows(Rows(p), o, function);
+}
+
 bool ValidateRows(const RowView &p, const KeaOptions &o, const char *function) {
   if (p.n < 0) return Reject(function, "negative row count");
   const auto n = static_cast<std::size_t>(p.n);

@@ -105,9 +105,11 @@
  * n rows allocates nothing, except on the sparse-LDL^T path (blocks over 96
  * rows that are not banded), a breakdown (least-squares fallback), an
  * unusually long single-pivoting history, and the warnings.
- * TODO (sparsity): still open: assembling J M^-1 J^T through the platform
- * kernels in Kea itself (Mdt assembles A today), and incremental (rank-one)
- * updates of the factorisation between pivot steps instead of refactorising.
+ * Factor memory (KeaOptions::reuseFactor): the workspace keeps the last
+ * factorisation, and the next problem of the same sparsity is solved with
+ * it as a preconditioner while its free set is unchanged.
+ * TODO (sparsity): still open: rank-one updates of the factorisation
+ * between pivot steps instead of refactorising.
  * ======================================================================== */
 #ifndef KARMA_KEA_LCP_H
 #define KARMA_KEA_LCP_H
@@ -166,6 +168,17 @@ struct KeaOptions {
    * envelopeRows; < 0: always the sparse LDL^T. The answer is the same up to
    * rounding; only cost and allocation differ (the sparse path allocates). */
   int envelopeRows = 0;
+  /* KeaSolveSparse with a workspace, active set: keep the factorisation in
+   * the workspace after the solve, and start from it when the next problem
+   * has the same sparsity (rowStart, col) and epsilon. While the free set
+   * is the one it was made for, the free block is then solved by conjugate
+   * gradients preconditioned with that stale factor, to a residual far
+   * below the solved threshold, and refactorised only if that does not
+   * converge within a few iterations (kea_sparse_backend.h). For a caller
+   * that solves the same system, slightly changed, step after step (a
+   * resting stack): most steps then need no factorisation. The answer
+   * meets the same contract; only rounding differs from a fresh factor. */
+  bool reuseFactor = false;
 };
 
 struct KeaResult {
@@ -180,6 +193,10 @@ struct KeaResult {
    * the first consistent free set already met its own friction bounds). */
   int factorizations = 0;
   int frictionRounds = 0;
+  /* Solves made with a stale factor (KeaOptions::reuseFactor) and their
+   * conjugate-gradient iterations. */
+  int staleSolves = 0;
+  int staleIterations = 0;
 };
 
 /* The same problem with A in compressed sparse rows: both triangles stored,

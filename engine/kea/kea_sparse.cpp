@@ -46,6 +46,7 @@ struct KeaWorkspace {
   detail::ActiveSetScratch activeSet;
   detail::SparseBackend backend;
   detail::PgsScratch pgs;
+  KeaResult retry; /* the cold retry of a cycling warm start (RetryCold) */
 };
 
 namespace {
@@ -64,6 +65,7 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   r.w.assign(n, MeReal(0));
   r.factorizations = 0;
   r.frictionRounds = 0;
+  r.staleSolves = r.staleIterations = 0;
 
   detail::ComputeBounds(rows, r.lambda, s.lo, s.hi);
   for (std::size_t i = 0; i < n; ++i) r.lambda[i] = std::clamp(r.lambda[i], s.lo[i], s.hi[i]);
@@ -111,6 +113,56 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   }
 }
 
+/* A solve with a stale factor (KeaOptions::reuseFactor) leaves residual
+ * components at most the solved threshold divided by this: its inexactness
+ * stays far below what decides "Solved". */
+constexpr MeReal kStaleTargetDivisor = 64;
+
+/* A warm-started active-set solve that ended in a cycle is repeated once
+ * from a cold start (lambda = 0 clamped into the bounds), with what is left
+ * of a caller's iteration cap (the default cap afresh); the better of the
+ * two answers is returned, and the counts are summed. A warm start near a
+ * solution of a changed problem can steer the pivoting into a cycle that
+ * the cold start's path avoids. */
+void RetryCold(const SparseLcpProblem &p, const KeaOptions &o, MeReal target, KeaWorkspace &workspace,
+               KeaResult &result) {
+  KeaOptions cold = o;
+  cold.warmStart = {};
+  if (o.maxIterations > 0) {
+    cold.maxIterations = o.maxIterations - result.iterations;
+    if (cold.maxIterations <= 0) {
+      detail::WarnCycle(o, "KeaSolveSparse", result.iterations, result.residual);
+      return;
+    }
+  }
+  cold.warnings = false; /* the final status is reported below */
+  KeaResult &retry = workspace.retry;
+  workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.reuseFactor, target);
+  detail::ActiveSetCore(detail::Rows(p), cold, "KeaSolveSparse", workspace.backend, workspace.activeSet, retry);
+  retry.iterations += result.iterations;
+  retry.frictionRounds += result.frictionRounds;
+  retry.factorizations = result.factorizations + workspace.backend.factorizations();
+  retry.staleSolves = result.staleSolves + workspace.backend.staleSolves();
+  retry.staleIterations = result.staleIterations + workspace.backend.staleIterations();
+  if (retry.status == KeaStatus::Solved || retry.residual <= result.residual) {
+    std::swap(result.lambda, retry.lambda);
+    std::swap(result.w, retry.w);
+    result.status = retry.status;
+    result.residual = retry.residual;
+  } else {
+    result.status = KeaStatus::CycleDetected; /* the warm start's answer stays */
+  }
+  result.iterations = retry.iterations;
+  result.frictionRounds = retry.frictionRounds;
+  result.factorizations = retry.factorizations;
+  result.staleSolves = retry.staleSolves;
+  result.staleIterations = retry.staleIterations;
+  if (result.status == KeaStatus::CycleDetected)
+    detail::WarnCycle(o, "KeaSolveSparse", result.iterations, result.residual);
+  else if (result.status == KeaStatus::IterationLimit)
+    detail::WarnIterationLimit(o, "KeaSolveSparse", result.iterations, result.residual);
+}
+
 /* The BadInput answer in `result`'s own vectors. */
 void BadInput(int n, KeaResult &result) {
   const auto size = static_cast<std::size_t>(std::max(n, 0));
@@ -118,6 +170,7 @@ void BadInput(int n, KeaResult &result) {
   result.w.assign(size, MeReal(0));
   result.status = KeaStatus::BadInput;
   result.iterations = result.factorizations = result.frictionRounds = 0;
+  result.staleSolves = result.staleIterations = 0;
   result.residual = 0;
 }
 
@@ -128,7 +181,10 @@ void KeaWorkspaceDestroy(KeaWorkspace *workspace) { delete workspace; }
 
 void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &workspace, KeaResult &result) {
   static const char *const kName = "KeaSolveSparse";
-  if (!detail::ValidateSparse(p, o, kName)) {
+  /* A problem with the kept factor's structure had it validated before. */
+  const bool knownStructure = o.reuseFactor && o.method == KeaMethod::ActiveSet &&
+                              workspace.backend.keptStructure(p);
+  if (knownStructure ? !detail::ValidateSparseValues(p, o, kName) : !detail::ValidateSparse(p, o, kName)) {
     BadInput(p.n, result);
     return;
   }
@@ -136,9 +192,19 @@ void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace
     SparsePgs(p, o, kName, workspace.pgs, result);
     return;
   }
-  workspace.backend.reset(p, o.epsilon, o.envelopeRows);
-  detail::ActiveSetCore(detail::Rows(p), o, kName, workspace.backend, workspace.activeSet, result);
+  const detail::RowView rows = detail::Rows(p);
+  const MeReal target = detail::SolvedThreshold(rows, o) / kStaleTargetDivisor;
+  const bool warm = !o.warmStart.empty();
+  KeaOptions first = o;
+  first.warnings = o.warnings && !warm; /* a cycle here is retried, not reported */
+  workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.reuseFactor, target);
+  detail::ActiveSetCore(rows, first, kName, workspace.backend, workspace.activeSet, result);
   result.factorizations = workspace.backend.factorizations();
+  result.staleSolves = workspace.backend.staleSolves();
+  result.staleIterations = workspace.backend.staleIterations();
+  if (warm && result.status == KeaStatus::CycleDetected) RetryCold(p, o, target, workspace, result);
+  else if (warm && result.status == KeaStatus::IterationLimit)
+    detail::WarnIterationLimit(o, kName, result.iterations, result.residual);
 }
 
 KeaResult KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o) {

@@ -29,7 +29,41 @@ MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<c
   return ComplementarityResidual(Rows(p), lambda, w);
 }
 
-void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows) {
+/* Whether `p` has the sparsity and eps of the problem the kept factor was
+ * made for. */
+bool SparseBackend::sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const {
+  return eps == eps_ && envelopeRows == envelopeRows_ && keptStructure(p);
+}
+
+bool SparseBackend::keptStructure(const SparseLcpProblem &p) const {
+  const auto n = static_cast<std::size_t>(std::max(p.n, 0));
+  return !keptRowStart_.empty() && keptRowStart_.size() == n + 1 && p.rowStart.size() == n + 1 &&
+         std::equal(keptRowStart_.begin(), keptRowStart_.end(), p.rowStart.begin()) &&
+         keptCol_.size() == p.col.size() && p.val.size() == p.col.size() &&
+         std::equal(keptCol_.begin(), keptCol_.end(), p.col.begin());
+}
+
+void SparseBackend::keepSparsity(const SparseLcpProblem &p) {
+  const auto n = static_cast<std::size_t>(p.n);
+  keptRowStart_.assign(p.rowStart.begin(), p.rowStart.begin() + static_cast<std::ptrdiff_t>(n + 1));
+  keptCol_.assign(p.col.begin(), p.col.begin() + p.rowStart[n]);
+}
+
+void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows, bool keepFactor,
+                          MeReal target) {
+  factorizations_ = staleSolves_ = staleIterations_ = 0;
+  target_ = target;
+  const bool usable = factor_ != Factor::None && (factor_ != Factor::Sparse || ldltOk_);
+  if (keepFactor && usable && sameSparsity(p, eps, envelopeRows)) {
+    /* The orderings depend on the sparsity only: they stay too. */
+    p_ = &p;
+    stale_ = true;
+    upperFresh_ = false;
+    return;
+  }
+  stale_ = false;
+  if (keepFactor) keepSparsity(p);
+  else keptRowStart_.clear();
   p_ = &p;
   eps_ = eps;
   const auto n = static_cast<std::size_t>(p.n);
@@ -56,7 +90,6 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   bandOrder_.reserve(n);
   factor_ = Factor::None;
   ldltOk_ = false;
-  factorizations_ = 0;
 }
 
 MeReal SparseBackend::residual(std::span<const MeReal> lambda, std::span<MeReal> w) {
@@ -82,13 +115,22 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
     factorise(set);
     factoredSet_ = naturalRows_;
     ++factorizations_;
+    stale_ = false;
   }
 
-  const std::vector<int> &rows = factor_ == Factor::Envelope ? naturalRows_
-                                 : factor_ == Factor::BandEnvelope ? bandRows_
-                                                                   : orderedRows_;
+  const std::vector<int> &rows = factorOrder();
   buildRhs(rows, set, lambda);
   x_.resize(m);
+  if (stale_) {
+    if (solveStale(rows)) {
+      for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
+      return;
+    }
+    /* Same free set, so the same order: only the values are new. */
+    factorise(set);
+    ++factorizations_;
+    stale_ = false;
+  }
   if (factor_ != Factor::Sparse) {
     envelope_.solve(rhs_, x_);
   } else if (!solveSparse(m)) {
@@ -98,7 +140,106 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
 }
 
+/* The free rows in the kept factor's order. */
+const std::vector<int> &SparseBackend::factorOrder() const {
+  return factor_ == Factor::Envelope ? naturalRows_ : factor_ == Factor::BandEnvelope ? bandRows_ : orderedRows_;
+}
+
+/* y = (A + eps I)_FF x, the free rows in the order `rows`; withScale: also
+ * returns the largest component of |A_FF||x| (the scale of y's rounding). */
+MeReal SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y,
+                                   bool withScale) {
+  /* x scattered to all n rows (zero on the clamped ones): then every stored
+   * entry multiplies without a test. */
+  const SparseLcpProblem &p = *p_;
+  const std::size_t m = rows.size();
+  cgFull_.assign(static_cast<std::size_t>(p.n), MeReal(0));
+  for (std::size_t a = 0; a < m; ++a) cgFull_[U(rows[a])] = x[a];
+  MeReal scale = 0;
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto i = U(rows[a]);
+    MeReal v = eps_ * x[a];
+    if (withScale) {
+      MeReal size = std::fabs(v);
+      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+        const MeReal term = p.val[U(k)] * cgFull_[U(p.col[U(k)])];
+        v += term;
+        size += std::fabs(term);
+      }
+      scale = std::max(scale, size);
+    } else {
+      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) v += p.val[U(k)] * cgFull_[U(p.col[U(k)])];
+    }
+    y[a] = v;
+  }
+  return scale;
+}
+
+/* x_ solving (A + eps I)_FF x = rhs_ with the stale factor as the
+ * preconditioner of conjugate gradients (Saad, "Iterative Methods for
+ * Sparse Linear Systems", alg. 9.1), restarted from the true residual
+ * whenever the recursive one says it is done. Accepted when every
+ * component of the true residual rhs - A_FF x is within target_, or within
+ * the rounding of its own computation (4 eps (|A_FF||x| + |rhs|), what a
+ * direct solve leaves too). False after kMaxRefine iterations without
+ * that: the caller refactorises. */
+bool SparseBackend::solveStale(const std::vector<int> &rows) {
+  const std::size_t m = rows.size();
+  cgR_.resize(m);
+  cgZ_.resize(m);
+  cgD_.resize(m);
+  cgQ_.resize(m);
+  auto largest = [](const std::vector<MeReal> &v) {
+    MeReal big = 0;
+    for (MeReal e : v) big = std::max(big, std::fabs(e));
+    return big;
+  };
+  auto dot = [m](const std::vector<MeReal> &a, const std::vector<MeReal> &b) {
+    MeReal sum = 0;
+    for (std::size_t k = 0; k < m; ++k) sum += a[k] * b[k];
+    return sum;
+  };
+  const MeReal rhsSize = largest(rhs_);
+  MeReal accept = target_;
+  /* The true residual into cgR_; whether it is accepted. */
+  auto converged = [&]() {
+    const MeReal scale = multiplyFree(rows, x_, cgQ_, true) + rhsSize;
+    for (std::size_t a = 0; a < m; ++a) cgR_[a] = rhs_[a] - cgQ_[a];
+    accept = std::max(target_, 4 * ME_REAL_EPSILON * scale);
+    return !(largest(cgR_) > accept);
+  };
+  ++staleSolves_;
+  solveWithFactor(rhs_, x_);
+  int budget = kMaxRefine;
+  while (!converged()) {
+    if (budget == 0 || !std::isfinite(largest(x_))) return false;
+    solveWithFactor(cgR_, cgZ_);
+    cgD_ = cgZ_;
+    MeReal rz = dot(cgR_, cgZ_);
+    while (budget > 0) {
+      --budget;
+      ++staleIterations_;
+      multiplyFree(rows, cgD_, cgQ_, false);
+      const MeReal dq = dot(cgD_, cgQ_);
+      if (!(dq > 0) || !(rz > 0)) return false;
+      const MeReal alpha = rz / dq;
+      for (std::size_t a = 0; a < m; ++a) {
+        x_[a] += alpha * cgD_[a];
+        cgR_[a] -= alpha * cgQ_[a];
+      }
+      if (!(largest(cgR_) > accept)) break;
+      solveWithFactor(cgR_, cgZ_);
+      const MeReal rzNext = dot(cgR_, cgZ_);
+      const MeReal beta = rzNext / rz;
+      rz = rzNext;
+      for (std::size_t a = 0; a < m; ++a) cgD_[a] = cgZ_[a] + beta * cgD_[a];
+    }
+  }
+  return true;
+}
+
 std::span<const int> SparseBackend::factorRows() const {
+  if (stale_) return {}; /* its solves are not exact: no coupled friction step on it */
   switch (factor_) {
     case Factor::Envelope: return naturalRows_;
     case Factor::BandEnvelope: return bandRows_;
@@ -372,6 +513,8 @@ void SparseBackend::gatherUpper(std::size_t m, MeReal shift) {
 void SparseBackend::factoriseSparse(const std::vector<unsigned char> &set) {
   const std::size_t m = naturalRows_.size();
   if (order_.empty()) computeOrder();
+  else if (!upperFresh_) buildOrderedUpper();
+  upperFresh_ = true;
   orderedRows_.clear();
   for (int i : order_)
     if (set[U(i)] == Free) orderedRows_.push_back(i);

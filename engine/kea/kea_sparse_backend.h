@@ -21,7 +21,22 @@
  *
  * Either factorisation is kept while the free set does not change (the
  * friction fixed point re-solving with new bounds, a warm start confirming
- * its set): only the right-hand side is rebuilt and solved again. A
+ * its set): only the right-hand side is rebuilt and solved again.
+ *
+ * Factor memory (reset with keepFactor, KeaOptions::reuseFactor). A
+ * factorisation may also outlive its problem: when the next problem has
+ * the same sparsity (n, rowStart, col) and eps, the old factor L D L^T of
+ * the old block B stays as a *stale* factor. While the free set is the one
+ * it was made for, the new block A_FF is solved by conjugate gradients
+ * preconditioned with it (solveStale): for a scene at rest A_FF - B is
+ * tiny, so B^-1 A_FF is close to I and a handful of iterations, each one
+ * product with A_FF (O(nnz)) and one solve with the factor (O(envelope)),
+ * replace a factorisation (O(envelope * band)). The iteration stops when
+ * every component of A_FF x - rhs is within the target the caller gives
+ * (far below the solved threshold) or within the rounding of its own
+ * computation; after kMaxRefine iterations without that the block is
+ * refactorised and solved directly. A stale
+ * factor never decides the answer's accuracy, only its cost. A
  * factorisation that breaks down (not positive definite, e.g. eps = 0 with
  * redundant rows) falls back to a dense least-squares solve for blocks up
  * to kDenseFallback rows, and to a slightly shifted sparse LDL^T beyond. */
@@ -58,10 +73,16 @@ class SparseBackend {
    * size. */
   static constexpr std::size_t kDenseFallback = 600;
 
+  /* Conjugate-gradient iterations with a stale factor before refactorising. */
+  static constexpr int kMaxRefine = 6;
+
   /* Starts a solve of `p` (which must outlive it) with eps on the diagonal;
    * forgets the previous problem's ordering and factorisation, keeps the
-   * arrays. */
-  void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0);
+   * arrays. With keepFactor, a factorisation of a previous problem of the
+   * same sparsity and eps is kept as a stale factor (see above), and
+   * `target` is the largest residual component a solve with it may leave. */
+  void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0, bool keepFactor = false,
+             MeReal target = 0);
 
   /* See kea_activeset_core.h. */
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w);
@@ -73,14 +94,26 @@ class SparseBackend {
   void solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x);
   void column(int row, std::span<const int> position, std::span<MeReal> out) const;
 
+  /* Whether p's rowStart and col are those of the problem the kept factor
+   * was made for (only a problem that passed validation is kept). */
+  bool keptStructure(const SparseLcpProblem &p) const;
+
   /* Factorisations since reset(). */
   int factorizations() const { return factorizations_; }
+  /* Solves with a stale factor since reset(), and their iterations. */
+  int staleSolves() const { return staleSolves_; }
+  int staleIterations() const { return staleIterations_; }
 
  private:
   enum class Factor { None, Envelope, BandEnvelope, Sparse };
 
   void buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set,
                 const std::vector<MeReal> &lambda);
+  bool sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const;
+  void keepSparsity(const SparseLcpProblem &p);
+  const std::vector<int> &factorOrder() const;
+  MeReal multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y, bool withScale);
+  bool solveStale(const std::vector<int> &rows);
   void factorise(const std::vector<unsigned char> &set);
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   void fillEnvelope(const std::vector<int> &rows);
@@ -128,6 +161,14 @@ class SparseBackend {
   Factor factor_ = Factor::None;
   bool ldltOk_ = false;
   int factorizations_ = 0;
+  /* Factor memory: the sparsity the factor was made for, whether it is
+   * stale (made for an earlier problem), whether upVal_ holds this
+   * problem's values, the target residual, the CG vectors and counts. */
+  std::vector<int> keptRowStart_, keptCol_;
+  bool stale_ = false, upperFresh_ = false;
+  MeReal target_ = 0;
+  std::vector<MeReal> cgR_, cgZ_, cgD_, cgQ_, cgFull_;
+  int staleSolves_ = 0, staleIterations_ = 0;
 };
 
 }  // namespace karma::kea::detail

@@ -31,17 +31,18 @@ void MatchByFeature(const McdContact *cc, int n, MdtContactID *old, int oldCount
     }
 }
 
-// Pass 2 of the rule: the nearest old contact within reach, where one of the
-// two has no identity.
+// Passes 2 and 3 of the rule: the nearest old contact within reach, where
+// one of the two has no identity (pass 2) or whatever their identities
+// (pass 3, `renamed`).
 void MatchByPosition(const McdContact *cc, int n, MdtContactID *old, int oldCount, MeReal sign,
-                     MeReal reach, int *match, bool *taken) {
+                     MeReal reach, bool renamed, int *match, bool *taken) {
     for (int i = 0; i < n; ++i) {
         if (match[i] != kNone) continue;
         int best = kNone;
         MeReal bestD2 = reach * reach;
         for (int j = 0; j < oldCount; ++j) {
             if (taken[j]) continue;
-            if (cc[i].feature != 0 && MdtContactGetFeature(old[j]) != 0) continue;
+            if (!renamed && cc[i].feature != 0 && MdtContactGetFeature(old[j]) != 0) continue;
             MeVector3 p, nrm, d;
             MdtContactGetPosition(old[j], p);
             MdtContactGetNormal(old[j], nrm);
@@ -92,7 +93,8 @@ MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeRe
         }
     }
     MatchByFeature(cc, n, old, oldCount, match, taken);
-    MatchByPosition(cc, n, old, oldCount, sign, matchDistance, match, taken);
+    MatchByPosition(cc, n, old, oldCount, sign, matchDistance, false, match, taken);
+    MatchByPosition(cc, n, old, oldCount, sign, matchDistance * kRenameFraction, true, match, taken);
 
     // Unmatched old contacts go first, so the group holds only the kept ones
     // (in their old order) before the new ones are appended.

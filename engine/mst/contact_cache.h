@@ -17,8 +17,16 @@
 //      identity (feature 0: contacts whose shapes cannot name their
 //      features), provided they are closer than kMatchDistance (times the
 //      framework's length scale) and their normals differ by less than
-//      kMatchAngle. Two nonzero, different identities never match.
-//   3. A matched old contact takes the new contact's position, normal,
+//      the angle of kMatchCosine.
+//   3. Renamed. A new contact still unmatched takes the nearest old contact
+//      still unmatched within kRenameFraction * kMatchDistance (and within
+//      the angle of kMatchCosine), whatever their identities: the same point named
+//      through another feature. Where two aligned boxes' corners coincide,
+//      rounding decides from step to step which box's vertex names the
+//      corner; without this pass the contact would be re-made, losing its
+//      impulses and its place. Two different identities farther apart
+//      never match.
+//   4. A matched old contact takes the new contact's position, normal,
 //      penetration, feature and the material's parameters, and keeps its
 //      place in the group and its impulses. An old contact left unmatched
 //      is destroyed. A new contact left unmatched becomes a new MdtContact,
@@ -36,6 +44,9 @@ namespace karma::mst {
 // Farthest two contacts may be apart to match by position, in units of the
 // framework's length scale.
 inline constexpr MeReal kMatchDistance = (MeReal)0.05;
+// Fraction of kMatchDistance within which contacts of different identities
+// are the same point renamed (pass 3).
+inline constexpr MeReal kRenameFraction = (MeReal)0.04;
 // Cosine of the largest angle between two normals that may match.
 inline constexpr MeReal kMatchCosine = (MeReal)0.9;
 

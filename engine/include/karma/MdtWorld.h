@@ -78,6 +78,11 @@ typedef struct MdtWorldStepStats {
     int keaIterations;    /* Kea iterations summed over partitions */
     int keaUnsolved;      /* partitions Kea did not solve to tolerance */
     MeReal keaResidual;   /* largest Kea residual (impulse units) */
+    int keaSolved;        /* partitions solved to tolerance */
+    int keaFactorizations;/* factorisations of a free block (exact solver) */
+    int keaStaleSolves;   /* linear solves preconditioned by last step's factor */
+    int keaFrictionRounds;/* friction fixed-point rounds beyond the first */
+    int keaCycles;        /* partitions stopped by a detected cycle */
 } MdtWorldStepStats;
 
 /* The world's private state (body pool, step order, counters). */

@@ -30,6 +30,7 @@ void fillBodies(StepScratch &s, const Partition &part, BodySpaceProblem &p) {
       for (int c = 0; c < 3; ++c) invInertia[(size_t)(i * 9 + r * 3 + c)] = b->invInertiaWorld[r][c];
   }
   p.bodyCount = part.bodyCount;
+  p.identity = part.bodyCount > 0 ? reinterpret_cast<std::uintptr_t>(s.partBodies[(size_t)part.bodyStart]) : 0;
   p.invMass = invMass;
   p.invInertia = invInertia;
 }

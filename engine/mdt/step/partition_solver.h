@@ -26,7 +26,11 @@ struct SolverSettings {
 struct SolveReport {
   int iterations = 0;
   MeReal residual = 0;
+  int factorizations = 0;  // exact solver: factorisations of a free block
+  int frictionRounds = 0;  // exact solver: friction fixed-point rounds beyond the first
+  int staleSolves = 0;     // exact solver: linear solves with last step's factor
   bool solved = true;
+  bool cycle = false;      // stopped by a detected cycle
   bool badInput = false;
 };
 

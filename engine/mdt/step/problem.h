@@ -17,6 +17,7 @@
 // The arrays are spans into the step arena, valid during the solve.
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "MePrecision.h"
@@ -24,6 +25,11 @@
 namespace karma::mdt {
 
 struct BodySpaceProblem {
+  // Names the partition from one step to the next (its first body's
+  // address; 0 for none), so that a solver may keep memory per partition
+  // (solver_kea.cpp keeps a factorisation). Only a hint: two steps'
+  // partitions with the same identity need not have the same rows.
+  std::uintptr_t identity = 0;
   int bodyCount = 0;
   int rowCount = 0;
   // Per body.

@@ -15,7 +15,12 @@ std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpace
   settings.tolerance = params.keaTolerance;
   const SolveReport report = solver->solve(problem, settings, s.arena, lambda);
   s.stats.keaIterations += report.iterations;
-  if (!report.solved) ++s.stats.keaUnsolved;
+  s.stats.keaFactorizations += report.factorizations;
+  s.stats.keaFrictionRounds += report.frictionRounds;
+  s.stats.keaStaleSolves += report.staleSolves;
+  if (report.solved) ++s.stats.keaSolved;
+  else ++s.stats.keaUnsolved;
+  if (report.cycle) ++s.stats.keaCycles;
   if (report.residual > s.stats.keaResidual) s.stats.keaResidual = report.residual;
   return lambda;
 }

@@ -6,9 +6,10 @@
 //     A_ij += J_i,b . (M_b^-1 J_j,b^T)
 // (the platform kernels compute M^-1 J^T per row and side, and each share of
 // an entry). Per row, the columns are found by walking the rows of its (at
-// most two) bodies; a row's entries are summed over both shared bodies and
-// stored in ascending column order, diagonal always present.
+// most two) bodies and stored in ascending order, diagonal always present;
+// the lower triangle is computed and mirrored, so A is exactly symmetric.
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 
 #include "kea_lcp.h"
@@ -64,78 +65,167 @@ std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
   return mj;
 }
 
-// `entry` is one body's share of an entry (the platform's rowPairEntry).
-// Row i's columns are the union of its bodies' row lists, each ascending,
-// so a merge gives them in order; an entry shared through both bodies is
-// (0 + share through body 0) + share through body 1, and the diagonal then
-// gets the softness.
+// The columns of every row: row i's are the union of its bodies' row lists,
+// each ascending, so a merge gives them in order. Fills a.rowStart and
+// a.col (room for `bound` entries) and diagonal[i], the index of (i, i).
+void layoutColumns(const BodySpaceProblem &p, std::span<const int> bodyRowStart, std::span<const int> bodyRows,
+                   Csr &a, std::span<int> diagonal) {
+  constexpr int kEnd = std::numeric_limits<int>::max();
+  int nnz = 0;
+  a.rowStart[0] = 0;
+  for (int i = 0; i < p.rowCount; ++i) {
+    int at[2], end[2];
+    for (int side = 0; side < 2; ++side) {
+      const int b = side == 0 ? p.body0[(size_t)i] : p.body1[(size_t)i];
+      at[side] = b >= 0 ? bodyRowStart[(size_t)b] : 0;
+      end[side] = b >= 0 ? bodyRowStart[(size_t)b + 1] : 0;
+    }
+    diagonal[(size_t)i] = -1;
+    int previous = -1;
+    while (at[0] < end[0] || at[1] < end[1]) {
+      const int j0 = at[0] < end[0] ? bodyRows[(size_t)at[0]] : kEnd;
+      const int j1 = at[1] < end[1] ? bodyRows[(size_t)at[1]] : kEnd;
+      const int j = std::min(j0, j1);
+      at[0] += j0 == j;
+      at[1] += j1 == j;
+      if (j == previous) continue;  // a row on both bodies of row i
+      previous = j;
+      if (j == i) diagonal[(size_t)i] = nnz;
+      a.col[(size_t)nnz++] = j;
+    }
+    if (diagonal[(size_t)i] < 0) {  // a row with no enabled body (cannot happen) keeps its diagonal
+      diagonal[(size_t)i] = nnz;
+      a.col[(size_t)nnz++] = i;
+    }
+    a.rowStart[(size_t)i + 1] = nnz;
+  }
+}
+
+// A's values. Entry (i, j) is summed over the bodies the two rows share,
+//     A_ij = sum_b J_i,b . (M_b^-1 J_j,b^T)   (+ softness_i when j = i),
+// body 0 of row i first; `entry` is one body's share (the platform's
+// rowPairEntry). Only j <= i is computed: A is symmetric, and (i, j) is
+// copied to (j, i). Rows are visited in ascending order, so the entries
+// above row j's diagonal are reached in ascending column order: next[j]
+// walks them.
 template <class Entry>
-Csr assemble(const BodySpaceProblem &p, StepArena &arena, Entry entry) {
+void fillValues(const BodySpaceProblem &p, std::span<const MeReal> mj, std::span<const int> diagonal,
+                std::span<int> next, Csr &a, Entry entry) {
+  for (int i = 0; i < p.rowCount; ++i) next[(size_t)i] = diagonal[(size_t)i] + 1;
+  for (int i = 0; i < p.rowCount; ++i) {
+    const MeReal *Ji = &p.J[(size_t)i * 12];
+    const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
+    for (int k = a.rowStart[(size_t)i]; k <= diagonal[(size_t)i]; ++k) {
+      const int j = a.col[(size_t)k];
+      MeReal v = 0;
+      for (int side = 0; side < 2; ++side) {
+        const int bi = bodies[side];
+        if (bi < 0) continue;
+        const int sideJ = p.body0[(size_t)j] == bi ? 0 : p.body1[(size_t)j] == bi ? 1 : -1;
+        if (sideJ < 0) continue;
+        const MeReal *mjj = &mj[(size_t)j * 12 + (size_t)(sideJ * 6)];
+        v += entry(Ji + side * 6, Ji + side * 6 + 3, mjj, mjj + 3);
+      }
+      if (j == i) {
+        a.val[(size_t)k] = v + p.softness[(size_t)i];
+      } else {
+        a.val[(size_t)k] = v;
+        a.val[(size_t)next[(size_t)j]++] = v;
+      }
+    }
+  }
+}
+
+// What the solver keeps of one partition from step to step: the Kea
+// workspace (with its factorisation) and A's sparsity, which depends only
+// on which bodies the rows act on (body0, body1: kept to check it).
+struct PartitionMemory {
+  std::uintptr_t identity = 0;
+  std::uint64_t lastUse = 0;
+  kea::KeaWorkspace *workspace = nullptr;
+  std::vector<int> body0, body1, rowStart, col, diagonal;
+
+  bool sameBodies(const BodySpaceProblem &p) const {
+    return body0.size() == p.body0.size() && std::equal(body0.begin(), body0.end(), p.body0.begin()) &&
+           std::equal(body1.begin(), body1.end(), p.body1.begin());
+  }
+};
+
+// A's sparsity in `memory`, computed when the rows act on other bodies than
+// last step's (layoutColumns), else kept.
+void updateSparsity(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory) {
+  if (memory.sameBodies(p)) return;
   const int m = p.rowCount;
   std::span<int> bodyRowStart, bodyRows;
   rowsByBody(p, arena, bodyRowStart, bodyRows);
-  std::span<MeReal> mj = minvJt(p, arena);
   // Entries of row i: at most the rows of its two bodies.
   size_t bound = 0;
   for (int i = 0; i < m; ++i)
     for (int b : {p.body0[(size_t)i], p.body1[(size_t)i]})
       if (b >= 0) bound += (size_t)(bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b]);
   bound += (size_t)m;  // a row with no body keeps its diagonal
-  Csr a;
-  a.rowStart = arena.take<int>((size_t)m + 1);
-  a.col = arena.take<int>(bound);
-  a.val = arena.take<MeReal>(bound);
-  int nnz = 0;
-  a.rowStart[0] = 0;
-  constexpr int kEnd = std::numeric_limits<int>::max();
-  for (int i = 0; i < m; ++i) {
-    const MeReal *Ji = &p.J[(size_t)i * 12];
-    const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
-    int at[2], end[2];
-    for (int side = 0; side < 2; ++side) {
-      at[side] = bodies[side] >= 0 ? bodyRowStart[(size_t)bodies[side]] : 0;
-      end[side] = bodies[side] >= 0 ? bodyRowStart[(size_t)bodies[side] + 1] : 0;
-    }
-    // Body bi's share of entry (i, j): row j's M^-1 J^T half for bi.
-    auto share = [&](int side, int j) {
-      const int bi = bodies[side];
-      const int sideJ = p.body0[(size_t)j] == bi ? 0 : 1;
-      const MeReal *mjj = &mj[(size_t)j * 12 + (size_t)(sideJ * 6)];
-      return entry(Ji + side * 6, Ji + side * 6 + 3, mjj, mjj + 3);
-    };
-    bool diagonal = false;
-    while (at[0] < end[0] || at[1] < end[1]) {
-      const int j0 = at[0] < end[0] ? bodyRows[(size_t)at[0]] : kEnd;
-      const int j1 = at[1] < end[1] ? bodyRows[(size_t)at[1]] : kEnd;
-      const int j = std::min(j0, j1);
-      MeReal v = 0;
-      for (int side = 0; side < 2; ++side)
-        while (at[side] < end[side] && bodyRows[(size_t)at[side]] == j) {
-          v += share(side, j);
-          ++at[side];
-        }
-      if (j == i) {
-        v += p.softness[(size_t)i];
-        diagonal = true;
-      }
-      a.col[(size_t)nnz] = j;
-      a.val[(size_t)nnz++] = v;
-    }
-    if (!diagonal) {  // a row with no enabled body (cannot happen) keeps its diagonal
-      a.col[(size_t)nnz] = i;
-      a.val[(size_t)nnz++] = 0 + p.softness[(size_t)i];
-    }
-    a.rowStart[(size_t)i + 1] = nnz;
-  }
-  a.col = a.col.first((size_t)nnz);
-  a.val = a.val.first((size_t)nnz);
+  memory.rowStart.resize((size_t)m + 1);
+  memory.col.resize(bound);
+  memory.diagonal.resize((size_t)m);
+  Csr a{memory.rowStart, memory.col, {}};
+  layoutColumns(p, bodyRowStart, bodyRows, a, memory.diagonal);
+  memory.col.resize((size_t)memory.rowStart[(size_t)m]);
+  memory.body0.assign(p.body0.begin(), p.body0.end());
+  memory.body1.assign(p.body1.begin(), p.body1.end());
+}
+
+template <class Entry>
+Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory, Entry entry) {
+  updateSparsity(p, arena, memory);
+  Csr a{memory.rowStart, memory.col, arena.take<MeReal>(memory.col.size())};
+  std::span<int> next = arena.take<int>((size_t)p.rowCount);
+  fillValues(p, minvJt(p, arena), memory.diagonal, next, a, entry);
   return a;
 }
 
+// The partitions' memories, found by partition identity (problem.h). At
+// most kMaxPartitions are kept; a new identity beyond that takes the one
+// used longest ago. A memory given to another partition only costs work
+// (the sparsity is checked here, the factor's in Kea), never accuracy.
+class PartitionMemories {
+ public:
+  static constexpr std::size_t kMaxPartitions = 32;
+  PartitionMemories() { slots_.reserve(kMaxPartitions); }
+  ~PartitionMemories() {
+    for (PartitionMemory &slot : slots_) kea::KeaWorkspaceDestroy(slot.workspace);
+  }
+  PartitionMemories(const PartitionMemories &) = delete;
+  PartitionMemories &operator=(const PartitionMemories &) = delete;
+
+  PartitionMemory &take(std::uintptr_t identity) {
+    ++clock_;
+    PartitionMemory *oldest = nullptr;
+    for (PartitionMemory &slot : slots_) {
+      if (slot.identity == identity) return use(slot);
+      if (!oldest || slot.lastUse < oldest->lastUse) oldest = &slot;
+    }
+    if (slots_.size() < kMaxPartitions) {
+      slots_.emplace_back();
+      slots_.back().identity = identity;
+      slots_.back().workspace = kea::KeaWorkspaceCreate();
+      return use(slots_.back());
+    }
+    oldest->identity = identity;
+    return use(*oldest);
+  }
+
+ private:
+  PartitionMemory &use(PartitionMemory &slot) {
+    slot.lastUse = clock_;
+    return slot;
+  }
+  std::vector<PartitionMemory> slots_;
+  std::uint64_t clock_ = 0;
+};
+
 class KeaSolver final : public PartitionSolver {
  public:
-  KeaSolver() : workspace_(kea::KeaWorkspaceCreate()) {}
-  ~KeaSolver() override { kea::KeaWorkspaceDestroy(workspace_); }
+  KeaSolver() = default;
   KeaSolver(const KeaSolver &) = delete;
   KeaSolver &operator=(const KeaSolver &) = delete;
 
@@ -146,15 +236,16 @@ class KeaSolver final : public PartitionSolver {
     SolveReport report;
     std::fill(lambda.begin(), lambda.end(), MeReal(0));
     if (p.rowCount == 0) return report;
+    PartitionMemory &memory = memories_.take(p.identity);
     // The reference backend's entry inline (the same bits, no indirect call
     // per entry); any other backend through its table.
     const platform::Kernels &kern = platform::ActiveKernels();
     const Csr a = &kern == &platform::ReferenceKernels()
-                      ? assemble(p, arena,
+                      ? assemble(p, arena, memory,
                                  [](const MeReal *jl, const MeReal *ja, const MeReal *ml, const MeReal *ma) {
                                    return platform::reference::RowPairEntry(jl, ja, ml, ma);
                                  })
-                      : assemble(p, arena, kern.rowPairEntry);
+                      : assemble(p, arena, memory, kern.rowPairEntry);
     kea::SparseLcpProblem prob;
     prob.n = p.rowCount;
     prob.rowStart = a.rowStart;
@@ -173,10 +264,15 @@ class KeaSolver final : public PartitionSolver {
     opt.tolerance = settings.tolerance;
     opt.epsilon = 0;  // softness is already on the diagonal
     if (p.anyWarm) opt.warmStart = p.warm;
-    kea::KeaSolveSparse(prob, opt, *workspace_, result_);
+    opt.reuseFactor = true;
+    kea::KeaSolveSparse(prob, opt, *memory.workspace, result_);
     report.iterations = result_.iterations;
     report.residual = result_.residual;
+    report.factorizations = result_.factorizations;
+    report.staleSolves = result_.staleSolves;
+    report.frictionRounds = result_.frictionRounds;
     report.solved = result_.status == kea::KeaStatus::Solved;
+    report.cycle = result_.status == kea::KeaStatus::CycleDetected;
     report.badInput = result_.status == kea::KeaStatus::BadInput;
     if (!report.badInput)
       std::copy(result_.lambda.begin(), result_.lambda.begin() + p.rowCount, lambda.begin());
@@ -184,7 +280,7 @@ class KeaSolver final : public PartitionSolver {
   }
 
  private:
-  kea::KeaWorkspace *workspace_;
+  PartitionMemories memories_;
   kea::KeaResult result_;
 };
 

@@ -1,0 +1,37 @@
+// anchor_scene_trace.cpp: what the solver did at each step of an anchor
+// scene (MdtWorldGetStepStats), one line per step, for reading a scene's
+// cost rather than timing it:
+//   build/bench/bench/anchor_scene_trace stack21 [FIRST [LAST]]
+// prints steps FIRST..LAST-1 (default: the whole run).
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "anchor_scene.h"
+
+int main(int argc, char **argv) {
+  using namespace karma::scenes;
+  const char *name = argc > 1 ? argv[1] : "";
+  std::unique_ptr<AnchorScene> scene = !std::strcmp(name, "car")       ? MakeCar()
+                                       : !std::strcmp(name, "topple")  ? MakeTopple()
+                                       : !std::strcmp(name, "stack21") ? MakeStack21()
+                                       : !std::strcmp(name, "ragdoll") ? MakeRagdoll()
+                                       : !std::strcmp(name, "pile1000") ? MakePile1000()
+                                                                        : nullptr;
+  if (!scene) {
+    std::fprintf(stderr, "usage: %s car|topple|stack21|ragdoll|pile1000 [FIRST [LAST]]\n", argv[0]);
+    return 2;
+  }
+  const int first = argc > 2 ? std::atoi(argv[2]) : 0;
+  const int last = argc > 3 ? std::atoi(argv[3]) : scene->steps();
+  std::printf("step partitions rows solves factorizations stale_solves friction_rounds unsolved cycles residual\n");
+  for (int i = 0; i < last; ++i) {
+    scene->step();
+    if (i < first) continue;
+    MdtWorldStepStats s;
+    MdtWorldGetStepStats(scene->world(), &s);
+    std::printf("%d %d %d %d %d %d %d %d %d %.3g\n", i, s.partitions, s.rows, s.keaIterations,
+                s.keaFactorizations, s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual);
+  }
+  return 0;
+}
