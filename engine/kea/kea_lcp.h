@@ -105,7 +105,7 @@
  * n rows allocates nothing, except on the sparse-LDL^T path (blocks over 96
  * rows that are not banded), a breakdown (least-squares fallback), an
  * unusually long single-pivoting history, and the warnings.
- * Factor memory (KeaOptions::reuseFactor): the workspace keeps the last
+ * Factor memory (KeaOptions::factorMemory): the workspace keeps the last
  * factorisation, and the next problem of the same sparsity is solved with
  * it as a preconditioner while its free set is unchanged.
  * TODO (sparsity): still open: rank-one updates of the factorisation
@@ -140,6 +140,12 @@ enum class KeaMethod {
 
 enum class KeaStatus { Solved, IterationLimit, CycleDetected, BadInput };
 
+/* KeaOptions::factorMemory. WhenCheaper keeps a factor only where the cost
+ * model of kea_sparse_backend.cpp (StaleSolveWorthIt) expects a few
+ * conjugate-gradient iterations to cost less than a factorisation: always
+ * for the sparse LDL^T, for an envelope when it is long and wide. */
+enum class KeaFactorMemory { Off, WhenCheaper, Always };
+
 /* A short name for a status ("Solved", ...), for messages and tests. */
 const char *KeaStatusName(KeaStatus status);
 
@@ -168,17 +174,17 @@ struct KeaOptions {
    * envelopeRows; < 0: always the sparse LDL^T. The answer is the same up to
    * rounding; only cost and allocation differ (the sparse path allocates). */
   int envelopeRows = 0;
-  /* KeaSolveSparse with a workspace, active set: keep the factorisation in
-   * the workspace after the solve, and start from it when the next problem
-   * has the same sparsity (rowStart, col) and epsilon. While the free set
-   * is the one it was made for, the free block is then solved by conjugate
-   * gradients preconditioned with that stale factor, to a residual far
-   * below the solved threshold, and refactorised only if that does not
-   * converge within a few iterations (kea_sparse_backend.h). For a caller
-   * that solves the same system, slightly changed, step after step (a
-   * resting stack): most steps then need no factorisation. The answer
-   * meets the same contract; only rounding differs from a fresh factor. */
-  bool reuseFactor = false;
+  /* KeaSolveSparse with a workspace, active set: whether the workspace
+   * keeps its factorisation after the solve and starts from it when the
+   * next problem has the same sparsity (rowStart, col) and epsilon. While
+   * the free set is the one it was made for, the free block is then solved
+   * by conjugate gradients preconditioned with that stale factor, to a
+   * residual far below the solved threshold, and refactorised only if that
+   * does not converge within a few iterations (kea_sparse_backend.h). For
+   * a caller that solves the same system, slightly changed, step after
+   * step (a resting scene). The answer meets the same contract; only
+   * rounding differs from a fresh factor. */
+  KeaFactorMemory factorMemory = KeaFactorMemory::Off;
 };
 
 struct KeaResult {
@@ -193,7 +199,7 @@ struct KeaResult {
    * the first consistent free set already met its own friction bounds). */
   int factorizations = 0;
   int frictionRounds = 0;
-  /* Solves made with a stale factor (KeaOptions::reuseFactor) and their
+  /* Solves made with a stale factor (KeaOptions::factorMemory) and their
    * conjugate-gradient iterations. */
   int staleSolves = 0;
   int staleIterations = 0;

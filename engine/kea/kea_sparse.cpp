@@ -113,7 +113,7 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   }
 }
 
-/* A solve with a stale factor (KeaOptions::reuseFactor) leaves residual
+/* A solve with a stale factor (KeaOptions::factorMemory) leaves residual
  * components at most the solved threshold divided by this: its inexactness
  * stays far below what decides "Solved". */
 constexpr MeReal kStaleTargetDivisor = 64;
@@ -137,7 +137,7 @@ void RetryCold(const SparseLcpProblem &p, const KeaOptions &o, MeReal target, Ke
   }
   cold.warnings = false; /* the final status is reported below */
   KeaResult &retry = workspace.retry;
-  workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.reuseFactor, target);
+  workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.factorMemory, target);
   detail::ActiveSetCore(detail::Rows(p), cold, "KeaSolveSparse", workspace.backend, workspace.activeSet, retry);
   retry.iterations += result.iterations;
   retry.frictionRounds += result.frictionRounds;
@@ -182,7 +182,7 @@ void KeaWorkspaceDestroy(KeaWorkspace *workspace) { delete workspace; }
 void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &workspace, KeaResult &result) {
   static const char *const kName = "KeaSolveSparse";
   /* A problem with the kept factor's structure had it validated before. */
-  const bool knownStructure = o.reuseFactor && o.method == KeaMethod::ActiveSet &&
+  const bool knownStructure = o.factorMemory != KeaFactorMemory::Off && o.method == KeaMethod::ActiveSet &&
                               workspace.backend.keptStructure(p);
   if (knownStructure ? !detail::ValidateSparseValues(p, o, kName) : !detail::ValidateSparse(p, o, kName)) {
     BadInput(p.n, result);
@@ -197,7 +197,7 @@ void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace
   const bool warm = !o.warmStart.empty();
   KeaOptions first = o;
   first.warnings = o.warnings && !warm; /* a cycle here is retried, not reported */
-  workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.reuseFactor, target);
+  workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.factorMemory, target);
   detail::ActiveSetCore(rows, first, kName, workspace.backend, workspace.activeSet, result);
   result.factorizations = workspace.backend.factorizations();
   result.staleSolves = workspace.backend.staleSolves();

@@ -29,6 +29,26 @@ MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<c
   return ComplementarityResidual(Rows(p), lambda, w);
 }
 
+namespace {
+
+/* Whether solving with a stale envelope factor is expected to cost less
+ * than factorising afresh: the factorisation costs sum_i (i - first_i)^2
+ * multiply-adds, one conjugate-gradient iteration about nnz + 2 * envelope
+ * (a product and two triangular solves), and a stale solve takes about
+ * kStaleSolveIterations of them. A small dense block (a car's 32 rows) is
+ * cheaper to refactorise; a long band (a stack) is not. */
+bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz) {
+  constexpr std::size_t kStaleSolveIterations = 5;
+  std::size_t factorCost = 0;
+  for (int i = 0; i < e.m; ++i) {
+    const auto width = static_cast<std::size_t>(i - e.first[U(i)]);
+    factorCost += width * width;
+  }
+  return factorCost > kStaleSolveIterations * (nnz + 2 * e.size());
+}
+
+}  // namespace
+
 /* Whether `p` has the sparsity and eps of the problem the kept factor was
  * made for. */
 bool SparseBackend::sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const {
@@ -49,12 +69,12 @@ void SparseBackend::keepSparsity(const SparseLcpProblem &p) {
   keptCol_.assign(p.col.begin(), p.col.begin() + p.rowStart[n]);
 }
 
-void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows, bool keepFactor,
+void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory,
                           MeReal target) {
   factorizations_ = staleSolves_ = staleIterations_ = 0;
   target_ = target;
-  const bool usable = factor_ != Factor::None && (factor_ != Factor::Sparse || ldltOk_);
-  if (keepFactor && usable && sameSparsity(p, eps, envelopeRows)) {
+  const bool usable = factor_ != Factor::None && (factor_ != Factor::Sparse || ldltOk_) && staleWorthIt_;
+  if (memory != KeaFactorMemory::Off && usable && sameSparsity(p, eps, envelopeRows)) {
     /* The orderings depend on the sparsity only: they stay too. */
     p_ = &p;
     stale_ = true;
@@ -62,8 +82,8 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
     return;
   }
   stale_ = false;
-  if (keepFactor) keepSparsity(p);
-  else keptRowStart_.clear();
+  memory_ = memory;
+  keptRowStart_.clear(); /* filled when a factor worth keeping is made */
   p_ = &p;
   eps_ = eps;
   const auto n = static_cast<std::size_t>(p.n);
@@ -304,10 +324,20 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
       fillEnvelope(rows);
       envelope_.factor();
       factor_ = useBandOrder_ ? Factor::BandEnvelope : Factor::Envelope;
+      staleWorthIt_ = memory_ == KeaFactorMemory::Always || StaleSolveWorthIt(envelope_, U(p_->rowStart[U(p_->n)]));
+      rememberSparsity();
       return;
     }
   }
   factoriseSparse(set);
+  staleWorthIt_ = true;
+  rememberSparsity();
+}
+
+/* The sparsity of the problem a factor worth keeping was made for (once
+ * per problem). */
+void SparseBackend::rememberSparsity() {
+  if (memory_ != KeaFactorMemory::Off && staleWorthIt_ && keptRowStart_.empty()) keepSparsity(*p_);
 }
 
 /* The order of the envelope path, once per problem. Any order's envelope

@@ -23,7 +23,7 @@
  * friction fixed point re-solving with new bounds, a warm start confirming
  * its set): only the right-hand side is rebuilt and solved again.
  *
- * Factor memory (reset with keepFactor, KeaOptions::reuseFactor). A
+ * Factor memory (reset with KeaOptions::factorMemory). A
  * factorisation may also outlive its problem: when the next problem has
  * the same sparsity (n, rowStart, col) and eps, the old factor L D L^T of
  * the old block B stays as a *stale* factor. While the free set is the one
@@ -35,7 +35,9 @@
  * every component of A_FF x - rhs is within the target the caller gives
  * (far below the solved threshold) or within the rounding of its own
  * computation; after kMaxRefine iterations without that the block is
- * refactorised and solved directly. A stale
+ * refactorised and solved directly. A factor is kept only where this is
+ * expected to pay: always for the sparse LDL^T, for an envelope when its
+ * factorisation costs several iterations (StaleSolveWorthIt). A stale
  * factor never decides the answer's accuracy, only its cost. A
  * factorisation that breaks down (not positive definite, e.g. eps = 0 with
  * redundant rows) falls back to a dense least-squares solve for blocks up
@@ -78,10 +80,11 @@ class SparseBackend {
 
   /* Starts a solve of `p` (which must outlive it) with eps on the diagonal;
    * forgets the previous problem's ordering and factorisation, keeps the
-   * arrays. With keepFactor, a factorisation of a previous problem of the
+   * arrays. With a factor memory, a factorisation of a previous problem of the
    * same sparsity and eps is kept as a stale factor (see above), and
    * `target` is the largest residual component a solve with it may leave. */
-  void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0, bool keepFactor = false,
+  void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0,
+             KeaFactorMemory memory = KeaFactorMemory::Off,
              MeReal target = 0);
 
   /* See kea_activeset_core.h. */
@@ -111,6 +114,7 @@ class SparseBackend {
                 const std::vector<MeReal> &lambda);
   bool sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const;
   void keepSparsity(const SparseLcpProblem &p);
+  void rememberSparsity();
   const std::vector<int> &factorOrder() const;
   MeReal multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y, bool withScale);
   bool solveStale(const std::vector<int> &rows);
@@ -166,6 +170,9 @@ class SparseBackend {
    * problem's values, the target residual, the CG vectors and counts. */
   std::vector<int> keptRowStart_, keptCol_;
   bool stale_ = false, upperFresh_ = false;
+  /* Whether the kept factor is worth keeping (StaleSolveWorthIt). */
+  bool staleWorthIt_ = false;
+  KeaFactorMemory memory_ = KeaFactorMemory::Off; /* reset's */
   MeReal target_ = 0;
   std::vector<MeReal> cgR_, cgZ_, cgD_, cgQ_, cgFull_;
   int staleSolves_ = 0, staleIterations_ = 0;

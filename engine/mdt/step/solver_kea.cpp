@@ -264,7 +264,7 @@ class KeaSolver final : public PartitionSolver {
     opt.tolerance = settings.tolerance;
     opt.epsilon = 0;  // softness is already on the diagonal
     if (p.anyWarm) opt.warmStart = p.warm;
-    opt.reuseFactor = true;
+    opt.factorMemory = kea::KeaFactorMemory::WhenCheaper;
     kea::KeaSolveSparse(prob, opt, *memory.workspace, result_);
     report.iterations = result_.iterations;
     report.residual = result_.residual;

@@ -1,4 +1,4 @@
-// Factor memory (KeaOptions::reuseFactor, kea_sparse_backend.h): a
+// Factor memory (KeaOptions::factorMemory, kea_sparse_backend.h): a
 // workspace keeps its factorisation, and the next problem of the same
 // sparsity is solved with it as the preconditioner of conjugate gradients
 // while the free set is unchanged. On problems with the step's structure
@@ -6,8 +6,8 @@
 // the next of a resting scene) is solved without a factorisation and agrees
 // with a fresh solve to the tolerance; a changed matrix far from the kept
 // factor falls back to a factorisation and still agrees; another sparsity
-// or another epsilon never uses the kept factor; without reuseFactor
-// nothing is kept.
+// or another epsilon never uses the kept factor; without a factor memory
+// nothing is kept; WhenCheaper keeps a factor only where it pays.
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
 
@@ -77,12 +77,14 @@ ContactProblem Perturbed(const ContactProblem &p, double size, unsigned seed) {
   return q;
 }
 
-// Solves `first` then `next` in one workspace with reuseFactor, `next`
+// Solves `first` then `next` in one workspace with the factor memory
+// `memory` (Always unless said), `next`
 // warm-started from the first answer when `warm`; returns the second result.
-KeaResult SolveAfter(const ContactProblem &first, const ContactProblem &next, bool warm = true) {
+KeaResult SolveAfter(const ContactProblem &first, const ContactProblem &next, bool warm = true,
+                     KeaFactorMemory memory = KeaFactorMemory::Always) {
   Workspace workspace(KeaWorkspaceCreate());
   KeaOptions o;
-  o.reuseFactor = true;
+  o.factorMemory = memory;
   KeaResult r1, r2;
   KeaSolveSparse(first.sparse(), o, *workspace, r1);
   EXPECT_EQ(r1.status, KeaStatus::Solved);
@@ -150,7 +152,7 @@ TEST(KeaFactorMemory, AnotherSparsityOrEpsilonNeverUsesTheKeptFactor) {
 
   Workspace workspace(KeaWorkspaceCreate());
   KeaOptions o;
-  o.reuseFactor = true;
+  o.factorMemory = KeaFactorMemory::Always;
   KeaSolveSparse(stack.sparse(), o, *workspace, r);
   o.epsilon = (MeReal)1e-3;
   KeaSolveSparse(stack.sparse(), o, *workspace, r);
@@ -179,7 +181,7 @@ TEST(KeaFactorMemory, BadValuesWithAKeptStructureAreStillRejected) {
   bad.val[3] = std::numeric_limits<MeReal>::quiet_NaN();
   Workspace workspace(KeaWorkspaceCreate());
   KeaOptions o;
-  o.reuseFactor = true;
+  o.factorMemory = KeaFactorMemory::Always;
   o.warnings = false;
   KeaResult r;
   KeaSolveSparse(stack.sparse(), o, *workspace, r);
@@ -204,4 +206,30 @@ TEST(KeaWarmStart, ACyclingWarmStartIsRetriedCold) {
   EXPECT_EQ(w.status, KeaStatus::Solved);
   EXPECT_GT(w.iterations, cold.iterations);  // the cycling attempt counts too
   ExpectAgree(w, cold, "stack6 scaled 30%");
+}
+
+// WhenCheaper: a car's small dense block is cheaper to refactorise than to
+// solve with a stale factor, so nothing is kept; a sparse LDL^T always is
+// kept (here a 20-box stack forced onto that path).
+TEST(KeaFactorMemory, WhenCheaperKeepsOnlyFactorsWorthKeeping) {
+  const ContactProblem car = kea_test::Car(1);
+  const KeaResult small = SolveAfter(car, Perturbed(car, 1e-5, 7), true, KeaFactorMemory::WhenCheaper);
+  EXPECT_EQ(small.status, KeaStatus::Solved);
+  EXPECT_EQ(small.staleSolves, 0);
+  EXPECT_GE(small.factorizations, 1);
+
+  const ContactProblem stack = kea_test::Stack(20, 1);
+  Workspace workspace(KeaWorkspaceCreate());
+  KeaOptions o;
+  o.factorMemory = KeaFactorMemory::WhenCheaper;
+  o.envelopeRows = -1;  // the sparse LDL^T
+  KeaResult r;
+  KeaSolveSparse(stack.sparse(), o, *workspace, r);
+  ASSERT_EQ(r.status, KeaStatus::Solved);
+  const std::vector<MeReal> warm = r.lambda;
+  o.warmStart = warm;
+  KeaSolveSparse(stack.sparse(), o, *workspace, r);  // the same problem: its own solution
+  EXPECT_EQ(r.status, KeaStatus::Solved);
+  EXPECT_EQ(r.staleSolves, 1);
+  EXPECT_EQ(r.factorizations, 0);
 }
