@@ -46,7 +46,7 @@ std::string TempPath(const char *name) { return ::testing::TempDir() + name; }
 TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
   const std::vector<std::string> expected = {
       "scene", "precision", "engine", "setting", "solver", "epsilon", "gamma", "h", "tolerance", "cap", "repeats",
-      "us_per_step", "us_min", "us_max", "steps", "drift_m", "joint_error_m", "penetration_m", "energy_error_J",
+      "us_per_step", "us_min", "us_max", "us_per_frame", "steps", "drift_m", "joint_error_m", "penetration_m", "energy_error_J",
       "momentum_error_Ns", "residual", "unsolved_steps", "max_speed_mps", "scene_error", "held", "front_drift",
       "front_scene", "detail"};
   EXPECT_EQ(CsvColumns(), expected);
@@ -66,8 +66,9 @@ TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
   ASSERT_EQ(cells.size(), expected.size());
   EXPECT_EQ(cells[3], "iterative:10 epsilon=0.001 h=1/120");
   EXPECT_EQ(cells[11], "100");  // the median of the repetitions
-  EXPECT_EQ(cells[25], "1");
-  EXPECT_EQ(cells[27], "top box drift 0.00 mm, height \"6.1\" m");  // quotes survive
+  EXPECT_EQ(cells[14], "200");  // 1/60 s is two steps of 1/120 s
+  EXPECT_EQ(cells[26], "1");
+  EXPECT_EQ(cells[28], "top box drift 0.00 mm, height \"6.1\" m");  // quotes survive
   std::vector<ResultRow> back;
   std::string error;
   ASSERT_TRUE(ReadCsv(path, back, error)) << error;
@@ -100,7 +101,6 @@ TEST(TradeoffReport, ThePlotIsAPngOfTheStatedSize) {
   ASSERT_FALSE(gnuplot.empty()) << "gnuplot is missing: scripts/install-deps.sh installs gnuplot-nox";
   std::vector<ResultRow> rows = {SampleRow(100, 0.01, true), SampleRow(50, 0.2, true), SampleRow(70, 0.5, true),
                                  SampleRow(30, 0.3, false)};
-  rows[2].setting.h = 1.0 / 60;
   MarkFronts(rows, "stack21");
   PlotRequest q;
   q.scene = "stack21";
@@ -116,14 +116,14 @@ TEST(TradeoffReport, ThePlotIsAPngOfTheStatedSize) {
   ASSERT_TRUE(PngSize(q.path, w, h)) << q.path << " is not a PNG";
   EXPECT_EQ(w, 640u);
   EXPECT_EQ(h, 360u);
-  // The data drawn: the front (two points, by cost), the dominated setting
-  // and the failed run apart.
+  // The data drawn, in µs per 1/60 s (two steps of 1/120 s): the front
+  // (two points, by cost), the dominated setting and the failed run apart.
   std::ifstream data(q.path + ".gp");
   const std::string text((std::istreambuf_iterator<char>(data)), std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find("$front << EOD\n50 0.2 \"iterative:10 epsilon=0.001 h=1/120\"\n100 0.01 "), std::string::npos)
+  EXPECT_NE(text.find("$front << EOD\n100 0.2 \"iterative:10 epsilon=0.001 h=1/120\"\n200 0.01 "), std::string::npos)
       << text;
-  EXPECT_NE(text.find("$settings << EOD\n70 0.5 "), std::string::npos) << text;
-  EXPECT_NE(text.find("$failed << EOD\n30 0.3 "), std::string::npos) << text;
+  EXPECT_NE(text.find("$settings << EOD\n140 0.5 "), std::string::npos) << text;
+  EXPECT_NE(text.find("$failed << EOD\n60 0.3 "), std::string::npos) << text;
 }
 
 TEST(TradeoffReport, AMissingGnuplotIsFound) {
@@ -140,6 +140,8 @@ TEST(TradeoffPeers, PeerBenchRowsGiveTheSceneError) {
   EXPECT_EQ(r.scene, "car");
   EXPECT_EQ(r.engine, "ode-step");
   EXPECT_DOUBLE_EQ(r.median(), 12.2);
+  EXPECT_DOUBLE_EQ(r.low(), 12.0);
+  EXPECT_DOUBLE_EQ(r.high(), 13.1);
   EXPECT_TRUE(r.held);
   EXPECT_NEAR(r.sceneError, 0.2, 1e-9);
   ASSERT_TRUE(ParsePeerRow("| stack21 (1200) | bullet | 1,921 [1,900–2,000] | 1.00 | 0.89 | **no**: check | top box "

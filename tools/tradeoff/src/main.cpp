@@ -177,7 +177,7 @@ int main(int argc, char **argv) {
       q.scene = e.name;
       q.width = o.width;
       q.height = o.height;
-      q.title = e.name + ": drift from the reference run against time per step";
+      q.title = e.name + ": drift from the reference run against the cost of 1/60 s simulated";
       q.yLabel = "drift from the reference (m, largest RMS over the bodies)";
       q.path = o.out + "/" + e.name + "-drift.png";
       if (Plot(gnuplot, q, rows, error)) n.driftPlot = e.name + "-drift.png";
@@ -187,7 +187,7 @@ int main(int argc, char **argv) {
       });
       if (hasSceneError) {
         q.sceneError = true;
-        q.title = e.name + ": the scene's own error against time per step";
+        q.title = e.name + ": the scene's own error against the cost of 1/60 s simulated";
         q.yLabel = "scene error (m; see ACCURACY.md)";
         q.path = o.out + "/" + e.name + "-scene.png";
         if (Plot(gnuplot, q, rows, error)) n.scenePlot = e.name + "-scene.png";

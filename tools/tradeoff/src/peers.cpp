@@ -74,14 +74,20 @@ bool ParsePeerRow(const std::string &line, ResultRow &out) {
   out = ResultRow{};
   out.scene = c[0].substr(0, c[0].find(' '));
   out.engine = c[1];
-  out.micros = {LeadingNumber(c[2])};
+  // "median [low–high]": all three, so that the row's median and range
+  // read back.
+  const size_t open = c[2].find('['), dash = c[2].find("–");
+  const double median = LeadingNumber(c[2]);
+  const double low = open == std::string::npos ? median : LeadingNumber(c[2].substr(open + 1));
+  const double high = dash == std::string::npos ? median : LeadingNumber(c[2].substr(dash + std::string("–").size()));
+  out.micros = {low, median, high};
   out.held = c[5].rfind("yes", 0) == 0;
   out.detail = c[6];
   out.maxSpeed = LeadingNumber(c[7]);
   out.penetration = LeadingNumber(c[8]) / 1e3;
   out.sceneError = SceneErrorOf(out.scene, c[6], LeadingNumber(c[8]));
   out.drift = out.jointError = out.energyError = out.momentumError = out.residual = std::nan("");
-  return !std::isnan(out.micros[0]) && !out.engine.empty();
+  return !std::isnan(median) && !out.engine.empty();
 }
 
 bool ReadPeerTable(const std::string &path, std::vector<ResultRow> &out, std::string &error) {

@@ -72,13 +72,13 @@ bool Plot(const std::string &gnuplot, const PlotRequest &q, const std::vector<Re
   for (const ResultRow &r : rows) {
     if (r.scene != q.scene) continue;
     const double e = q.sceneError ? r.sceneError : r.drift;
-    if (!std::isfinite(e) || !std::isfinite(r.median())) continue;
+    if (!std::isfinite(e) || !std::isfinite(r.perFrame())) continue;
     if (r.isPeer()) {
-      if (q.sceneError) blocks[3].push_back({r.median(), e, r.engine + (r.held ? "" : " (failed)")});
+      if (q.sceneError) blocks[3].push_back({r.perFrame(), e, r.engine + (r.held ? "" : " (failed)")});
       continue;
     }
     const bool front = q.sceneError ? r.frontScene : r.frontDrift;
-    blocks[!r.held ? 2 : front ? 1 : 0].push_back({r.median(), e, r.setting.label()});
+    blocks[!r.held ? 2 : front ? 1 : 0].push_back({r.perFrame(), e, r.setting.label()});
   }
   std::sort(blocks[1].begin(), blocks[1].end(), [](const Point &a, const Point &b) { return a.cost < b.cost; });
   const std::string script = q.path + ".gp";
@@ -93,7 +93,7 @@ bool Plot(const std::string &gnuplot, const PlotRequest &q, const std::vector<Re
   std::fprintf(s, "set output %s\n", GnuplotQuoted(q.path).c_str());
   std::fprintf(s, "set title %s\nset logscale xy\nset grid xtics ytics mxtics mytics lc rgb '#dddddd'\n",
                GnuplotQuoted(q.title).c_str());
-  std::fprintf(s, "set xlabel 'µs per step (median of the repetitions)'\nset ylabel %s\n",
+  std::fprintf(s, "set xlabel 'µs per 1/60 s simulated (median of the repetitions; µs per step x (1/60) / h)'\nset ylabel %s\n",
                GnuplotQuoted(q.yLabel).c_str());
   std::fprintf(s, "set bmargin 6\nset key at screen 0.5, screen 0.02 center bottom horizontal\n");
   std::fprintf(s, "set offsets graph 0.08, graph 0.35, graph 0.1, graph 0.1\n");

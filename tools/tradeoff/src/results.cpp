@@ -39,8 +39,8 @@ void MarkFronts(std::vector<ResultRow> &rows, const std::string &scene) {
     const ResultRow &r = rows[i];
     if (r.scene != scene || r.isPeer()) continue;
     index.push_back(i);
-    drift.push_back({r.median(), r.drift, r.held});
-    error.push_back({r.median(), r.sceneError, r.held});
+    drift.push_back({r.perFrame(), r.drift, r.held});
+    error.push_back({r.perFrame(), r.sceneError, r.held});
   }
   const std::vector<bool> a = ParetoFront(drift), b = ParetoFront(error);
   for (size_t k = 0; k < index.size(); ++k) {
@@ -69,29 +69,29 @@ std::string FrontSummary(const std::vector<ResultRow> &rows, const std::string &
   for (const ResultRow &r : rows)
     if (r.scene == scene && !r.isPeer() && (sceneError ? r.frontScene : r.frontDrift)) front.push_back(&r);
   if (front.empty()) return "No setting held: the sweep has no front.";
-  std::sort(front.begin(), front.end(), [](const ResultRow *a, const ResultRow *b) { return a->median() < b->median(); });
+  std::sort(front.begin(), front.end(), [](const ResultRow *a, const ResultRow *b) { return a->perFrame() < b->perFrame(); });
   auto error = [&](const ResultRow *r) { return sceneError ? r->sceneError : r->drift; };
   const ResultRow *fast = front.front(), *best = front.back();
   if (front.size() == 1)
     return std::string("`") + fast->setting.label() + "` is both the fastest and the most accurate setting that held (" +
-           Number(fast->median()) + " µs/step, error " + Number(error(fast)) + ").";
+           Number(fast->perFrame()) + " µs per 1/60 s, error " + Number(error(fast)) + ").";
   // The segment of the front with the largest error reduction per unit
   // of log time: log(e_i / e_i+1) / log(t_i+1 / t_i).
   size_t bestSegment = 0;
   double bestGain = -1;
   for (size_t i = 0; i + 1 < front.size(); ++i) {
     const double e0 = std::max(error(front[i]), 1e-12), e1 = std::max(error(front[i + 1]), 1e-12);
-    const double t = std::log(std::max(front[i + 1]->median() / front[i]->median(), 1.0 + 1e-9));
+    const double t = std::log(std::max(front[i + 1]->perFrame() / front[i]->perFrame(), 1.0 + 1e-9));
     const double gain = std::log(e0 / e1) / t;
     if (gain > bestGain) bestGain = gain, bestSegment = i;
   }
   const ResultRow *a = front[bestSegment], *b = front[bestSegment + 1];
-  return std::string("The front runs from `") + fast->setting.label() + "` (" + Number(fast->median()) + " µs/step, error " +
-         Number(error(fast)) + ") to `" + best->setting.label() + "` (" + Number(best->median()) +
-         " µs/step, error " + Number(error(best)) + "); the most accuracy per microsecond comes from changing " +
+  return std::string("The front runs from `") + fast->setting.label() + "` (" + Number(fast->perFrame()) + " µs per 1/60 s, error " +
+         Number(error(fast)) + ") to `" + best->setting.label() + "` (" + Number(best->perFrame()) +
+         " µs per 1/60 s, error " + Number(error(best)) + "); the most accuracy per microsecond comes from changing " +
          DifferingKnobs(a->setting, b->setting) + " (`" + a->setting.label() + "` to `" + b->setting.label() +
          "`: error ÷" + Number(error(a) / std::max(error(b), 1e-12), "%.2g") + " for ×" +
-         Number(b->median() / a->median(), "%.2g") + " the time).";
+         Number(b->perFrame() / a->perFrame(), "%.2g") + " the time).";
 }
 
 }  // namespace karma::tradeoff

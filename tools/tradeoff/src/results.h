@@ -27,9 +27,14 @@ struct ResultRow {
   bool frontDrift = false;      // on the Pareto front of (µs, drift)
   bool frontScene = false;      // on the Pareto front of (µs, scene error), peers excluded
   bool isPeer() const { return engine != "karma"; }
+  // µs per step: the median and range of the repetitions.
   double median() const;
   double low() const;
   double high() const;
+  // The cost of 1/60 s of simulated time, µs: median() x (1/60) / h. The
+  // plots, fronts and summaries use it, so that a smaller step pays for
+  // the extra steps it takes.
+  double perFrame() const { return median() * (1.0 / 60) / setting.h; }
 };
 
 // Marks the two Pareto fronts among the rows of `scene` (peers excluded).
@@ -38,7 +43,7 @@ void MarkFronts(std::vector<ResultRow> &rows, const std::string &scene);
 // The knobs in which two settings differ, e.g. "solver and h".
 std::string DifferingKnobs(const Setting &a, const Setting &b);
 
-// One sentence on a scene's front: which change buys most accuracy per
+// One sentence on a scene's front (costs per 1/60 s simulated): which change buys most accuracy per
 // microsecond. `sceneError` picks the error (scene error or drift).
 std::string FrontSummary(const std::vector<ResultRow> &rows, const std::string &scene, bool sceneError);
 
