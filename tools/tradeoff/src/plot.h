@@ -1,8 +1,10 @@
 // plot.h: a scene's trade-off plot through gnuplot: error against the
-// cost of 1/60 s of simulated time (µs per step x (1/60) / h), log-log, one point per setting, the Pareto front drawn as a line
-// through its points (labelled with their settings), failed runs as red
-// crosses, peers' points (when given) as labelled squares. Errors at or
-// below kErrorFloor are drawn at it (a log axis has no zero).
+// cost of 1/60 s of simulated time (µs per step x (1/60) / h), log-log,
+// one point per setting, the Pareto front drawn as a line through its
+// points (labelled with their settings), failed runs as red crosses
+// (unlabelled: the table names them), peers' points (when given) as
+// labelled squares. Errors at or below kErrorFloor are drawn at it (a log
+// axis has no zero).
 #pragma once
 
 #include <string>
