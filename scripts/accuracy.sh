@@ -2,7 +2,7 @@
 # docs/ACCURACY.md in one command: what accuracy costs in time, for each
 # anchor scene and hard case, with the other engines' points.
 #
-#   scripts/accuracy.sh            (about 10 minutes on 2 cores once built)
+#   scripts/accuracy.sh    (about 5 minutes on 2 cores; the first run also builds the bench preset)
 #
 # 1. scripts/peers.sh: builds the `bench` preset with ODE and Bullet and runs
 #    bench/peers/peer_bench on the anchor scenes (3 repetitions, pile1000's
