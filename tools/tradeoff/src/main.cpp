@@ -112,6 +112,80 @@ bool RunOtherPrecision(const Options &o, const std::string &precision, std::vect
   return true;
 }
 
+// The sweep in this build's precision, then the other precision's through
+// its binary; settings carry their precision only when both ran.
+bool RunAllPrecisions(const Options &o, SweepPlan &plan, std::vector<ResultRow> &rows) {
+  const std::string own = BuildPrecision();
+  const bool both = o.precisions.size() > 1;
+  const bool runOwn = o.precisions.empty() || std::find(o.precisions.begin(), o.precisions.end(), own) != o.precisions.end();
+  plan.precision = own;
+  if (both)
+    for (Setting &s : plan.settings) s.precision = own;
+  if (runOwn) rows = RunSweep(plan);
+  for (const std::string &p : o.precisions)
+    if (p != own && !RunOtherPrecision(o, p, rows)) return false;
+  if (!both)
+    for (ResultRow &r : rows) r.setting.precision.clear();
+  return true;
+}
+
+// The peers' points of the swept scenes (not peer_bench's own Karma rows:
+// this sweep measured Karma).
+bool AddPeers(const std::string &table, const SweepPlan &plan, std::vector<ResultRow> &rows) {
+  std::vector<ResultRow> peers;
+  std::string error;
+  if (!ReadPeerTable(table, peers, error)) {
+    std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
+    return false;
+  }
+  for (ResultRow &p : peers) {
+    const bool swept = std::any_of(plan.scenes.begin(), plan.scenes.end(), [&](const SceneEntry &e) { return e.name == p.scene; });
+    if (swept && p.engine != "karma") rows.push_back(p);
+  }
+  return true;
+}
+
+// A scene's two plots (drift; scene error when it has one); their file
+// names go into the note.
+void PlotScene(const Options &o, const std::string &gnuplot, const SceneEntry &e, const std::vector<ResultRow> &rows,
+               SceneNote &n) {
+  std::string error;
+  PlotRequest q;
+  q.scene = e.name;
+  q.width = o.width;
+  q.height = o.height;
+  q.title = e.name + ": drift from the reference run against the cost of 1/60 s simulated";
+  q.yLabel = "drift from the reference (m, largest RMS over the bodies)";
+  q.path = o.out + "/" + e.name + "-drift.png";
+  if (Plot(gnuplot, q, rows, error)) n.driftPlot = e.name + "-drift.png";
+  else std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
+  const bool hasSceneError = std::any_of(rows.begin(), rows.end(), [&](const ResultRow &r) {
+    return r.scene == e.name && std::isfinite(r.sceneError);
+  });
+  if (!hasSceneError) return;
+  q.sceneError = true;
+  q.title = e.name + ": the scene's own error against the cost of 1/60 s simulated";
+  q.yLabel = "scene error (m; see ACCURACY.md)";
+  q.path = o.out + "/" + e.name + "-scene.png";
+  if (Plot(gnuplot, q, rows, error)) n.scenePlot = e.name + "-scene.png";
+  else std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
+}
+
+bool WriteReports(const Options &o, const std::vector<ResultRow> &rows, const std::vector<SceneNote> &notes,
+                  const std::string &command) {
+  const std::string csv = o.out + "/tradeoff.csv", md = o.out + "/tradeoff.md";
+  std::FILE *f = std::fopen(csv.c_str(), "w");
+  std::FILE *g = std::fopen(md.c_str(), "w");
+  if (f) WriteCsv(f, rows), std::fclose(f);
+  if (g) WriteMarkdown(g, rows, notes, command), std::fclose(g);
+  if (!f || !g) {
+    std::fprintf(stderr, "karma-tradeoff: cannot write %s or %s\n", csv.c_str(), md.c_str());
+    return false;
+  }
+  std::fprintf(stderr, "karma-tradeoff: wrote %s, %s and the plots\n", csv.c_str(), md.c_str());
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -140,73 +214,18 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "karma-tradeoff: cannot make %s: %s\n", o.out.c_str(), std::strerror(errno));
     return 2;
   }
-  const std::string own = BuildPrecision();
-  const bool both = o.precisions.size() > 1;
-  const bool runOwn = o.precisions.empty() || std::find(o.precisions.begin(), o.precisions.end(), own) != o.precisions.end();
   plan.repeat = o.repeat;
   plan.seconds = o.seconds;
   plan.referenceStep = o.referenceStep;
-  plan.precision = own;
-  if (both)
-    for (Setting &s : plan.settings) s.precision = own;
   std::vector<ResultRow> rows;
-  if (runOwn) rows = RunSweep(plan);
-  for (const std::string &p : o.precisions)
-    if (p != own && !RunOtherPrecision(o, p, rows)) return 1;
-  if (!both)
-    for (ResultRow &r : rows) r.setting.precision.clear();
-  if (!o.peers.empty()) {
-    std::vector<ResultRow> peers;
-    if (!ReadPeerTable(o.peers, peers, error)) {
-      std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
-      return 2;
-    }
-    for (ResultRow &p : peers) {
-      const bool swept = std::any_of(plan.scenes.begin(), plan.scenes.end(), [&](const SceneEntry &e) { return e.name == p.scene; });
-      if (!swept || p.engine == "karma") continue;  // Karma's own points are this sweep's
-      p.precision = "";
-      rows.push_back(p);
-    }
-  }
+  if (!RunAllPrecisions(o, plan, rows)) return 1;
+  if (!o.peers.empty() && !AddPeers(o.peers, plan, rows)) return 2;
   std::vector<SceneNote> notes;
   for (const SceneEntry &e : plan.scenes) {
     MarkFronts(rows, e.name);
     SceneNote n{e.name, e.about, o.seconds > 0 ? o.seconds : e.seconds, ReferenceSetting(plan).label(), "", ""};
-    if (o.plots) {
-      PlotRequest q;
-      q.scene = e.name;
-      q.width = o.width;
-      q.height = o.height;
-      q.title = e.name + ": drift from the reference run against the cost of 1/60 s simulated";
-      q.yLabel = "drift from the reference (m, largest RMS over the bodies)";
-      q.path = o.out + "/" + e.name + "-drift.png";
-      if (Plot(gnuplot, q, rows, error)) n.driftPlot = e.name + "-drift.png";
-      else std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
-      const bool hasSceneError = std::any_of(rows.begin(), rows.end(), [&](const ResultRow &r) {
-        return r.scene == e.name && std::isfinite(r.sceneError);
-      });
-      if (hasSceneError) {
-        q.sceneError = true;
-        q.title = e.name + ": the scene's own error against the cost of 1/60 s simulated";
-        q.yLabel = "scene error (m; see ACCURACY.md)";
-        q.path = o.out + "/" + e.name + "-scene.png";
-        if (Plot(gnuplot, q, rows, error)) n.scenePlot = e.name + "-scene.png";
-        else std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
-      }
-    }
+    if (o.plots) PlotScene(o, gnuplot, e, rows, n);
     notes.push_back(n);
   }
-  const std::string csv = o.out + "/tradeoff.csv", md = o.out + "/tradeoff.md";
-  std::FILE *f = std::fopen(csv.c_str(), "w");
-  std::FILE *g = std::fopen(md.c_str(), "w");
-  if (!f || !g) {
-    std::fprintf(stderr, "karma-tradeoff: cannot write %s or %s\n", csv.c_str(), md.c_str());
-    return 2;
-  }
-  WriteCsv(f, rows);
-  WriteMarkdown(g, rows, notes, CommandLine(argc, argv));
-  std::fclose(f);
-  std::fclose(g);
-  std::fprintf(stderr, "karma-tradeoff: wrote %s, %s and the plots\n", csv.c_str(), md.c_str());
-  return 0;
+  return WriteReports(o, rows, notes, CommandLine(argc, argv)) ? 0 : 2;
 }

@@ -55,7 +55,7 @@ class BallmanScene final : public TutorialScene {
     for (MdtSkeletalID j : b_->joint) joints_.push_back(MdtSkeletalQuaConstraint(j));
   }
   ~BallmanScene() override { BallmanDestroy(b_); }
-  MdtWorldID world() const override { return b_->universe->world; }
+  MdtWorldID world() const override { return b_ ? b_->universe->world : nullptr; }
   void advance(MeReal h) override {
     BallmanCollide(b_);
     MdtWorldStep(b_->universe->world, h);
@@ -73,7 +73,7 @@ class ChainScene final : public TutorialScene {
     for (MdtBSJointID j : c_->joint) joints_.push_back(MdtBSJointQuaConstraint(j));
   }
   ~ChainScene() override { RainbowChainDestroy(c_); }
-  MdtWorldID world() const override { return c_->universe->world; }
+  MdtWorldID world() const override { return c_ ? c_->universe->world : nullptr; }
   void advance(MeReal h) override {
     RainbowChainCollide(c_);
     MdtWorldStep(c_->universe->world, h);
