@@ -87,7 +87,7 @@ Swept: \`$sweep\` (pile1000: \`$pile_sweep\`, 1 s). Settings name only the knobs
 iterations, \`iterative:N\` projected Gauss-Seidel with N sweeps.
 
 TEXT
-  sed -e 's|(\([a-z0-9_]*-\(scene\|drift\)\.png\))|(images/accuracy/\1)|' -e 's|^### |## |' "$out/main/tradeoff.md"
-  sed -e 's|(\([a-z0-9_]*-\(scene\|drift\)\.png\))|(images/accuracy/\1)|' -e 's|^### |## |' "$out/pile/tradeoff.md"
+  sed -e 's#(\([a-z0-9_]*-\(scene\|drift\)\.png\))#(images/accuracy/\1)#' -e 's|^### |## |' "$out/main/tradeoff.md"
+  sed -e 's#(\([a-z0-9_]*-\(scene\|drift\)\.png\))#(images/accuracy/\1)#' -e 's|^### |## |' "$out/pile/tradeoff.md"
 } >docs/ACCURACY.md
 echo "accuracy: wrote docs/ACCURACY.md and $images/ (the CSV: $out/main/tradeoff.csv, $out/pile/tradeoff.csv)" >&2
