@@ -29,6 +29,7 @@ double StackClosure(const scenes::SceneSpec &spec);
 #if KARMA_TRADEOFF_HAVE_TUTORIALS
 std::unique_ptr<TradeoffScene> MakeBallman();
 std::unique_ptr<TradeoffScene> MakeRainbowChain();
+std::unique_ptr<TradeoffScene> MakeQuadBike();
 #endif
 
 }  // namespace karma::tradeoff

@@ -28,6 +28,7 @@ std::vector<SceneEntry> MakeCatalogue() {
 #if KARMA_TRADEOFF_HAVE_TUTORIALS
   all.push_back({"ballman", "tutorial", "Ballman's rag doll on its stairs, not pushed", 4.0, &MakeBallman});
   all.push_back({"rainbowchain", "tutorial", "RainbowChain's ten balls swinging from a pivot", 6.0, &MakeRainbowChain});
+  all.push_back({"quadbike", "tutorial", "QuadBike's rider on its scripted ride over the terrain", 6.0, &MakeQuadBike});
 #endif
   return all;
 }

@@ -4,7 +4,7 @@
 // Built-in scenes (Catalogue()): the five anchor scenes of
 // ../shared/bench/SCENES.md (scenes/), three hard cases (hard_cases.cpp),
 // the tutorials' simulations that build without a viewer (Ballman,
-// RainbowChain); and a user's scene from a shared library
+// RainbowChain, QuadBike); and a user's scene from a shared library
 // (KarmaTradeoffScene.h, user_scene.cpp).
 #pragma once
 
