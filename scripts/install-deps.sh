@@ -12,6 +12,7 @@ packages=(
   libsdl2-dev                                        # MeViewer's window (-window)
   libstb-dev                                         # PNG/BMP read and write
   ffmpeg                                             # videos (-video)
+  gnuplot-nox                                        # karma-tradeoff's plots (docs/ACCURACY.md)
   libgtest-dev libgmock-dev libbenchmark-dev         # tests and benchmarks
   xvfb xauth xdotool                                 # the window test: X server, synthetic input
 )

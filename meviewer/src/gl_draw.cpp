@@ -195,6 +195,10 @@ void DrawSceneGL(RRender *rc) {
     DrawGraphic(rc, g, true);
     RGraphicDestroy(g);
   }
+  for (RGraphic *g : AccuracyOverlay(rc)) {
+    DrawGraphic(rc, g, true);
+    RGraphicDestroy(g);
+  }
   for (RGraphic *g : HelpOverlay(rc)) {
     DrawGraphic(rc, g, true);
     RGraphicDestroy(g);

@@ -24,7 +24,7 @@ constexpr int kBackendCount = 6;
 /* Options taking a value, then flags; used for the misspelling check. */
 const char *const kKnownOptions[] = {"-gl",  "-d3d", "-null",  "-bench", "-profile", "-frames",
                                      "-out", "-every", "-bmp", "-size", "-help", "-keys", "-keyfile", "-video",
-                                     "-window", "-record", "-screenshot"};
+                                     "-window", "-record", "-screenshot", "-accuracy"};
 /* Options the project's own programs read (golden runs pass them to every
  * program), never reported as unknown. */
 const char *const kProgramOptions[] = {"-platform", "-trajectory"};
@@ -99,6 +99,7 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
     }
   }
   if (Flag(o, "-bmp", eat)) out.bmp = true;
+  if (Flag(o, "-accuracy", eat)) out.accuracy = true;
   if (Flag(o, "-help", eat) || Flag(o, "--help", eat)) out.help = true;
 
   struct ValueOption {
@@ -172,7 +173,11 @@ const char *HelpText() {
          "  -d3d           the same as -gl (kept for the guide's programs)\n"
          "  -null          run the loop without drawing anything\n"
          "  -bench         as -null, and print per-frame timing statistics at exit\n"
-         "  -profile       draw, and print a per-phase timing table at exit\n"
+         "  -profile       draw, and print a per-phase timing table at exit (and the\n"
+         "                 accuracy figures per quarter of the run, when the program\n"
+         "                 gives them: RRenderSetAccuracySource)\n"
+         "  -accuracy      draw the accuracy figures beside the performance bar: joint\n"
+         "                 error, deepest penetration, energy drift, solver residual\n"
          "  -frames N      stop after N frames, as if Esc had been pressed\n"
          "  -out DIR       write each frame to DIR/frame_00000.png, frame_00001.png, ...\n"
          "                 (DIR is created if needed)\n"

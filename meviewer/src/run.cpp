@@ -82,6 +82,7 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
     const Clock::time_point t1 = Clock::now();
     if (tick && !p->paused) tick(rc, userdata); /* the help pauses the simulation */
     const Clock::time_point t2 = Clock::now();
+    SampleAccuracy(rc);
     if (p->backend->Draws()) {
       LoadPendingTextures(rc);
       if (profiled) MeProfileStartSection("render");
@@ -113,6 +114,7 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
   }
   if (o.backend == BackendKind::Bench) PrintBenchReport(times, stdout);
   if (o.backend == BackendKind::Profile) PrintProfileReport(times, stdout);
+  if (o.backend == BackendKind::Profile && !p->accuracy.frames.empty()) PrintAccuracyReport(p->accuracy, stdout);
   std::fflush(stdout);
   p->running = false;
   std::exit(0);

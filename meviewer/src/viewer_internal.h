@@ -34,6 +34,7 @@ struct ViewerOptions {
   std::string video;    /* -video FILE (.gif: GIF, anything else: H.264 MP4) */
   std::string record;   /* -record FILE: the window's live input as a key script */
   std::string screenshot; /* -screenshot FILE: the window as the display shows it, at exit */
+  bool accuracy = false; /* -accuracy: the accuracy overlay */
 };
 /* True when a display is there to open windows on ($DISPLAY not empty). */
 bool DisplayPresent();
@@ -225,6 +226,22 @@ std::vector<RGraphic *> HelpOverlay(RRender *rc);
 /* The performance bar as 2D graphics for one frame (empty without a bar). */
 std::vector<RGraphic *> PerformanceBarOverlay(RRender *rc);
 void DestroyPerformanceBar(RRender *rc);
+/* The accuracy figures of the frames so far (RRenderSetAccuracySource). */
+struct AccuracyState {
+  RAccuracySource source = nullptr;
+  void *data = nullptr;
+  bool have = false;                    /* `last` holds a reading */
+  RAccuracyFigures last{};
+  std::vector<RAccuracyFigures> frames; /* one per frame read, for -profile */
+};
+/* Reads the source after a tick when -accuracy or -profile asks for it. */
+void SampleAccuracy(RRender *rc);
+/* The accuracy overlay as 2D graphics for one frame (empty without
+ * -accuracy). */
+std::vector<RGraphic *> AccuracyOverlay(RRender *rc);
+/* -profile's accuracy table: the largest magnitude of each figure in each
+ * quarter of the run, and its value at the end. */
+void PrintAccuracyReport(const AccuracyState &a, std::FILE *f);
 /* Frees every menu of the context (RRenderContextDestroy). */
 void DestroyMenus(RRender *rc);
 
@@ -249,6 +266,7 @@ struct RRenderPrivate {
   bool helpShown = false;
   bool paused = false;           /* toggled with the help: no tick */
   RPerformanceBar *bar = nullptr;
+  karma::viewer::AccuracyState accuracy;
   std::string videoTempDir; /* frames for -video without -out, removed after */
 };
 

@@ -235,6 +235,28 @@ MEPUBLIC void MEAPI RMenuAddSubmenuEntry(RMenu *rm, const char *name, RMenu *sub
  * (one per context, freed with it), or NULL if rc is NULL. */
 MEPUBLIC RPerformanceBar *MEAPI RPerformanceBarCreate(RRender *rc);
 
+/* ---- accuracy -------------------------------------------------------------------- */
+
+/* What the -accuracy overlay shows and -profile prints: figures of the
+ * simulation after the last tick, from a source the program sets (the
+ * viewer knows no physics; MeViewerAccuracy.h's probe computes them from
+ * a dynamics world). */
+typedef struct RAccuracyFigures {
+    MeReal jointError;  /* largest joint gap: a joint's point as carried by each body, m */
+    MeReal penetration; /* deepest contact penetration, m */
+    MeReal energyDrift; /* kinetic + potential energy now minus at the first frame, J */
+    MeReal residual;    /* the solver's largest residual in the last step */
+} RAccuracyFigures;
+typedef void(MEAPI *RAccuracySource)(RAccuracyFigures *figures, void *data);
+
+/* Sets the source RRun reads after every tick when -accuracy or -profile
+ * is given (NULL removes it). With -accuracy the figures are drawn beside
+ * the performance bar; with -profile they are printed at exit for each
+ * quarter of the run. */
+MEPUBLIC void MEAPI RRenderSetAccuracySource(RRender *rc, RAccuracySource source, void *data);
+/* 1 when the command line asked for the accuracy overlay (-accuracy). */
+MEPUBLIC MeBool MEAPI RRenderAccuracyRequested(const RRender *rc);
+
 /* ---- help and text utilities ----------------------------------------------- */
 
 /* Copies text_in to text_out (at most outbuffersize bytes, always
