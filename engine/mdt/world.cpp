@@ -28,6 +28,7 @@ void setDefaultParams(MdtWorldParams &p, MeReal l, MeReal m) {
   p.keaMaxIterations = 0;
   p.keaTolerance = 0;
   p.geometricStiffness = 1;
+  p.keaIterativeRows = 0;
 }
 
 }  // namespace

@@ -65,6 +65,7 @@ typedef struct MdtWorldParams {
     int keaMaxIterations;
     MeReal keaTolerance;
     MeReal geometricStiffness;
+    int keaIterativeRows;     /* see MdtWorldSetKeaIterativeRows; 0 = never */
 } MdtWorldParams;
 
 /* What the last MdtWorldStep did. */
@@ -83,6 +84,7 @@ typedef struct MdtWorldStepStats {
     int keaStaleSolves;   /* linear solves preconditioned by last step's factor */
     int keaFrictionRounds;/* friction fixed-point rounds beyond the first */
     int keaCycles;        /* partitions stopped by a detected cycle */
+    int iterativePartitions; /* partitions solved by the iterative solver */
 } MdtWorldStepStats;
 
 /* The world's private state (body pool, step order, counters). */
@@ -188,6 +190,16 @@ MEPUBLIC void MEAPI MdtWorldSetGeometricStiffness(const MdtWorldID world, const 
 MEPUBLIC void MEAPI MdtWorldSetKeaMethod(const MdtWorldID world, const MdtKeaMethod method);
 MEPUBLIC void MEAPI MdtWorldSetKeaMaxIterations(const MdtWorldID world, const int n);
 MEPUBLIC void MEAPI MdtWorldSetKeaTolerance(const MdtWorldID world, const MeReal tol);
+
+/* Each partition's solver by its size: with the exact method selected, a
+ * partition of more than `rows` constraint rows (after capping) is solved
+ * by the iterative method (projected Gauss-Seidel, with the same iteration
+ * cap and tolerance knobs) and one of at most `rows` exactly, so a car or a
+ * rag doll stays exact beside a large heap. rows >= 0; 0 (the default)
+ * solves every partition by the selected method. The step stats count the
+ * partitions solved iteratively. */
+MEPUBLIC void MEAPI MdtWorldSetKeaIterativeRows(const MdtWorldID world, const int rows);
+MEPUBLIC int MEAPI MdtWorldGetKeaIterativeRows(const MdtWorldID world);
 
 /* Bytes of solver workspace a partition of `rows` rows and `bodies` bodies
  * needs at most (dense worst case: the matrix, its factor and the row

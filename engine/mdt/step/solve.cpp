@@ -1,6 +1,8 @@
 // solve.cpp: stage 5 of the step (step.h): the world's partition solver
-// (MdtWorldSetKeaMethod chooses which) finds the kept rows' impulses, and
-// the step stats record what it cost.
+// finds the kept rows' impulses, and the step stats record what it cost.
+// MdtWorldSetKeaMethod chooses the solver; with the exact one, a partition
+// of more rows than MdtWorldSetKeaIterativeRows's threshold (when set) is
+// solved iteratively instead.
 #include "step.h"
 
 namespace karma::mdt {
@@ -9,7 +11,10 @@ std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpace
   std::span<MeReal> lambda = s.arena.take<MeReal>((size_t)problem.rowCount);
   if (problem.rowCount == 0) return lambda;
   const MdtWorldParams &params = world->params;
-  PartitionSolver *solver = params.keaMethod == MdtKeaMethodPGS ? s.pgs : s.activeSet;
+  const bool iterative = params.keaMethod == MdtKeaMethodPGS ||
+                         (params.keaIterativeRows > 0 && problem.rowCount > params.keaIterativeRows);
+  PartitionSolver *solver = iterative ? s.pgs : s.activeSet;
+  if (iterative) ++s.stats.iterativePartitions;
   SolverSettings settings;
   settings.maxIterations = params.keaMaxIterations;
   settings.tolerance = params.keaTolerance;

@@ -1,0 +1,74 @@
+// The per-partition choice of solver by size (MdtWorldSetKeaIterativeRows):
+// with the exact method, a partition of more rows than the threshold is
+// solved iteratively, one of at most that many exactly; 0 means never.
+#include "step_scene.h"
+#include "support/warning_capture.h"
+
+namespace {
+
+using step_test::Scene;
+using karma_test::WarningCapture;
+
+// A column of `boxes` 1 m cubes standing at x, settled for a second.
+void Column(Scene &s, int boxes, MeReal x) {
+  for (int i = 0; i < boxes; ++i) s.box(1, 1, 1, x, (MeReal)0.5 + (MeReal)i, 0);
+}
+
+MdtWorldStepStats Stats(const Scene &s) {
+  MdtWorldStepStats stats;
+  MdtWorldGetStepStats(s.u->world, &stats);
+  return stats;
+}
+
+TEST(SolverChoice, APartitionAtTheThresholdIsExactAndOneRowMoreIsIterative) {
+  Scene s;
+  Column(s, 2, 0);
+  s.step(60);
+  const int rows = Stats(s).rows;
+  ASSERT_GT(rows, 0);
+  ASSERT_EQ(Stats(s).partitions, 1);
+  EXPECT_EQ(Stats(s).iterativePartitions, 0);  // default: never
+
+  MdtWorldSetKeaIterativeRows(s.u->world, rows);
+  EXPECT_EQ(MdtWorldGetKeaIterativeRows(s.u->world), rows);
+  s.step();
+  EXPECT_EQ(Stats(s).rows, rows);
+  EXPECT_EQ(Stats(s).iterativePartitions, 0);
+  EXPECT_EQ(Stats(s).keaSolved, 1);
+
+  MdtWorldSetKeaIterativeRows(s.u->world, rows - 1);
+  s.step();
+  EXPECT_EQ(Stats(s).rows, rows);
+  EXPECT_EQ(Stats(s).iterativePartitions, 1);
+  EXPECT_EQ(Stats(s).keaFactorizations, 0);  // no factorisation in PGS
+}
+
+TEST(SolverChoice, ASmallStackStaysExactBesideALargeOneSolvedIteratively) {
+  Scene s;
+  Column(s, 2, 0);
+  Column(s, 8, 5);
+  s.step(60);
+  ASSERT_EQ(Stats(s).partitions, 2);
+  // Frictionless contacts, four a face: 8 rows in the pair, 32 in the eight.
+  ASSERT_EQ(Stats(s).rows, 40);
+  MdtWorldSetKeaIterativeRows(s.u->world, 16);
+  ASSERT_EQ(MdtWorldGetBodyCount(s.u->world), 10u);
+  for (int i = 0; i < 120; ++i) {
+    s.step();
+    ASSERT_EQ(Stats(s).partitions, 2) << "step " << i;
+    EXPECT_EQ(Stats(s).iterativePartitions, 1) << "step " << i;
+    EXPECT_GE(Stats(s).keaFactorizations + Stats(s).keaStaleSolves, 1) << "step " << i;  // the small one
+  }
+}
+
+TEST(SolverChoice, ANegativeThresholdWarnsAndIsIgnored) {
+  Scene s;
+  MdtWorldSetKeaIterativeRows(s.u->world, 30);
+  WarningCapture warnings;
+  MdtWorldSetKeaIterativeRows(s.u->world, -1);
+  EXPECT_EQ(warnings.count(), 1u);
+  EXPECT_TRUE(warnings.saw("MdtWorldSetKeaIterativeRows"));
+  EXPECT_EQ(MdtWorldGetKeaIterativeRows(s.u->world), 30);
+}
+
+}  // namespace
