@@ -173,12 +173,12 @@ MEPUBLIC void MEAPI MdtWorldSetAutoDisableAliveWindow(const MdtWorldID world, co
  *                               threshold for aliveWindow seconds; enabling
  *                               a body (waking) restarts its count. So a
  *                               woken body is never disabled within the
- *                               window, and a body passing through rest for
- *                               an instant (the top of a swing) is not
- *                               disabled there either.
+ *                               window, and neither is a body that is at
+ *                               rest for a single step.
  *   MdtAliveWindowAwakeSeconds  the chapter's reading in seconds: a body
- *                               enabled (created or woken) less than
- *                               aliveWindow seconds ago is never disabled;
+ *                               enabled (by MdtBodyEnable or by waking)
+ *                               less than aliveWindow seconds ago is never
+ *                               disabled;
  *                               after that, its partition is disabled at the
  *                               first step where every body is below every
  *                               threshold.
