@@ -84,6 +84,11 @@ MeI32 EffectiveSortKey(const McdModel *m);
 // (space_models.cpp).
 void RefreshSpaceSortKey(McdModel *m);
 
+// The contact cap of one McdIntersect: the result's contactMaxCount, lowered
+// to the pair's request's (McdModelPairSetRequestPtr) when that is set and
+// positive.
+int EffectiveContactCap(const McdModelPair *pair, int resultCap);
+
 }  // namespace karma::mcd
 
 // Aggregate layout (shared by aggregate.cpp, instance.cpp and mass code).

@@ -70,6 +70,8 @@ void MEAPI MdtBodyEnable(const MdtBodyID body) {
   if (body->enabled) return;
   body->enabled = TRUE;
   body->idleTime = 0;
+  body->awakeTime = 0;
+  body->awakeSteps = 0;
   MdtWorldPrivate *p = body->world->priv;
   ++p->enabledCount;
   if (p->bodyEnableCB) p->bodyEnableCB(body, TRUE, p->bodyEnableData);

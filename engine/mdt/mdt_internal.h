@@ -42,6 +42,8 @@ struct MdtBody {
   MeI32 sortKey;
   std::uint64_t serial;  // creation order within the world, for tie-breaks
   MeReal idleTime;       // seconds spent below every auto-disable threshold
+  MeReal awakeTime;      // seconds stepped since the body was last enabled
+  int awakeSteps;        // steps since the body was last enabled
   // Scratch of the step: velocities after forces but before constraints,
   // the world-frame inverse inertia, and the body's index in its partition.
   MeVector3 vPred;
@@ -72,6 +74,10 @@ struct MdtWorldPrivate {
   MeReal massScale;
   MeReal lastStepSize;         // of the last MdtWorldStep, 0 before the first
   std::uint64_t nextSerial;
+  MdtWorldParams checked;      // params as last validated (world_params.cpp)
+  int debugDrawOptions;        // MdtWorldSetDebugDrawOptions, stored only
+  MdtAliveWindowMode aliveWindowMode;  // how the alive window counts (sleep.cpp)
+  MeBool forcesDoNotWake;      // MdtWorldSetWakeByForce(world, 0): the FAQ's reading
 };
 
 namespace karma::mdt {
@@ -101,5 +107,15 @@ void advanceBody(MdtBody *b, MeReal h);
 // w = R^T (Ib (R v)): a world vector through a body-frame tensor.
 void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor,
                      const MeVector3 v);
+
+// The direct-write check of the world parameters (world_params.cpp):
+// rememberCheckedParams when the world is made, checkDirectParamWrites at
+// the start of each step.
+void rememberCheckedParams(MdtWorldID world);
+void checkDirectParamWrites(MdtWorldID world);
+// Wakes each disabled body whose accumulated force, torque or impulse is
+// above the auto-disable thresholds (sleep.cpp); called before partitions
+// are built. The accumulators of the bodies that stay disabled are cleared.
+void wakeDrivenBodies(MdtWorldID world);
 
 }  // namespace karma::mdt

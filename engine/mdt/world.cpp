@@ -81,6 +81,7 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
   p->massScale = massScale;
   w->priv = p;
   setDefaultParams(w->params, lengthScale, massScale);
+  rememberCheckedParams(w);
   return w;
 }
 
@@ -115,12 +116,14 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
   ME_REQUIRE_ARG(realFinite(stepSize) && stepSize > 0, fn,
                  "stepSize must be positive and finite, got %g", (double)stepSize);
+  checkDirectParamWrites(world);
   ME_REQUIRE_ARG(MeVector3AllFinite(world->params.gravity), fn, "gravity is not finite");
   world->priv->lastStepSize = stepSize;
   StepScratch &s = *world->priv->scratch;
   s.stats = MdtWorldStepStats{};
   s.partitionRows.clear();
   s.arena.reset();
+  wakeDrivenBodies(world);
   buildPartitions(world, s);
   StepContext ctx;
   ctx.h = stepSize;

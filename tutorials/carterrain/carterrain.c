@@ -183,9 +183,12 @@ static void ApplyControls(CarTerrain *car) {
     else
       MdtCarWheelSetHingeLimitedForceMotor(j, 0, 0); /* free to roll */
     if (i < CAR_REAR_LEFT) {
-      /* Steering: a motor turning the wheel towards the wanted angle. */
+      /* Steering: a motor turning the wheel towards the wanted angle. The
+       * motor drives the wheel's turn relative to the chassis and the joint
+       * reports the chassis relative to the wheel (the opposite sign), so
+       * the gap is want + angle, as in the guide's QuadBike (PASTE_12). */
       const MeReal want = car->steering * CAR_MAX_STEER;
-      MdtCarWheelSetSteeringLimitedForceMotor(j, 8 * (want - MdtCarWheelGetSteeringAngle(j)), 400);
+      MdtCarWheelSetSteeringLimitedForceMotor(j, 8 * (want + MdtCarWheelGetSteeringAngle(j)), 400);
     }
     /* The guide's advice for fast-turning wheels: the hinge axis as the
      * fast-spin axis, set before every step. */

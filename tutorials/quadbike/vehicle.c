@@ -163,11 +163,8 @@ void UpdateVehicleControls(Vehicle *veh) {
       /* The front wheels steer */
 #if QUADBIKE_STEP >= 12
       /* PASTE_12 */
-      /* Front wheel steering, proportional within pgap (radians). Our
-       * MdtCarWheelGetSteeringAngle turns the same way as the steering
-       * motor; the guide's controller adds an angle of the opposite sign,
-       * hence the minus (README, "Steering"). */
-      theta = -MdtCarWheelGetSteeringAngle(veh->wheelJoint[i]);
+      /* Front wheel do the steering proportional gap (radians). */
+      theta = MdtCarWheelGetSteeringAngle(veh->wheelJoint[i]);
       desired_vel = veh->steeringInput * width + theta;
       desired_vel = max(-pgap, min(desired_vel, pgap));
       MdtCarWheelSetSteeringLimitedForceMotor(veh->wheelJoint[i], maxSpeed * desired_vel,

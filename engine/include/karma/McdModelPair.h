@@ -19,6 +19,16 @@ ME_EXTERN_C_BEGIN
 
 struct McdInteractions;
 
+/* What the application asks of the pair's McdIntersect calls. The guide
+ * names the request ("the pair's McdRequest values", read at McdHello) but
+ * gives none of its fields; this one has the contact cap:
+ *   contactMaxCount  > 0: McdIntersect reports at most this many contacts,
+ *                    fewer when the result's own contactMaxCount is lower;
+ *                    0: no cap of its own (the result's cap alone). */
+typedef struct McdRequest {
+    int contactMaxCount;
+} McdRequest;
+
 typedef struct McdModelPair {
     McdModelID model1;
     McdModelID model2;
@@ -31,6 +41,8 @@ typedef struct McdModelPair {
     /* private: the space's */
     void *m_spaceData;
     int m_spaceIndex;
+    /* private: McdModelPairSetRequestPtr's */
+    McdRequest *m_request;
 } McdModelPair;
 typedef McdModelPair *McdModelPairID;
 
@@ -42,6 +54,13 @@ MEPUBLIC McdModelPairID MEAPI McdModelPairCreate(McdModelID model1, McdModelID m
 MEPUBLIC void MEAPI McdModelPairDestroy(McdModelPairID pair);
 /* Re-targets a pair (not between hello and goodbye: warns and ignores). */
 MEPUBLIC void MEAPI McdModelPairReset(McdModelPairID pair, McdModelID model1, McdModelID model2);
+/* The pair keeps the pointer (the request must outlive the pair's use;
+ * NULL removes it; McdModelPairReset clears it). Not between McdHello and
+ * McdGoodbye (the guide's rule): a call there warns and is ignored, as does
+ * one with a negative contactMaxCount. */
+MEPUBLIC void MEAPI McdModelPairSetRequestPtr(McdModelPairID pair, McdRequest *request);
+/* The request set on the pair, NULL if none. */
+MEPUBLIC McdRequest *MEAPI McdModelPairGetRequestPtr(McdModelPairID pair);
 MEPUBLIC void MEAPI McdModelPairSetUserData(McdModelPairID pair, void *data);
 MEPUBLIC void *MEAPI McdModelPairGetUserData(McdModelPairID pair);
 

@@ -142,5 +142,18 @@ MEPUBLIC MeBool MEAPI McdSpaceGetModel(McdSpaceID space, McdSpaceModelIterator *
 MEPUBLIC void MEAPI McdSpaceSetUserData(McdSpaceID space, void *data);
 MEPUBLIC void *MEAPI McdSpaceGetUserData(McdSpaceID space);
 
+/* Older names the guide still uses in its prose (each the same function as
+ * the one named beside it, with the same arguments and result):
+ *   McdSpaceUpdate          McdSpaceUpdateAll
+ *   McdSpaceUpdateAllModels McdSpaceUpdateModels
+ *   McdSpaceIsFrozen        McdSpaceModelIsFrozen
+ *   McdUnfreezeInSpace      McdSpaceUnfreezeModel
+ *   McdDisablePair          McdSpaceDisablePair */
+MEPUBLIC void MEAPI McdSpaceUpdate(McdSpaceID space);
+MEPUBLIC void MEAPI McdSpaceUpdateAllModels(McdSpaceID space);
+MEPUBLIC MeBool MEAPI McdSpaceIsFrozen(McdModelID model);
+MEPUBLIC MeBool MEAPI McdUnfreezeInSpace(McdModelID model);
+MEPUBLIC MeBool MEAPI McdDisablePair(McdModelID model1, McdModelID model2);
+
 ME_EXTERN_C_END
 #endif /* KARMA_MCDSPACE_H */

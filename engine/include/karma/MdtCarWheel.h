@@ -7,8 +7,19 @@
  * turn about the steering axis.
  *
  * Angles and heights:
- *   steering angle  the turn of the hinge axis about the steering axis,
- *                   from where it was when the axes were set (-pi, pi];
+ *   steering angle  the chassis's turn about the steering axis s relative
+ *                   to the wheel, from where they were when the axes were
+ *                   set, in [-pi, pi); rate s . (w_chassis - w_wheel). That
+ *                   is a hinge's convention (MdtHinge.h: body 0 relative to
+ *                   body 1), so a wheel turned +a about s (to the left for
+ *                   s up) reads -a. The steering MOTOR drives the wheel's
+ *                   rate relative to the chassis, s . (w_wheel - w_chassis):
+ *                   a positive desired velocity turns the wheel positively
+ *                   about s and makes the reported angle fall. The guide's
+ *                   QuadBike controller (PASTE_12: motor speed
+ *                   k (target + angle)) relies on these opposite signs, and
+ *                   its handlebar hinge (PASTE_13: hinge angle -target) on
+ *                   the hinge's convention, so both turn the same way;
  *   hinge angle     the wheel's turn about the hinge axis relative to the
  *                   chassis, in [0, 2 pi); rate h . (w_wheel - w_chassis);
  *   height          s . (wheel centre - joint position): how far the wheel

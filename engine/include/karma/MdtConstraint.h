@@ -103,6 +103,18 @@ MEPUBLIC void MEAPI MdtConstraintBodySetAxes(const MdtConstraintID c,
 MEPUBLIC void MEAPI MdtConstraintBodyGetAxes(const MdtConstraintID c,
                                              const unsigned int bodyindex, MeVector3 primary,
                                              MeVector3 ortho);
+/* The guide's older, deprecated names of the three functions above (the
+ * same functions): MdtConstraintSetBothAxis (sic) is MdtConstraintSetAxes,
+ * MdtConstraintGetBothAxes is MdtConstraintGetAxes, MdtConstraintBodyGetBothAxes
+ * is MdtConstraintBodyGetAxes. */
+MEPUBLIC void MEAPI MdtConstraintSetBothAxis(const MdtConstraintID c, const MeReal px,
+                                             const MeReal py, const MeReal pz, const MeReal ox,
+                                             const MeReal oy, const MeReal oz);
+MEPUBLIC void MEAPI MdtConstraintGetBothAxes(const MdtConstraintID c, MeVector3 primary,
+                                             MeVector3 ortho);
+MEPUBLIC void MEAPI MdtConstraintBodyGetBothAxes(const MdtConstraintID c,
+                                                 const unsigned int bodyindex,
+                                                 MeVector3 primary, MeVector3 ortho);
 
 /* Force and torque this constraint applied to body `bodyindex` over the last
  * step, world frame (zero before its first step). */

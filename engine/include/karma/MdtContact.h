@@ -126,7 +126,12 @@ MEPUBLIC int MEAPI MdtContactParamsGetOptions(const MdtContactParamsID p);
 
 /* ---- contacts --------------------------------------------------------------
  * Reset: position at body 0's origin, normal (0,1,0), no direction set,
- * penetration 0, parameters reset. */
+ * penetration 0, parameters reset. Appendix A gives the friction direction
+ * (0,1,0), the same as its normal, which is no direction in the contact
+ * plane; this library leaves it unset instead (the automatic direction
+ * below), the outcome Appendix A's value would have once projected onto the
+ * plane, and a contact whose normal is later set elsewhere does not pick up
+ * a direction nobody chose. */
 MDT_CONSTRAINT_TYPE_DECL(Contact, MdtContactID)
 MDT_CONSTRAINT_COMMON_API(Contact, MdtContactID)
 MDT_CONSTRAINT_POSITION_API(Contact, MdtContactID)

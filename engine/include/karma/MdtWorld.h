@@ -151,6 +151,64 @@ MEPUBLIC void MEAPI MdtWorldSetAutoDisableAngularAccelerationThreshold(const Mdt
                                                                        const MeReal a);
 MEPUBLIC void MEAPI MdtWorldSetAutoDisableAliveWindow(const MdtWorldID world, const MeReal t);
 
+/* Waking by force (the guide's "Automatic Enabling and Disabling of Bodies"):
+ * at the start of each MdtWorldStep a disabled body is enabled when what was
+ * applied to it since the last step would move it past a threshold:
+ *   |force| / mass                      > accelerationThreshold, or
+ *   |inverse inertia (torque)|          > angularAccelerationThreshold, or
+ *   |impulse| / mass                    > velocityThreshold, or
+ *   |inverse inertia (angular impulse)| > angularVelocityThreshold
+ * (gravity is not an applied force). Smaller forces on a disabled body are
+ * dropped at that step, as a disabled body is not stepped. The thresholds
+ * are those of the auto-disable test, so a force that wakes a body also
+ * keeps it from being disabled while it acts. Waking by force happens with
+ * auto-disable on or off, as does waking by a constraint.
+ *
+ * The guide also says the opposite: its question-and-answer section ("I have
+ * dropped an object onto a surface...") has an explicit force NOT wake a
+ * disabled body; the force accumulates until a touch or MdtBodyEnable
+ * enables the body. MdtWorldSetWakeByForce(world, 0) selects that reading
+ * (nothing is woken or dropped); the default, 1, is the chapter's.
+ *
+ * The alive window. The guide gives it two ways: its chapter text as "the
+ * number of evolve steps before an object can be disabled again, after it
+ * has been awakened", its Appendix A as 0.2 (a time: MdtWorldSetAutoDisableAliveWindow
+ * takes a real and the other defaults there are in seconds). The mode picks
+ * the reading:
+ *   MdtAliveWindowIdleSeconds   (default) a partition is disabled once each
+ *                               of its bodies has stayed below every
+ *                               threshold for aliveWindow seconds; enabling
+ *                               a body (waking) restarts its count. So a
+ *                               woken body is never disabled within the
+ *                               window, and neither is a body that is at
+ *                               rest for a single step.
+ *   MdtAliveWindowAwakeSeconds  the chapter's reading in seconds: a body
+ *                               enabled (by MdtBodyEnable or by waking)
+ *                               less than aliveWindow seconds ago is never
+ *                               disabled;
+ *                               after that, its partition is disabled at the
+ *                               first step where every body is below every
+ *                               threshold.
+ *   MdtAliveWindowAwakeSteps    the same, aliveWindow read as a number of
+ *                               steps (the chapter's words). */
+MEPUBLIC void MEAPI MdtWorldSetWakeByForce(const MdtWorldID world, const MeBool on);
+MEPUBLIC MeBool MEAPI MdtWorldGetWakeByForce(const MdtWorldID world);
+
+typedef enum MdtAliveWindowMode {
+    MdtAliveWindowIdleSeconds,
+    MdtAliveWindowAwakeSeconds,
+    MdtAliveWindowAwakeSteps
+} MdtAliveWindowMode;
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAliveWindowMode(const MdtWorldID world,
+                                                          const MdtAliveWindowMode mode);
+MEPUBLIC MdtAliveWindowMode MEAPI MdtWorldGetAutoDisableAliveWindowMode(const MdtWorldID world);
+
+/* Appendix A's DebugDrawOptions (default 0): a bit set the application keeps
+ * for its own debug drawing of the world. The guide gives no bits and this
+ * library draws nothing itself; the value is only stored. */
+MEPUBLIC void MEAPI MdtWorldSetDebugDrawOptions(const MdtWorldID world, const int options);
+MEPUBLIC int MEAPI MdtWorldGetDebugDrawOptions(const MdtWorldID world);
+
 /* Matrix capping: at most `size` rows per partition (0 = no cap). Rows are
  * removed in this order: friction rows, then contacts between two bodies,
  * then contacts with the world, shallowest first (or least important first

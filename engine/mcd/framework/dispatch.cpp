@@ -98,6 +98,9 @@ int MEAPI McdIntersect(McdModelPair *pair, McdIntersectResult *result) {
     const McdInteractions *e = pair->m_interaction;
     if (!e) return 0;  // no interaction for these types: ignored
     const bool swap = e->swap != 0;
+    // The pair's request may lower the cap for this call only.
+    const int resultCap = result->contactMaxCount;
+    result->contactMaxCount = karma::mcd::EffectiveContactCap(pair, resultCap);
     InOrder(pair, swap, [&] {
         result->model1 = pair->model1;  // the interaction's order
         result->model2 = pair->model2;
@@ -106,6 +109,7 @@ int MEAPI McdIntersect(McdModelPair *pair, McdIntersectResult *result) {
     result->model1 = pair->model1;
     result->model2 = pair->model2;
     if (result->contactCount > result->contactMaxCount) result->contactCount = result->contactMaxCount;
+    result->contactMaxCount = resultCap;
     if (result->contactCount < 0) result->contactCount = 0;
     if (swap) TurnRound(result);
     return result->touch;

@@ -76,13 +76,16 @@ MeReal MEAPI MdtCarWheelGetHingeAngleRate(const MdtCarWheelID j) {
   return wheelRelativeRate(j, h);
 }
 
+// The reported steering angle and rate are the chassis's turn relative to
+// the wheel, -phi and s . (w0 - w1), as a hinge reports body 0 relative to
+// body 1 (hinge.cpp); the steering motor drives phi's rate s . (w1 - w0).
 MeReal MEAPI MdtCarWheelGetSteeringAngle(const MdtCarWheelID j) {
-  return ok(j, "MdtCarWheelGetSteeringAngle") ? wheelSteeringAngle(j) : 0;
+  return ok(j, "MdtCarWheelGetSteeringAngle") ? -wheelSteeringAngle(j) : 0;
 }
 
 MeReal MEAPI MdtCarWheelGetSteeringAngleRate(const MdtCarWheelID j) {
   if (!ok(j, "MdtCarWheelGetSteeringAngleRate")) return 0;
-  return wheelRelativeRate(j, wheelGeometry(j).s);
+  return -wheelRelativeRate(j, wheelGeometry(j).s);
 }
 
 void MEAPI MdtCarWheelSetHingeLimitedForceMotor(const MdtCarWheelID j, const MeReal v,

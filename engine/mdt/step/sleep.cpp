@@ -1,7 +1,22 @@
-// sleep.cpp: stage 8 of the step (step.h), auto-disable. A body is idle
-// while its speed, angular speed, acceleration and angular acceleration are
-// all below the world's thresholds; a partition whose bodies have all been
-// idle for the alive window goes to sleep, at rest.
+// sleep.cpp: auto-disable, both ways (MdtWorld.h, "Waking by force" and
+// "The alive window").
+//
+// Stage 8 of the step (step.h): a body is idle while its speed, angular
+// speed, acceleration and angular acceleration are all below the world's
+// thresholds. When a partition goes to sleep depends on the alive-window
+// mode:
+//   IdleSeconds   every body idle for the last aliveWindow seconds
+//                 (idleTime >= aliveWindow; enabling restarts idleTime);
+//   AwakeSeconds  every body idle now and enabled for >= aliveWindow s;
+//   AwakeSteps    every body idle now and enabled for >= aliveWindow steps.
+//
+// Before stage 1 (unless MdtWorldSetWakeByForce(world, 0)), wakeDrivenBodies
+// enables each disabled body whose applied force, torque or impulse would
+// take it past a threshold in one step:
+// |F|/m > a_max, |I^-1 tau| > alpha_max, |J|/m > v_max, |I^-1 Ja| > w_max
+// (I^-1 the world-frame inverse inertia about the centre of mass).
+#include <climits>
+
 #include "step.h"
 
 namespace karma::mdt {
@@ -15,18 +30,69 @@ bool idle(const MdtBody *b, const MdtWorldParams &w) {
          MeVector3Magnitude(b->angularAcceleration) < w.angularAccelerationThreshold;
 }
 
+// Counts one step of body b and says whether the alive window lets it sleep.
+bool windowAllowsSleep(MdtBody *b, const MdtWorldParams &w, MdtAliveWindowMode mode, MeReal h) {
+  const bool still = idle(b, w);
+  b->idleTime = still ? b->idleTime + h : 0;
+  b->awakeTime += h;
+  if (b->awakeSteps < INT_MAX) ++b->awakeSteps;
+  switch (mode) {
+    case MdtAliveWindowAwakeSeconds:
+      return still && b->awakeTime >= w.aliveWindow;
+    case MdtAliveWindowAwakeSteps:
+      return still && (MeReal)b->awakeSteps >= w.aliveWindow;
+    case MdtAliveWindowIdleSeconds:
+    default:
+      return b->idleTime >= w.aliveWindow;
+  }
+}
+
+// Magnitude of the body's world-frame inverse inertia applied to v.
+MeReal angularResponse(const MdtBody *b, const MeVector3 v) {
+  MeVector3 out;
+  applyBodyTensor(out, b, b->invInertia, v);
+  return MeVector3Magnitude(out);
+}
+
+bool drivenPastThresholds(const MdtBody *b, const MdtWorldParams &w) {
+  return MeVector3Magnitude(b->force) * b->invMass > w.accelerationThreshold ||
+         angularResponse(b, b->torque) > w.angularAccelerationThreshold ||
+         MeVector3Magnitude(b->impulse) * b->invMass > w.velocityThreshold ||
+         angularResponse(b, b->angularImpulse) > w.angularVelocityThreshold;
+}
+
+void clearAccumulators(MdtBody *b) {
+  MeVector3Set(b->force, 0, 0, 0);
+  MeVector3Set(b->torque, 0, 0, 0);
+  MeVector3Set(b->impulse, 0, 0, 0);
+  MeVector3Set(b->angularImpulse, 0, 0, 0);
+}
+
 }  // namespace
+
+void wakeDrivenBodies(MdtWorldID world) {
+  MdtWorldPrivate *p = world->priv;
+  if (p->forcesDoNotWake) return;  // the FAQ's reading: forces wait for an enable
+  if (p->enabledCount == (unsigned)MePoolGetUsed(&p->bodies)) return;
+  // Pool order is fine here: each body is decided on its own accumulators.
+  for (void *slot = MePoolGetNextUsed(&p->bodies, nullptr); slot;
+       slot = MePoolGetNextUsed(&p->bodies, slot)) {
+    auto *b = static_cast<MdtBody *>(slot);
+    if (b->enabled) continue;
+    if (drivenPastThresholds(b, world->params))
+      MdtBodyEnable(b);
+    else
+      clearAccumulators(b);
+  }
+}
 
 bool autoDisablePartition(MdtWorldID world, StepScratch &s, const Partition &part, MeReal h) {
   const MdtWorldParams &w = world->params;
+  const MdtAliveWindowMode mode = world->priv->aliveWindowMode;
   bool sleepy = true;
   for (int i = 0; i < part.bodyCount; ++i) {
     MdtBody *b = s.partBodies[(size_t)(part.bodyStart + i)];
-    if (idle(b, w))
-      b->idleTime += h;
-    else
-      b->idleTime = 0;
-    if (b->idleTime < w.aliveWindow) sleepy = false;
+    if (!windowAllowsSleep(b, w, mode, h)) sleepy = false;
   }
   if (!w.autoDisable || !sleepy) return false;
   // Asleep: at rest exactly, so waking up starts from rest. Constraint

@@ -158,6 +158,13 @@ MEPUBLIC int MEAPI RRenderTextureCreate(RRender *rc, char *filename);
  * search path of docs/ARCHITECTURE.md followed). Returns the ID, or -1
  * (and rg is untextured) when all IDs are taken. */
 MEPUBLIC int MEAPI RGraphicSetTexture(RRender *rc, RGraphic *rg, char *filename);
+/* The older names the guide's prose uses for the two functions above (same
+ * arguments, same result): RCreateTextureID is RRenderTextureCreate,
+ * RSetTexture is RGraphicSetTexture. As the guide says, RSetTexture with a
+ * name that has no file leaves the graphic untextured (after one message);
+ * setting its RObjectHeader's m_nTextureID to -1 does it without the look-up. */
+MEPUBLIC int MEAPI RCreateTextureID(RRender *rc, char *filename);
+MEPUBLIC int MEAPI RSetTexture(RRender *rc, RGraphic *rg, char *filename);
 
 /* ---- camera -------------------------------------------------------------- */
 

@@ -130,8 +130,10 @@ TEST(CarWheel, SteeringLockHoldsAgainstTorque) {
     MdtBodyAddTorque(r.wheel, 0, 0, 2);
     MdtWorldStep(r.w, (MeReal)0.01);
   }
-  EXPECT_GT(MdtCarWheelGetSteeringAngle(r.j), 0.05);
-  EXPECT_GT(MdtCarWheelGetSteeringAngleRate(r.j), 1);
+  // The wheel turns positively about z; the reported angle is the chassis
+  // relative to the wheel (MdtCarWheel.h), so it is negative.
+  EXPECT_LT(MdtCarWheelGetSteeringAngle(r.j), -0.05);
+  EXPECT_LT(MdtCarWheelGetSteeringAngleRate(r.j), -1);
 }
 
 TEST(CarWheel, SteeringMotorReachesItsSpeedAndSaturates) {
@@ -141,8 +143,10 @@ TEST(CarWheel, SteeringMotorReachesItsSpeedAndSaturates) {
   MdtCarWheelSetSteeringLimitedForceMotor(r.j, (MeReal)0.5, 100);
   MdtCarWheelEnable(r.j);
   r.run(50);
-  EXPECT_NEAR(MdtCarWheelGetSteeringAngleRate(r.j), 0.5, 1e-3);
-  EXPECT_NEAR(MdtCarWheelGetSteeringAngle(r.j), 0.25, 0.02);
+  // The motor drives the wheel relative to the chassis; the angle and its
+  // rate read the other way round (MdtCarWheel.h).
+  EXPECT_NEAR(MdtCarWheelGetSteeringAngleRate(r.j), -0.5, 1e-3);
+  EXPECT_NEAR(MdtCarWheelGetSteeringAngle(r.j), -0.25, 0.02);
   EXPECT_EQ(MdtCarWheelGetSteeringMotorDesiredVelocity(r.j), (MeReal)0.5);
   EXPECT_EQ(MdtCarWheelGetSteeringMotorMaxForce(r.j), 100);
 }

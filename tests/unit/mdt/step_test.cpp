@@ -39,6 +39,9 @@ TEST(MdtStep, BasicStepsMatchesSemiImplicitEulerClosedForm) {
 
 TEST(MdtStep, DisabledBodiesDoNotMoveAndKeepTheirForces) {
   World w(2);
+  // The guide's Q&A reading: a force does not enable a body (by default it
+  // does, the chapter's reading; MdtWorld.h, "Waking by force").
+  MdtWorldSetWakeByForce(w, 0);
   MdtWorldSetGravity(w, 0, -10, 0);
   MdtBodyID b = MdtBodyCreate(w);
   MdtBodySetPosition(b, 1, 2, 3);

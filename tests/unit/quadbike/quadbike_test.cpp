@@ -191,8 +191,10 @@ double SteeredTurn(double steering, double *yawRate, double *kinematic, double *
   MeVector3 v, w;
   MdtBodyGetLinearVelocity(quadBike.chassisBody, v);
   MdtBodyGetAngularVelocity(quadBike.chassisBody, w);
-  *angleL = (double)MdtCarWheelGetSteeringAngle(quadBike.wheelJoint[FRONT_LEFT]);
-  *angleR = (double)MdtCarWheelGetSteeringAngle(quadBike.wheelJoint[FRONT_RIGHT]);
+  // The wheels' turn relative to the chassis (positive: left): the joint
+  // reports the chassis relative to the wheel (MdtCarWheel.h), hence the minus.
+  *angleL = -(double)MdtCarWheelGetSteeringAngle(quadBike.wheelJoint[FRONT_LEFT]);
+  *angleR = -(double)MdtCarWheelGetSteeringAngle(quadBike.wheelJoint[FRONT_RIGHT]);
   *yawRate = (double)w[1];
   *kinematic = (double)MeVector3Magnitude(v) * std::tan((*angleL + *angleR) / 2) / wheelbase;
   std::printf("steering %+.0f for 1.5 s, now at %.2f m/s: heading turned %+.3f rad; yaw rate %+.3f rad/s "

@@ -1,0 +1,2 @@
+/* qb_main.h: QuadBike's main.c at function scope (tick). */
+#include "quadbike.h"
