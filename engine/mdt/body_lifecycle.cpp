@@ -1,4 +1,11 @@
 // body_lifecycle.cpp: creating, destroying, enabling and disabling bodies.
+//
+// Handles are pointers into the world's body pool, so a destroyed body's
+// slot is handed out again by the next MdtBodyCreate. Between the two, the
+// slot is marked dead (`alive`) and the calls here refuse it with a
+// warning; a collision model still joined to the body is detached by the
+// bridge's body-destroy callback (MstSetWorldHandlers), so it cannot drive
+// the slot's next body.
 #include "MeMessage.h"
 #include "constraint.h"
 
@@ -29,6 +36,18 @@ void initBody(MdtBody *b, MdtWorldID world) {
   updateTransform(b);
 }
 
+bool liveBody(const MdtBody *b, const char *fn) {
+  if (!b) {
+    MeArgumentWarning(fn, "body is NULL");
+    return false;
+  }
+  if (!b->alive) {
+    MeArgumentWarning(fn, "body %p has been destroyed (a stale handle); ignored", (const void *)b);
+    return false;
+  }
+  return true;
+}
+
 }  // namespace karma::mdt
 
 using namespace karma::mdt;
@@ -41,13 +60,18 @@ MdtBodyID MEAPI MdtBodyCreate(const MdtWorldID world) {
   auto *b = static_cast<MdtBody *>(MePoolGetStruct(&p->bodies));
   if (!b) return nullptr;  // the pool has warned once
   initBody(b, world);
+  b->alive = TRUE;
   b->serial = p->nextSerial++;
   return b;
 }
 
 void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   if (!body) return;
+  if (!liveBody(body, "MdtBodyDestroy")) return;  // destroyed twice
   MdtWorldPrivate *p = body->world->priv;
+  // A collision model still joined to the body would go on driving the
+  // body that takes this slot next: the bridge detaches it first.
+  if (body->collisionModel && p->bodyDestroyCB) p->bodyDestroyCB(body, body->collisionModel);
   // Constraints still attached would point at a dead body: disable them and
   // leave them without bodies (the program may set new ones or destroy them).
   for (void *s = MePoolGetNextUsed(&p->constraints, nullptr); s;
@@ -62,11 +86,13 @@ void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   }
   if (body->enabled) --p->enabledCount;
   body->enabled = FALSE;
+  body->alive = FALSE;
+  body->collisionModel = nullptr;
   MePoolPutStruct(&p->bodies, body);
 }
 
 void MEAPI MdtBodyEnable(const MdtBodyID body) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodyEnable", "body is NULL");
+  if (!liveBody(body, "MdtBodyEnable")) return;
   if (body->enabled) return;
   body->enabled = TRUE;
   body->idleTime = 0;
@@ -76,7 +102,7 @@ void MEAPI MdtBodyEnable(const MdtBodyID body) {
 }
 
 void MEAPI MdtBodyDisable(const MdtBodyID body) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodyDisable", "body is NULL");
+  if (!liveBody(body, "MdtBodyDisable")) return;
   if (!body->enabled) return;
   body->enabled = FALSE;
   MdtWorldPrivate *p = body->world->priv;
@@ -85,7 +111,7 @@ void MEAPI MdtBodyDisable(const MdtBodyID body) {
 }
 
 MeBool MEAPI MdtBodyIsEnabled(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, FALSE, "MdtBodyIsEnabled", "body is NULL");
+  if (!liveBody(body, "MdtBodyIsEnabled")) return FALSE;
   return body->enabled ? TRUE : FALSE;
 }
 
@@ -95,7 +121,7 @@ MdtWorldID MEAPI MdtBodyGetWorld(const MdtBodyID body) {
 }
 
 void MEAPI MdtBodySetUserData(const MdtBodyID body, void *data) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodySetUserData", "body is NULL");
+  if (!liveBody(body, "MdtBodySetUserData")) return;
   body->userData = data;
 }
 
@@ -105,7 +131,7 @@ void *MEAPI MdtBodyGetUserData(const MdtBodyID body) {
 }
 
 void MEAPI MdtBodySetSortKey(const MdtBodyID body, const MeI32 key) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodySetSortKey", "body is NULL");
+  if (!liveBody(body, "MdtBodySetSortKey")) return;
   body->sortKey = key;
 }
 
