@@ -3,6 +3,7 @@
 // it was put (no drift, no sinking beyond the contact softness), and a body
 // released in the air falls y(t) = y0 - g t^2 / 2 until it lands.
 #include <algorithm>
+#include <string>
 
 #include "scene_support.h"
 
@@ -46,25 +47,41 @@ RestFigures watchRest(Universe &U, const std::vector<MdtBodyID> &bodies,
   return f;
 }
 
-}  // namespace
-
 // A 500 kg cube resting on a 1 kg cube on the ground (both 1 m), 60 s at
-// 60 Hz with the default settings: the light box must stay put (drift below
-// 1 cm, speed below 0.1 m/s), neither sinks more than 1 cm, and the pair
-// goes to sleep.
-TEST(HardCases, HeavyOnLightStaysPut) {
+// 60 Hz: the light box must stay put (drift below 1 cm, speed below
+// 0.1 m/s), neither sinks more than 1 cm, and the pair goes to sleep.
+RestFigures heavyOnLight(double epsilon) {
   Universe U;
   MdtWorldSetAutoDisable(U.world(), TRUE);
+  if (epsilon > 0) MdtWorldSetEpsilon(U.world(), (MeReal)epsilon);
   McdModelID light = addBox(U, 1, 1, 1, 1, 0, 0.5, 0);
   McdModelID heavy = addBox(U, 1, 1, 1, 500, 0, 1.5, 0);
   const RestFigures f = watchRest(U, {bodyOf(light), bodyOf(heavy)}, {0.5, 1.5}, 1.0 / 60, 60);
-  std::printf("[ figures  ] heavy on light: drift %.4f m, sink %.4f m, top speed %.3f m/s, "
-              "asleep at %.2f s\n",
-              f.drift, f.sink, f.topSpeed, f.asleepAt);
+  std::printf("[ figures  ] heavy on light, epsilon %s: drift %.4f m, sink %.4f m, top speed "
+              "%.3f m/s, asleep at %.2f s\n",
+              epsilon > 0 ? std::to_string(epsilon).c_str() : "default", f.drift, f.sink,
+              f.topSpeed, f.asleepAt);
+  return f;
+}
+
+}  // namespace
+
+TEST(HardCases, HeavyOnLightStaysPut) {
+  const RestFigures f = heavyOnLight(0);
   if (f.drift > 0.01 || f.sink > 0.01 || f.asleepAt < 0)
-    GTEST_SKIP() << "known limit (contact softness and the solver, issue 15; engine/mdt/step): "
-                    "drift " << f.drift << " m, sink " << f.sink << " m, top speed "
-                 << f.topSpeed << " m/s, asleep at " << f.asleepAt << " s";
+    GTEST_SKIP() << "known limit (contact softness epsilon 0.01 gives way under 500 kg and "
+                    "friction then lets the light box go; the solver, issue 15): drift "
+                 << f.drift << " m, sink " << f.sink << " m, top speed " << f.topSpeed
+                 << " m/s, asleep at " << f.asleepAt << " s";
+  EXPECT_LT(f.topSpeed, 0.1);
+}
+
+// The issue's setting that lifts it: epsilon 1e-3.
+TEST(HardCases, HeavyOnLightStaysPutAtEpsilon1e3) {
+  const RestFigures f = heavyOnLight(1e-3);
+  if (f.drift > 0.01 || f.sink > 0.01 || f.asleepAt < 0)
+    GTEST_SKIP() << "known limit even at epsilon 1e-3: drift " << f.drift << " m, sink "
+                 << f.sink << " m, asleep at " << f.asleepAt << " s";
   EXPECT_LT(f.topSpeed, 0.1);
 }
 
@@ -140,6 +157,19 @@ TEST(HardCases, LargeHeavyBoxDoesNotSink) {
   if (f.sink > 1)
     GTEST_SKIP() << "known limit (contact softness epsilon is absolute, issue 15; "
                     "engine/mdt/step): sink " << f.sink << " m";
+  EXPECT_LT(f.drift, 1.0);
+}
+
+// The same box in a world created with mass scale 1e9 (epsilon 0.01 / 1e9).
+TEST(HardCases, LargeHeavyBoxInAMassScaledWorld) {
+  MstUniverseSizes sizes = MstUniverseDefaultSizes;
+  sizes.massScale = (MeReal)1e9;
+  Universe U(sizes);
+  MdtBodyID b = bodyOf(addBox(U, 100, 100, 100, 1e9, 0, 50, 0));
+  const RestFigures f = watchRest(U, {b}, {50}, 1.0 / 60, 10);
+  std::printf("[ figures  ] 100 m 1e9 kg box, mass scale 1e9: sink %.4f m\n", f.sink);
+  if (f.sink > 1)
+    GTEST_SKIP() << "known limit even with mass scale 1e9: sink " << f.sink << " m";
   EXPECT_LT(f.drift, 1.0);
 }
 
