@@ -1,9 +1,12 @@
 // body_lifecycle.cpp: creating, destroying, enabling and disabling bodies.
 //
 // Handles are pointers into the world's body pool, so a destroyed body's
-// slot is handed out again by the next MdtBodyCreate. Between the two, the
-// slot is marked dead (`alive`) and the calls here refuse it with a
-// warning; a collision model still joined to the body is detached by the
+// slot is eventually handed out again. To keep stale handles detectable as
+// long as possible, a destroyed body is retired rather than returned to the
+// pool: it keeps its slot, marked dead (`alive`), in a queue, and
+// MdtBodyCreate reuses the oldest retired slot only once the pool has no
+// other free slot. While retired, the calls here refuse the handle with a
+// warning. A collision model still joined to the body is detached by the
 // bridge's body-destroy callback (MstSetWorldHandlers), so it cannot drive
 // the slot's next body.
 #include "MeMessage.h"
@@ -36,6 +39,28 @@ void initBody(MdtBody *b, MdtWorldID world) {
   updateTransform(b);
 }
 
+void retireBody(MdtWorldPrivate *p, MdtBody *b) {
+  b->nextRetired = nullptr;
+  if (p->retiredTail)
+    p->retiredTail->nextRetired = b;
+  else
+    p->retiredHead = b;
+  p->retiredTail = b;
+  ++p->retiredCount;
+}
+
+// A free slot: from the pool while it has one, else the oldest retired body.
+MdtBody *takeSlot(MdtWorldPrivate *p) {
+  if (MePoolGetUnused(&p->bodies) == 0 && p->retiredHead) {
+    MdtBody *b = p->retiredHead;
+    p->retiredHead = b->nextRetired;
+    if (!p->retiredHead) p->retiredTail = nullptr;
+    --p->retiredCount;
+    return b;
+  }
+  return static_cast<MdtBody *>(MePoolGetStruct(&p->bodies));
+}
+
 bool liveBody(const MdtBody *b, const char *fn) {
   if (!b) {
     MeArgumentWarning(fn, "body is NULL");
@@ -57,7 +82,7 @@ extern "C" {
 MdtBodyID MEAPI MdtBodyCreate(const MdtWorldID world) {
   ME_REQUIRE_ARG_RET(world != nullptr, nullptr, "MdtBodyCreate", "world is NULL");
   MdtWorldPrivate *p = world->priv;
-  auto *b = static_cast<MdtBody *>(MePoolGetStruct(&p->bodies));
+  MdtBody *b = takeSlot(p);
   if (!b) return nullptr;  // the pool has warned once
   initBody(b, world);
   b->alive = TRUE;
@@ -88,7 +113,7 @@ void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   body->enabled = FALSE;
   body->alive = FALSE;
   body->collisionModel = nullptr;
-  MePoolPutStruct(&p->bodies, body);
+  retireBody(p, body);
 }
 
 void MEAPI MdtBodyEnable(const MdtBodyID body) {

@@ -39,6 +39,7 @@ struct MdtBody {
   MeBool fastSpinEnabled;
   MeBool enabled;
   MeBool alive;  // TRUE from MdtBodyCreate to MdtBodyDestroy (stale handles are refused)
+  MdtBody *nextRetired;  // destroyed bodies waiting for reuse, oldest first
   void *userData;
   void *collisionModel;  // the bridge's slot (bridge/mdt_bridge.h); never read here
   MeI32 sortKey;
@@ -70,6 +71,11 @@ struct MdtWorldPrivate {
   // Called by MdtBodyDestroy for a body that still has a collision model
   // (bridge/mdt_bridge.h), before the body goes.
   MdtBodyDestroyCallbackPtr bodyDestroyCB;
+  // Destroyed bodies keep their pool slot, oldest first, until the pool has
+  // no never-used or long-free slot left (body_lifecycle.cpp).
+  MdtBody *retiredHead;
+  MdtBody *retiredTail;
+  unsigned int retiredCount;
   unsigned int maxBodies;
   unsigned int maxConstraints;
   unsigned int enabledCount;

@@ -23,6 +23,33 @@ TEST(HardCases, DestroyedBodyHandleIsRefused) {
   EXPECT_TRUE(warnings.saw("destroyed"));
 }
 
+// A destroyed body's slot is not handed out again while the pool has other
+// free slots, so its handle stays detectable; once the pool is full, the
+// oldest destroyed slot is reused.
+TEST(HardCases, DestroyedSlotIsReusedLast) {
+  World w(3);
+  MdtBodyID a = MdtBodyCreate(w);
+  MdtBodyDestroy(a);
+  MdtBodyID b = MdtBodyCreate(w);
+  EXPECT_NE(b, a);
+  {
+    WarningCapture warnings;
+    MdtBodyEnable(a);
+    EXPECT_TRUE(warnings.saw("destroyed"));
+  }
+  MdtBodyID c = MdtBodyCreate(w);
+  EXPECT_NE(c, a);
+  EXPECT_EQ(MdtWorldGetBodyCount(w), 2u);
+  MdtBodyID d = MdtBodyCreate(w);  // the pool is full: the retired slot comes back
+  EXPECT_EQ(d, a);
+  EXPECT_EQ(MdtWorldGetBodyCount(w), 3u);
+  WarningCapture warnings;
+  MdtBodyEnable(d);
+  EXPECT_TRUE(MdtBodyIsEnabled(d));
+  EXPECT_EQ(warnings.count(), 0u);
+  EXPECT_EQ(MdtBodyCreate(w), nullptr);  // and then the pool is exhausted
+}
+
 TEST(HardCases, ModelOfADestroyedBodyDoesNotDriveTheNextBody) {
   Universe U;
   McdModelID m = addBox(U, 1, 1, 1, 1, 0, 5, 0);
