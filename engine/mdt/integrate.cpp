@@ -65,9 +65,8 @@ namespace {
 // (w x Iw w = 0 there). The matrix is always invertible (its symmetric part
 // is Iw). The price: the free wobble of a spinner is damped by that factor
 // (it should precess at constant size), negligible while h Omega << 1.
-// Before 2026-11-30 the term was explicit unless the body had a fast-spin
-// axis; a rag doll's capsule limb rolling on the ground then spun itself
-// up and tore the doll apart (tests/unit/scenes, RagdollStaysConnected).
+// Explicitly, a rag doll's capsule limb rolling on the ground spins itself
+// up and tears the doll apart (tests/unit/scenes, RagdollStaysConnected).
 void gyroscopicStep(const MdtBody *b, MECONSTMATRIX MeMatrix3 Iw, MeReal h, MeVector3 dw) {
   const MeReal *w = b->angularVelocity;
   MeVector3 L, f;

@@ -6,8 +6,9 @@
 // the step is in w1). Over the step the body then turns freely: L is
 // constant in the world while its body-frame image Lb obeys Euler's equation
 //   dLb/dt = Lb x Ib^-1 Lb.
-// The step turns the body about one body-frame axis wm by the angle h |wm|,
-// so Lb1 = Rot(wm, -h |wm|) Lb0 (L stays fixed in the world, |Lb| is kept
+// The step turns the body about one body-frame axis wm by the angle
+// phi = turnAngle(|wm|, h) (h |wm| up to one radian per step, see below), so
+// Lb1 = Rot(wm, -phi) Lb0 (L stays fixed in the world, |Lb| is kept
 // exactly), with wm chosen as the midpoint velocity
 //   wm = Ib^-1 m,   m = (Lb0 + Lb1) / 2.
 // Then E1 - E0 = (1/2) (Lb1 - Lb0) . Ib^-1 (Lb1 + Lb0) = (Lb1 - Lb0) . wm = 0,
@@ -16,7 +17,12 @@
 // Lie-Poisson midpoint idea (cf. Hairer, Lubich, Wanner, "Geometric
 // Numerical Integration", VII.5, where the Cayley rotation is used); the
 // exact angle h |wm| keeps a spin about a principal axis exact (Lb0 is
-// then along wm and m = Lb0). No damping is added.
+// then along wm and m = Lb0). No damping is added. Above one radian per
+// step the angle is compressed (below 1 + pi/2 at any speed): a fast
+// spinner whose axis also moves (a top, a wheel) then moves its off-axis
+// points by chords its constraints, linear in h w, can follow; turned by
+// the full angle near or beyond pi per step, a top at 200 rad/s on a ball
+// joint flies apart at 1/60 s (tests/hard_cases, docs/STABILITY.md).
 //
 // m solves F(m) = 2 m - Lb0 - Rot(Ib^-1 m, -h |Ib^-1 m|) Lb0 = 0 by Newton's
 // method from m = Lb0, the Jacobian by forward differences (step
@@ -32,6 +38,7 @@ constexpr int kNewtonIterations = 12;
 
 // The angle turned in one step at the speed s: h s up to one radian, then
 // phi = 1 + atan(h s - 1), smooth at 1 and below 1 + pi/2 at any speed.
+// Energy and |L| are kept whatever the angle.
 MeReal turnAngle(MeReal s, MeReal h) {
   const MeReal x = h * s;
   return x <= 1 ? x : 1 + MeAtan2(x - 1, 1);
@@ -64,6 +71,7 @@ void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, M
                            MeVector3 m) {
   MeVector3Copy(m, Lb0);
   const MeReal size = MeVector3Magnitude(Lb0);
+  if (!(size > 0)) return;  // at rest: m = Lb0 = 0
   const MeReal tol = 4 * ME_REAL_EPSILON * size;
   const MeReal delta = MeSqrt(ME_REAL_EPSILON) * size;  // forward-difference step
   for (int it = 0; it < kNewtonIterations; ++it) {
