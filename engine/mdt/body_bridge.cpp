@@ -32,6 +32,11 @@ void MEAPI MdtWorldSetBodyEnableCallback(const MdtWorldID world, MdtBodyEnableCa
   world->priv->bodyEnableData = data;
 }
 
+void MEAPI MdtWorldSetBodyDestroyCallback(MdtWorldID world, MdtBodyDestroyCallbackPtr cb) {
+  ME_REQUIRE_ARG(world != nullptr, "MdtWorldSetBodyDestroyCallback", "world is NULL");
+  world->priv->bodyDestroyCB = cb;
+}
+
 MdtBodyEnableCallbackPtr MEAPI MdtWorldGetBodyEnableCallback(const MdtWorldID world, void **data) {
   ME_REQUIRE_ARG_RET(world != nullptr, nullptr, "MdtWorldGetBodyEnableCallback", "world is NULL");
   if (data) *data = world->priv->bodyEnableData;

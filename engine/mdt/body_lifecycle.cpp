@@ -1,4 +1,14 @@
 // body_lifecycle.cpp: creating, destroying, enabling and disabling bodies.
+//
+// Handles are pointers into the world's body pool, so a destroyed body's
+// slot is eventually handed out again. To keep stale handles detectable as
+// long as possible, a destroyed body is retired rather than returned to the
+// pool: it keeps its slot, marked dead (`alive`), in a queue, and
+// MdtBodyCreate reuses the oldest retired slot only once the pool has no
+// other free slot. While retired, the calls here refuse the handle with a
+// warning. A collision model still joined to the body is detached by the
+// bridge's body-destroy callback (MstSetWorldHandlers), so it cannot drive
+// the slot's next body.
 #include "MeMessage.h"
 #include "constraint.h"
 
@@ -29,6 +39,40 @@ void initBody(MdtBody *b, MdtWorldID world) {
   updateTransform(b);
 }
 
+void retireBody(MdtWorldPrivate *p, MdtBody *b) {
+  b->nextRetired = nullptr;
+  if (p->retiredTail)
+    p->retiredTail->nextRetired = b;
+  else
+    p->retiredHead = b;
+  p->retiredTail = b;
+  ++p->retiredCount;
+}
+
+// A free slot: from the pool while it has one, else the oldest retired body.
+MdtBody *takeSlot(MdtWorldPrivate *p) {
+  if (MePoolGetUnused(&p->bodies) == 0 && p->retiredHead) {
+    MdtBody *b = p->retiredHead;
+    p->retiredHead = b->nextRetired;
+    if (!p->retiredHead) p->retiredTail = nullptr;
+    --p->retiredCount;
+    return b;
+  }
+  return static_cast<MdtBody *>(MePoolGetStruct(&p->bodies));
+}
+
+bool liveBody(const MdtBody *b, const char *fn) {
+  if (!b) {
+    MeArgumentWarning(fn, "body is NULL");
+    return false;
+  }
+  if (!b->alive) {
+    MeArgumentWarning(fn, "body %p has been destroyed (a stale handle); ignored", (const void *)b);
+    return false;
+  }
+  return true;
+}
+
 }  // namespace karma::mdt
 
 using namespace karma::mdt;
@@ -38,16 +82,21 @@ extern "C" {
 MdtBodyID MEAPI MdtBodyCreate(const MdtWorldID world) {
   ME_REQUIRE_ARG_RET(world != nullptr, nullptr, "MdtBodyCreate", "world is NULL");
   MdtWorldPrivate *p = world->priv;
-  auto *b = static_cast<MdtBody *>(MePoolGetStruct(&p->bodies));
+  MdtBody *b = takeSlot(p);
   if (!b) return nullptr;  // the pool has warned once
   initBody(b, world);
+  b->alive = TRUE;
   b->serial = p->nextSerial++;
   return b;
 }
 
 void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   if (!body) return;
+  if (!liveBody(body, "MdtBodyDestroy")) return;  // destroyed twice
   MdtWorldPrivate *p = body->world->priv;
+  // A collision model still joined to the body would go on driving the
+  // body that takes this slot next: the bridge detaches it first.
+  if (body->collisionModel && p->bodyDestroyCB) p->bodyDestroyCB(body, body->collisionModel);
   // Constraints still attached would point at a dead body: disable them and
   // leave them without bodies (the program may set new ones or destroy them).
   for (void *s = MePoolGetNextUsed(&p->constraints, nullptr); s;
@@ -62,11 +111,13 @@ void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   }
   if (body->enabled) --p->enabledCount;
   body->enabled = FALSE;
-  MePoolPutStruct(&p->bodies, body);
+  body->alive = FALSE;
+  body->collisionModel = nullptr;
+  retireBody(p, body);
 }
 
 void MEAPI MdtBodyEnable(const MdtBodyID body) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodyEnable", "body is NULL");
+  if (!liveBody(body, "MdtBodyEnable")) return;
   if (body->enabled) return;
   body->enabled = TRUE;
   body->idleTime = 0;
@@ -78,7 +129,7 @@ void MEAPI MdtBodyEnable(const MdtBodyID body) {
 }
 
 void MEAPI MdtBodyDisable(const MdtBodyID body) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodyDisable", "body is NULL");
+  if (!liveBody(body, "MdtBodyDisable")) return;
   if (!body->enabled) return;
   body->enabled = FALSE;
   MdtWorldPrivate *p = body->world->priv;
@@ -87,7 +138,7 @@ void MEAPI MdtBodyDisable(const MdtBodyID body) {
 }
 
 MeBool MEAPI MdtBodyIsEnabled(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, FALSE, "MdtBodyIsEnabled", "body is NULL");
+  if (!liveBody(body, "MdtBodyIsEnabled")) return FALSE;
   return body->enabled ? TRUE : FALSE;
 }
 
@@ -97,7 +148,7 @@ MdtWorldID MEAPI MdtBodyGetWorld(const MdtBodyID body) {
 }
 
 void MEAPI MdtBodySetUserData(const MdtBodyID body, void *data) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodySetUserData", "body is NULL");
+  if (!liveBody(body, "MdtBodySetUserData")) return;
   body->userData = data;
 }
 
@@ -107,7 +158,7 @@ void *MEAPI MdtBodyGetUserData(const MdtBodyID body) {
 }
 
 void MEAPI MdtBodySetSortKey(const MdtBodyID body, const MeI32 key) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodySetSortKey", "body is NULL");
+  if (!liveBody(body, "MdtBodySetSortKey")) return;
   body->sortKey = key;
 }
 

@@ -6,17 +6,24 @@
 //   F   = accumulated force - cL v                 (linear damping as drag)
 //   v'  = v + h (g + F/m) + J/m                    (J: accumulated impulse)
 //   tau = accumulated torque - cA w                (Iw = R^T Ib R, world frame)
-//   w'  = w + Iw^-1 (h tau + Ja) + dw_gyro         (Ja: angular impulse)
+//   w'  = w + Iw^-1 (h tau + Ja)                   (Ja: angular impulse)
 //   x'  = x + h v'
-//   q'  = q turned by w' over h (MeQuaternionFiniteRotation; exact for
-//         constant w'). With a fast-spin axis a in use, see advanceBody.
+//   q'  = q turned freely over h with the angular momentum Iw w' held fixed
+//         in the world (freeRotationDrift, rotation_drift.cpp); the stored
+//         angular velocity is the one the turn ends with.
 //
-// The gyroscopic term w x (Iw w) is linearly implicit for every body (see
-// gyroscopicStep): explicitly it feeds any body spinning about an axis of
-// unequal inertia (a capsule rolling on the ground, a wheel) at h Omega
-// near 1. Constraint impulses are added
-// between the velocity prediction and the position update (step.cpp):
-//   v' = vPred + M^-1 J^T lambda.
+// The gyroscopic effect w x Iw w lives in that turn: it keeps the world
+// angular momentum and the kinetic energy of a free body exactly, with no
+// damping, at any step and spin, and it precesses a heavy top at the
+// gyroscopic rate without a fast-spin axis (tests/hard_cases).
+//
+// A body with a fast-spin axis a keeps the older scheme (see advanceBody):
+// the gyroscopic term linearly implicit in w' (gyroscopicStep; it damps
+// the wobble of a spinner by 1 / sqrt(1 + (h Omega)^2) per step), then
+// the spin about a and the remaining turn applied one after the other.
+//
+// Constraint impulses are added between the velocity prediction and the
+// position update (step.cpp): w' = wPred + Iw^-1 J^T lambda.
 #include "MeMessage.h"
 #include "mdt_internal.h"
 
@@ -43,7 +50,8 @@ void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 te
 
 namespace {
 
-// The gyroscopic velocity change, linearly implicit (every body).
+// The gyroscopic velocity change, linearly implicit (bodies with a
+// fast-spin axis; every other body turns by freeRotationDrift).
 //
 // Explicitly, dw = -h Iw^-1 (w x Iw w). For a wheel spinning at S about a
 // (inertia Is about a, Ia across), the part of w across a then turns at
@@ -57,9 +65,8 @@ namespace {
 // (w x Iw w = 0 there). The matrix is always invertible (its symmetric part
 // is Iw). The price: the free wobble of a spinner is damped by that factor
 // (it should precess at constant size), negligible while h Omega << 1.
-// Before 2026-11-30 the term was explicit unless the body had a fast-spin
-// axis; a rag doll's capsule limb rolling on the ground then spun itself
-// up and tore the doll apart (tests/unit/scenes, RagdollStaysConnected).
+// Explicitly, a rag doll's capsule limb rolling on the ground spins itself
+// up and tears the doll apart (tests/unit/scenes, RagdollStaysConnected).
 void gyroscopicStep(const MdtBody *b, MECONSTMATRIX MeMatrix3 Iw, MeReal h, MeVector3 dw) {
   const MeReal *w = b->angularVelocity;
   MeVector3 L, f;
@@ -113,8 +120,10 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
       e[k] = 1;
       applyBodyTensor(Iw[k], b, b->inertia, e);  // symmetric: row k = column k
     }
-    gyroscopicStep(b, Iw, h, dw);
-    MeVector3Add(b->wPred, b->wPred, dw);
+    if (b->fastSpinEnabled) {
+      gyroscopicStep(b, Iw, h, dw);
+      MeVector3Add(b->wPred, b->wPred, dw);
+    }
   }
 
   // World-frame inverse inertia for the constraint response:
@@ -173,7 +182,15 @@ void advanceBody(MdtBody *b, MeReal h) {
     MeQuaternionFiniteRotation(q1, par, h);
     MeQuaternionFiniteRotation(q1, perp, h);
   } else {
-    MeQuaternionFiniteRotation(q1, w1, h);
+    MeVector3 turn, wEndBody;
+    freeRotationDrift(b, w1, h, turn, wEndBody);
+    MeQuaternionFiniteRotation(q1, turn, h);
+    // The angular velocity at the end of the turn, in the world frame.
+    MeMatrix3 R1;
+    MeMatrix4 tm1;
+    MeQuaternionToTM(tm1, q1, b->position);
+    MeMatrix4TMGetRotation(R1, tm1);
+    MeMatrix3TransposeMultiplyVector(w1, R1, wEndBody);
   }
 
   {

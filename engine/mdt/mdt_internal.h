@@ -5,6 +5,7 @@
 #include "MdtBody.h"
 #include "MdtWorld.h"
 #include "MePool.h"
+#include "bridge/mdt_bridge.h"
 
 #include <cmath>
 #include <cstdint>
@@ -37,6 +38,8 @@ struct MdtBody {
   MeVector3 fastSpinAxis;
   MeBool fastSpinEnabled;
   MeBool enabled;
+  MeBool alive;  // TRUE from MdtBodyCreate to MdtBodyDestroy (stale handles are refused)
+  MdtBody *nextRetired;  // destroyed bodies waiting for reuse, oldest first
   void *userData;
   void *collisionModel;  // the bridge's slot (bridge/mdt_bridge.h); never read here
   MeI32 sortKey;
@@ -67,6 +70,14 @@ struct MdtWorldPrivate {
   MdtContactImportanceCBPtr importance;
   MdtBodyEnableCallbackPtr bodyEnableCB;  // called by MdtBodyEnable / MdtBodyDisable
   void *bodyEnableData;
+  // Called by MdtBodyDestroy for a body that still has a collision model
+  // (bridge/mdt_bridge.h), before the body goes.
+  MdtBodyDestroyCallbackPtr bodyDestroyCB;
+  // Destroyed bodies keep their pool slot, oldest first, until the pool has
+  // no never-used or long-free slot left (body_lifecycle.cpp).
+  MdtBody *retiredHead;
+  MdtBody *retiredTail;
+  unsigned int retiredCount;
   unsigned int maxBodies;
   unsigned int maxConstraints;
   unsigned int enabledCount;
@@ -104,6 +115,12 @@ void initBody(MdtBody *b, MdtWorldID world);
 void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h);
 void applyImpulse(MdtBody *b, const MeVector3 linear, const MeVector3 angular);
 void advanceBody(MdtBody *b, MeReal h);
+// The torque-free turn over h of a body whose angular velocity is w1 at the
+// start (rotation_drift.cpp): `turn` is the world angular velocity to hold
+// over h, `wEndBody` the body-frame angular velocity at the end; the world
+// angular momentum and the kinetic energy are kept.
+void freeRotationDrift(const MdtBody *b, const MeVector3 w1, MeReal h, MeVector3 turn,
+                       MeVector3 wEndBody);
 // w = R^T (Ib (R v)): a world vector through a body-frame tensor.
 void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor,
                      const MeVector3 v);

@@ -102,7 +102,8 @@ unsigned int MEAPI MdtWorldGetEnabledBodyCount(const MdtWorldID world) {
 
 unsigned int MEAPI MdtWorldGetBodyCount(const MdtWorldID world) {
   ME_REQUIRE_ARG_RET(world != nullptr, 0u, "MdtWorldGetBodyCount", "world is NULL");
-  return (unsigned int)MePoolGetUsed(&world->priv->bodies);
+  // Destroyed bodies waiting for reuse still hold their pool slots.
+  return (unsigned int)MePoolGetUsed(&world->priv->bodies) - world->priv->retiredCount;
 }
 
 unsigned int MEAPI MdtWorldGetMaxBodies(const MdtWorldID world) {

@@ -24,6 +24,24 @@ void MEAPI BodyEnableHandler(MdtBodyID body, MeBool enabled, void *) {
     }
 }
 
+// MdtBodyDestroy of a body that still has a model (the program destroyed
+// the body alone): the model loses its contacts, leaves its space and is
+// left without a body, so it neither collides with a dead pose nor drives
+// the body that takes the freed slot next.
+void MEAPI BodyDestroyHandler(MdtBodyID body, void *slot) {
+    auto model = static_cast<McdModelID>(slot);
+    if (!model || McdModelGetBody(model) != body) return;
+    MeWarning(0,
+              "MdtBodyDestroy: body %p was still the body of collision model %p; the model "
+              "was taken out of its space and left without a body (MstModelAndBodyDestroy "
+              "destroys both)",
+              (void *)body, (void *)model);
+    // Between steps the universe's space is in a change block; outside one
+    // the removal warns and the model stays in the space, bodiless.
+    if (McdModelGetSpace(model)) karma::mst::RemoveModelAndItsContacts(model, "MdtBodyDestroy");
+    McdModelSetBody(model, nullptr);
+}
+
 }  // namespace
 
 extern "C" {
@@ -75,6 +93,7 @@ void MEAPI MstAutoSetMassProperties(MdtBodyID body, McdGeometryID geometry, MeRe
 void MEAPI MstSetWorldHandlers(MdtWorldID world) {
     ME_REQUIRE_ARG(world != nullptr, "MstSetWorldHandlers", "world is NULL");
     MdtWorldSetBodyEnableCallback(world, BodyEnableHandler, nullptr);
+    MdtWorldSetBodyDestroyCallback(world, BodyDestroyHandler);
 }
 
 }  // extern "C"

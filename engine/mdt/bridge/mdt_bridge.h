@@ -8,10 +8,15 @@
  *  - One collision-model slot per body (a void *, NULL by default, never
  *    read by Mdt): McdModelSetBody stores the model there so the world's
  *    body-enable callback (MstSetWorldHandlers) can find the model of a body
- *    that Mdt enables or disables. */
+ *    that Mdt enables or disables.
+ *  - A body-destroy callback: MdtBodyDestroy calls it, while the body is
+ *    still valid, for a body whose collision-model slot is set, so the
+ *    bridge can detach the model (MstSetWorldHandlers) instead of leaving
+ *    it to drive whichever body takes the freed slot next. */
 #ifndef KARMA_MDT_BRIDGE_H
 #define KARMA_MDT_BRIDGE_H
 #include "MdtBody.h"
+#include "MdtWorld.h"
 
 ME_EXTERN_C_BEGIN
 
@@ -19,6 +24,8 @@ MEPUBLIC MeReal *MEAPI MdtBodyGetLinearVelocityPtr(const MdtBodyID body);
 MEPUBLIC MeReal *MEAPI MdtBodyGetAngularVelocityPtr(const MdtBodyID body);
 MEPUBLIC void MEAPI MdtBodySetCollisionModel(const MdtBodyID body, void *model);
 MEPUBLIC void *MEAPI MdtBodyGetCollisionModel(const MdtBodyID body);
+typedef void(MEAPI *MdtBodyDestroyCallbackPtr)(MdtBodyID body, void *model);
+MEPUBLIC void MEAPI MdtWorldSetBodyDestroyCallback(MdtWorldID world, MdtBodyDestroyCallbackPtr cb);
 
 ME_EXTERN_C_END
 #endif

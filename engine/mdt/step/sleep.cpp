@@ -10,6 +10,14 @@
 //   AwakeSeconds  every body idle now and enabled for >= aliveWindow s;
 //   AwakeSteps    every body idle now and enabled for >= aliveWindow steps.
 //
+// A body in free fall accelerates at |g| whatever the world's scale, while
+// one held up by contacts or joints accelerates at ~0. The acceleration
+// threshold scales with the world's length scale (0.5 l: 50 m/s^2 at
+// l = 100), so on its own it can exceed |g| and put a falling body to
+// sleep in mid-air. A body therefore counts as idle only while its
+// acceleration is also below |g| / 2: whatever the thresholds, a body
+// still accelerating under gravity stays awake.
+//
 // Before stage 1 (unless MdtWorldSetWakeByForce(world, 0)), wakeDrivenBodies
 // enables each disabled body whose applied force, torque or impulse would
 // take it past a threshold in one step:
@@ -24,9 +32,12 @@ namespace karma::mdt {
 namespace {
 
 bool idle(const MdtBody *b, const MdtWorldParams &w) {
+  const MeReal g = MeVector3Magnitude(w.gravity);
+  const MeReal a = MeVector3Magnitude(b->acceleration);
+  if (g > 0 && !(a < g / 2)) return false;
   return MeVector3Magnitude(b->velocity) < w.velocityThreshold &&
          MeVector3Magnitude(b->angularVelocity) < w.angularVelocityThreshold &&
-         MeVector3Magnitude(b->acceleration) < w.accelerationThreshold &&
+         a < w.accelerationThreshold &&
          MeVector3Magnitude(b->angularAcceleration) < w.angularAccelerationThreshold;
 }
 
