@@ -137,6 +137,7 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
     if (stepPartition(world, s, part, ctx)) ++s.stats.sleeping;
   }
   s.stats.partitions = (int)s.partitions.size();
+  s.solveWarnings.endStep(stepSize);
 }
 
 MeReal MEAPI MdtWorldGetLastStepSize(const MdtWorldID world) {

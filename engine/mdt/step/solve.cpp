@@ -26,6 +26,8 @@ std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpace
   if (report.solved) ++s.stats.keaSolved;
   else ++s.stats.keaUnsolved;
   if (report.cycle) ++s.stats.keaCycles;
+  if (!iterative && !report.solved && !report.badInput)
+    s.solveWarnings.note(report.cycle ? UnsolvedCause::Cycle : UnsolvedCause::IterationCap, report.residual);
   if (report.residual > s.stats.keaResidual) s.stats.keaResidual = report.residual;
   return lambda;
 }

@@ -41,6 +41,7 @@
 #include "constraint.h"
 #include "partition_solver.h"
 #include "problem.h"
+#include "solve_warnings.h"
 
 namespace karma::mdt {
 
@@ -77,6 +78,7 @@ struct StepScratch {
   PartitionSolver *activeSet;                  // the solvers, one of each
   PartitionSolver *pgs;
   MdtWorldStepStats stats;
+  SolveWarnings solveWarnings;                 // the exact solver's, rate-limited
 };
 
 // Stage 1: fills bodies, constraints, partitions (waking bodies).
