@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "Mdt.h"
+#include "mdt/mdt_test_support.h"
 
 namespace hard {
 
@@ -65,16 +66,8 @@ inline double rotationalEnergy(MdtBodyID b, const double I[3]) {
 
 inline double norm(const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
-inline bool bodyFinite(MdtBodyID b) {
-  MeVector3 x, v, w;
-  MeVector4 q;
-  MdtBodyGetPosition(b, x);
-  MdtBodyGetLinearVelocity(b, v);
-  MdtBodyGetAngularVelocity(b, w);
-  MdtBodyGetQuaternion(b, q);
-  return MeVector3AllFinite(x) && MeVector3AllFinite(v) && MeVector3AllFinite(w) &&
-         std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]) && std::isfinite(q[3]);
-}
+// True if every component of the body's state is finite.
+using mdt_test::bodyFinite;
 
 inline void setDiagonalInertia(MdtBodyID b, double a, double c, double d) {
   const MeMatrix3 I = {{(MeReal)a, 0, 0}, {0, (MeReal)c, 0}, {0, 0, (MeReal)d}};

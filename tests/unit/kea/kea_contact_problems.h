@@ -1,7 +1,8 @@
 // kea_contact_problems.h: boxed LCPs with the structure of the step's
 // partitions, built from bodies and Jacobian rows as Mdt builds them
 // (A = J M^-1 J^T + soft on the diagonal, CSR with both triangles), for the
-// Kea tests (kea_warm_test.cpp, kea_alloc_test.cpp) and bench/kea_bench.cpp.
+// Kea tests (kea_warm_test.cpp, kea_factor_memory_test.cpp, kea_alloc_test.cpp)
+// and bench/kea_bench.cpp, with two small helpers of those tests.
 //
 //  - Stack: `boxes` unit cubes (1 kg) on the ground, 4 corner contacts per
 //    touching face, each contact a normal row [0, inf) and two friction rows
@@ -25,11 +26,25 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace kea_test {
 
 using Vec3 = std::array<double, 3>;
+
+// Largest magnitude of a solution vector (the scale of its tolerances).
+inline double MaxAbs(const std::vector<MeReal> &v) {
+  double m = 0;
+  for (MeReal x : v) m = std::max(m, std::fabs(double(x)));
+  return m;
+}
+
+// A KeaWorkspace that destroys itself.
+struct WorkspaceDeleter {
+  void operator()(karma::kea::KeaWorkspace *w) const { karma::kea::KeaWorkspaceDestroy(w); }
+};
+using Workspace = std::unique_ptr<karma::kea::KeaWorkspace, WorkspaceDeleter>;
 
 // The diagonal softness of every row: Mdt's default world epsilon for
 // unit masses (0.01).

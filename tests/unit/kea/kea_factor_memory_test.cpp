@@ -51,16 +51,9 @@ std::vector<Named> Problems() {
   return all;
 }
 
-double MaxAbs(const std::vector<MeReal> &v) {
-  double m = 0;
-  for (MeReal x : v) m = std::max(m, std::fabs(double(x)));
-  return m;
-}
+using kea_test::MaxAbs;
 
-struct WorkspaceDeleter {
-  void operator()(KeaWorkspace *w) const { KeaWorkspaceDestroy(w); }
-};
-using Workspace = std::unique_ptr<KeaWorkspace, WorkspaceDeleter>;
+using kea_test::Workspace;
 
 // The problem with its matrix scaled symmetrically, A' = S A S with
 // S = diag(1 + size * jitter_i) (still symmetric positive definite, same

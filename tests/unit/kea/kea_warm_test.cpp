@@ -43,15 +43,9 @@ std::vector<Named> Problems() {
   return all;
 }
 
-double MaxAbs(const std::vector<MeReal> &v) {
-  double m = 0;
-  for (MeReal x : v) m = std::max(m, std::fabs(double(x)));
-  return m;
-}
+using kea_test::MaxAbs;
 
-struct WorkspaceDeleter {
-  void operator()(KeaWorkspace *w) const { KeaWorkspaceDestroy(w); }
-};
+using kea_test::Workspace;
 
 }  // namespace
 
@@ -99,7 +93,7 @@ TEST(KeaWarmStart, PerturbedProblemConvergesInFewSolves) {
 }
 
 TEST(KeaWarmStart, WorkspaceEntryMatchesTheAllocatingOneBitForBit) {
-  std::unique_ptr<KeaWorkspace, WorkspaceDeleter> workspace(KeaWorkspaceCreate());
+  Workspace workspace(KeaWorkspaceCreate());
   KeaResult reused;
   for (KeaMethod method : {KeaMethod::ActiveSet, KeaMethod::PGS}) {
     // Largest first, so that later solves run in a grown workspace.
@@ -146,7 +140,7 @@ TEST(KeaFactorisations, SparseAndEnvelopePathsAgree) {
 TEST(KeaWarmStart, ResultReusedAsItsOwnWarmStart) {
   // A caller may warm-start a workspace solve from the result it writes
   // into: the answer is the same as from a copy.
-  std::unique_ptr<KeaWorkspace, WorkspaceDeleter> workspace(KeaWorkspaceCreate());
+  Workspace workspace(KeaWorkspaceCreate());
   for (const Named &t : Problems()) {
     for (KeaMethod method : {KeaMethod::ActiveSet, KeaMethod::PGS}) {
       KeaOptions o;
