@@ -12,10 +12,10 @@
 int main(int argc, char **argv) {
   using namespace karma::scenes;
   const char *name = argc > 1 ? argv[1] : "";
-  std::unique_ptr<AnchorScene> scene = !std::strcmp(name, "car")       ? MakeCar()
-                                       : !std::strcmp(name, "topple")  ? MakeTopple()
-                                       : !std::strcmp(name, "stack21") ? MakeStack21()
-                                       : !std::strcmp(name, "ragdoll") ? MakeRagdoll()
+  std::unique_ptr<AnchorScene> scene = !std::strcmp(name, "car")        ? MakeCar()
+                                       : !std::strcmp(name, "topple")   ? MakeTopple()
+                                       : !std::strcmp(name, "stack21")  ? MakeStack21()
+                                       : !std::strcmp(name, "ragdoll")  ? MakeRagdoll()
                                        : !std::strcmp(name, "pile1000") ? MakePile1000()
                                                                         : nullptr;
   if (!scene) {
@@ -30,8 +30,8 @@ int main(int argc, char **argv) {
     if (i < first) continue;
     MdtWorldStepStats s;
     MdtWorldGetStepStats(scene->world(), &s);
-    std::printf("%d %d %d %d %d %d %d %d %d %.3g\n", i, s.partitions, s.rows, s.keaIterations,
-                s.keaFactorizations, s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual);
+    std::printf("%d %d %d %d %d %d %d %d %d %.3g\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
+                s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual);
   }
   return 0;
 }

@@ -57,8 +57,7 @@ void BM_Scene(benchmark::State &state) {
       scene->step();
       sum.add(scene->world());
     }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     state.PauseTiming();
     sum.report(state, steps);
     const karma::scenes::SceneFigures f = scene->finish();
@@ -79,7 +78,13 @@ BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeCar)->Name("car")->Iterations(1)
 BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeTopple)->Name("topple")->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeStack21)->Name("stack21")->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeRagdoll)->Name("ragdoll")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakePile1000)->Name("pile1000")->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakePile1000, 90)->Name("pile1000_first90")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakePile1000)
+    ->Name("pile1000")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakePile1000, 90)
+    ->Name("pile1000_first90")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -43,11 +43,11 @@ double CpuUs() {
 }
 
 struct Figures {
-  double dynamicsUs = 0;  // per frame, mean
-  double peakUs = 0;      // the slowest frame's dynamics
-  double collisionUs = 0; // per frame, mean
-  double iterations = 0;  // Kea's, per substep
-  double rows = 0;        // per substep
+  double dynamicsUs = 0;   // per frame, mean
+  double peakUs = 0;       // the slowest frame's dynamics
+  double collisionUs = 0;  // per frame, mean
+  double iterations = 0;   // Kea's, per substep
+  double rows = 0;         // per substep
   int frames = 0, substeps = 0;
 };
 

@@ -42,8 +42,7 @@ struct Car {
       MdtCarWheelSetPosition(joint[i], x, kWheelRadius, z);
       MdtCarWheelSetSteeringAndHingeAxes(joint[i], 0, 1, 0, 0, 0, 1);
       if (x < 0) MdtCarWheelSetSteeringLock(joint[i], 1);
-      MdtCarWheelSetSuspension(joint[i], 50000, (MeReal)0.4, (MeReal)0.001, -(MeReal)0.15,
-                               (MeReal)0.15, 0);
+      MdtCarWheelSetSuspension(joint[i], 50000, (MeReal)0.4, (MeReal)0.001, -(MeReal)0.15, (MeReal)0.15, 0);
       MdtCarWheelSetHingeLimitedForceMotor(joint[i], -10, 200);
       MdtCarWheelEnable(joint[i]);
       contact[i] = MdtContactCreate(world);

@@ -76,16 +76,16 @@ void BM_RagdollFreeFall(benchmark::State &state) {
     MeReal jx, jy;  // the joint to the parent
   };
   const Part parts[10] = {
-      {0, MeReal(1.3), -1, 0, 0},                      // 0 torso
-      {0, MeReal(1.85), 0, 0, MeReal(1.65)},           // 1 head
-      {MeReal(-0.35), MeReal(1.45), 0, MeReal(-0.2), MeReal(1.55)},  // 2 upper arm L
-      {MeReal(-0.75), MeReal(1.45), 2, MeReal(-0.55), MeReal(1.45)}, // 3 forearm L
-      {MeReal(0.35), MeReal(1.45), 0, MeReal(0.2), MeReal(1.55)},    // 4 upper arm R
-      {MeReal(0.75), MeReal(1.45), 4, MeReal(0.55), MeReal(1.45)},   // 5 forearm R
-      {MeReal(-0.12), MeReal(0.75), 0, MeReal(-0.12), MeReal(0.95)}, // 6 thigh L
-      {MeReal(-0.12), MeReal(0.3), 6, MeReal(-0.12), MeReal(0.52)},  // 7 shin L
-      {MeReal(0.12), MeReal(0.75), 0, MeReal(0.12), MeReal(0.95)},   // 8 thigh R
-      {MeReal(0.12), MeReal(0.3), 8, MeReal(0.12), MeReal(0.52)},    // 9 shin R
+      {0, MeReal(1.3), -1, 0, 0},                                     // 0 torso
+      {0, MeReal(1.85), 0, 0, MeReal(1.65)},                          // 1 head
+      {MeReal(-0.35), MeReal(1.45), 0, MeReal(-0.2), MeReal(1.55)},   // 2 upper arm L
+      {MeReal(-0.75), MeReal(1.45), 2, MeReal(-0.55), MeReal(1.45)},  // 3 forearm L
+      {MeReal(0.35), MeReal(1.45), 0, MeReal(0.2), MeReal(1.55)},     // 4 upper arm R
+      {MeReal(0.75), MeReal(1.45), 4, MeReal(0.55), MeReal(1.45)},    // 5 forearm R
+      {MeReal(-0.12), MeReal(0.75), 0, MeReal(-0.12), MeReal(0.95)},  // 6 thigh L
+      {MeReal(-0.12), MeReal(0.3), 6, MeReal(-0.12), MeReal(0.52)},   // 7 shin L
+      {MeReal(0.12), MeReal(0.75), 0, MeReal(0.12), MeReal(0.95)},    // 8 thigh R
+      {MeReal(0.12), MeReal(0.3), 8, MeReal(0.12), MeReal(0.52)},     // 9 shin R
   };
   MdtBodyID body[10];
   for (int i = 0; i < 10; ++i) {
@@ -151,7 +151,8 @@ ChainProblem MakeChainProblem(int rows, bool withDense) {
         if (body < 0) continue;
         const double *bi = block(i, body), *bj = block(j, body);
         if (!bj) continue;
-        for (int d = 0; d < 6; ++d) a += bi[d] * minv[static_cast<std::size_t>(body) * 6 + static_cast<std::size_t>(d)] * bj[d];
+        for (int d = 0; d < 6; ++d)
+          a += bi[d] * minv[static_cast<std::size_t>(body) * 6 + static_cast<std::size_t>(d)] * bj[d];
       }
       p.col.push_back(j);
       p.val.push_back(static_cast<MeReal>(a));
@@ -165,8 +166,8 @@ ChainProblem MakeChainProblem(int rows, bool withDense) {
     p.dense.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
     for (int i = 0; i < n; ++i)
       for (int k = p.rowStart[static_cast<std::size_t>(i)]; k < p.rowStart[static_cast<std::size_t>(i) + 1]; ++k)
-        p.dense[static_cast<std::size_t>(i) * static_cast<std::size_t>(n) + static_cast<std::size_t>(p.col[static_cast<std::size_t>(k)])] =
-            p.val[static_cast<std::size_t>(k)];
+        p.dense[static_cast<std::size_t>(i) * static_cast<std::size_t>(n) +
+                static_cast<std::size_t>(p.col[static_cast<std::size_t>(k)])] = p.val[static_cast<std::size_t>(k)];
   }
   return p;
 }

@@ -28,7 +28,8 @@ struct Box {
 };
 
 struct Scene {
-  explicit Scene(int n) : size(MeReal(4) * static_cast<MeReal>(std::cbrt(static_cast<double>(n)))), boxes(static_cast<std::size_t>(n)) {
+  explicit Scene(int n)
+      : size(MeReal(4) * static_cast<MeReal>(std::cbrt(static_cast<double>(n)))), boxes(static_cast<std::size_t>(n)) {
     std::mt19937 rng(12345u);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (Box &b : boxes) {

@@ -108,8 +108,10 @@ void BM_Solve(benchmark::State &state) {
   std::unique_ptr<KeaWorkspace, WorkspaceDeleter> workspace(karma::kea::KeaWorkspaceCreate());
   KeaResult r;
   for (auto _ : state) {
-    if (workspaceEntry) karma::kea::KeaSolveSparse(p, o, *workspace, r);
-    else r = karma::kea::KeaSolveSparse(p, o);
+    if (workspaceEntry)
+      karma::kea::KeaSolveSparse(p, o, *workspace, r);
+    else
+      r = karma::kea::KeaSolveSparse(p, o);
     benchmark::DoNotOptimize(r.lambda.data());
   }
   state.SetLabel(c.name + (workspaceEntry ? " workspace" : " allocating") + StartName(state.range(2)));

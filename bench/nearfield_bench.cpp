@@ -133,9 +133,7 @@ void BM_SpherePlane(benchmark::State &st) { Run(st, S().sphere, TM(0, 0, MeReal(
 void BM_BoxPlane(benchmark::State &st) { Run(st, S().box, TM(0, 0, MeReal(0.49)), S().plane, kOrigin); }
 void BM_SphereBox(benchmark::State &st) { Run(st, S().sphere, TM(0, 0, MeReal(0.95)), S().box, kOrigin); }
 // The sphere against the cylinder's side.
-void BM_SphereCylinder(benchmark::State &st) {
-  Run(st, S().sphere, TM(MeReal(0.95), 0, 0), S().cylinder, kOrigin);
-}
+void BM_SphereCylinder(benchmark::State &st) { Run(st, S().sphere, TM(MeReal(0.95), 0, 0), S().cylinder, kOrigin); }
 void BM_SphereSphyl(benchmark::State &st) { Run(st, S().sphere, TM(MeReal(0.75), 0, 0), S().sphyl, kOrigin); }
 // A unit cube resting face down on another, 0.01 deep.
 void BM_BoxBoxResting(benchmark::State &st) { Run(st, S().box, TM(0, 0, MeReal(0.99)), S().box, kOrigin); }
@@ -147,17 +145,14 @@ void BM_BoxBoxTilted(benchmark::State &st) {
 void BM_BoxBoxSeparated(benchmark::State &st) { Run(st, S().box, TM(0, 0, MeReal(1.5)), S().box, kOrigin); }
 // Two lying sphyls crossing at right angles (along x below, along y above).
 void BM_SphylSphyl(benchmark::State &st) {
-  Run(st, S().sphyl, TM(0, 0, MeReal(0.58)).rotate(1, 0, 0, kHalfPi), S().sphyl,
-      TM(0, 0, 0).rotate(0, 1, 0, kHalfPi));
+  Run(st, S().sphyl, TM(0, 0, MeReal(0.58)).rotate(1, 0, 0, kHalfPi), S().sphyl, TM(0, 0, 0).rotate(0, 1, 0, kHalfPi));
 }
 // A sphyl lying along x on the 2 x 2 x 1 box's top face.
 void BM_SphylBox(benchmark::State &st) {
   Run(st, S().sphyl, TM(0, 0, MeReal(0.79)).rotate(0, 1, 0, kHalfPi), S().wideBox, kOrigin);
 }
 // A standing cylinder (rim points).
-void BM_CylinderPlane(benchmark::State &st) {
-  Run(st, S().cylinder, TM(0, 0, MeReal(0.49)), S().plane, kOrigin);
-}
+void BM_CylinderPlane(benchmark::State &st) { Run(st, S().cylinder, TM(0, 0, MeReal(0.49)), S().plane, kOrigin); }
 // A lying sphyl.
 void BM_SphylPlane(benchmark::State &st) {
   Run(st, S().sphyl, TM(0, 0, MeReal(0.29)).rotate(0, 1, 0, kHalfPi), S().plane, kOrigin);
@@ -169,15 +164,11 @@ void BM_ConvexConvex(benchmark::State &st) { Run(st, S().hull, TM(0, 0, MeReal(0
 // A standing cylinder on the 2 x 2 x 1 box.
 void BM_BoxCylinder(benchmark::State &st) { Run(st, S().wideBox, kOrigin, S().cylinder, TM(0, 0, MeReal(0.99))); }
 // A standing cylinder on another.
-void BM_CylinderCylinder(benchmark::State &st) {
-  Run(st, S().cylinder, TM(0, 0, MeReal(0.99)), S().cylinder, kOrigin);
-}
+void BM_CylinderCylinder(benchmark::State &st) { Run(st, S().cylinder, TM(0, 0, MeReal(0.99)), S().cylinder, kOrigin); }
 void BM_ConvexPlane(benchmark::State &st) { Run(st, S().hull, TM(0, 0, MeReal(0.49)), S().plane, kOrigin); }
 
 // The stool standing on the plane, legs 0.01 deep (the seat clear).
-void BM_AggregatePlane(benchmark::State &st) {
-  Run(st, S().stool, TM(0, 0, MeReal(-0.01)), S().plane, kOrigin);
-}
+void BM_AggregatePlane(benchmark::State &st) { Run(st, S().stool, TM(0, 0, MeReal(-0.01)), S().plane, kOrigin); }
 
 // The two-triangle floor.
 void BM_SphereTriangleList(benchmark::State &st) {

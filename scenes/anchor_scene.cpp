@@ -31,8 +31,8 @@ AnchorScene::AnchorScene(SceneSpec spec) : spec_(std::move(spec)), monitor_(spec
   createGround();
   std::vector<std::pair<ShapeSpec, McdGeometryID>> geometries;  // identical shapes share one
   for (const BodySpec &b : spec_.bodies) {
-    auto same = std::find_if(geometries.begin(), geometries.end(),
-                             [&](const auto &g) { return SameShape(g.first, b.shape); });
+    auto same =
+        std::find_if(geometries.begin(), geometries.end(), [&](const auto &g) { return SameShape(g.first, b.shape); });
     McdGeometryID g = nullptr;
     if (same != geometries.end()) {
       g = same->second;
@@ -119,11 +119,10 @@ void AnchorScene::createCarWheel(const CarWheelSpec &w) {
   MdtCarWheelSetBodies(joint, body(w.chassis), body(w.wheel));
   MdtCarWheelSetPosition(joint, at[0], at[1], at[2]);
   MdtCarWheelSetSteeringAndHingeAxes(joint, (MeReal)w.steeringAxis[0], (MeReal)w.steeringAxis[1],
-                                     (MeReal)w.steeringAxis[2], (MeReal)w.hingeAxis[0],
-                                     (MeReal)w.hingeAxis[1], (MeReal)w.hingeAxis[2]);
+                                     (MeReal)w.steeringAxis[2], (MeReal)w.hingeAxis[0], (MeReal)w.hingeAxis[1],
+                                     (MeReal)w.hingeAxis[2]);
   MdtCarWheelSetSteeringLock(joint, 1);
-  MdtCarWheelSetSuspension(joint, (MeReal)w.spring, (MeReal)w.damping, 0, (MeReal)w.lowLimit,
-                           (MeReal)w.highLimit, 0);
+  MdtCarWheelSetSuspension(joint, (MeReal)w.spring, (MeReal)w.damping, 0, (MeReal)w.lowLimit, (MeReal)w.highLimit, 0);
   MdtCarWheelEnable(joint);
   carWheels_.push_back(joint);
 }

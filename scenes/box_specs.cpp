@@ -12,8 +12,8 @@ namespace {
 
 // Axes (rows) of the rotation Ry(yaw) Rx(a) Rz(b).
 Axes Tilt(double yaw, double a, double b) {
-  const double cy = std::cos(yaw), sy = std::sin(yaw), ca = std::cos(a), sa = std::sin(a),
-               cb = std::cos(b), sb = std::sin(b);
+  const double cy = std::cos(yaw), sy = std::sin(yaw), ca = std::cos(a), sa = std::sin(a), cb = std::cos(b),
+               sb = std::sin(b);
   // Column-vector matrix M = Ry Rx Rz; the body axes are M's columns.
   const double Ry[3][3] = {{cy, 0, sy}, {0, 1, 0}, {-sy, 0, cy}};
   const double Rx[3][3] = {{1, 0, 0}, {0, ca, -sa}, {0, sa, ca}};
@@ -89,8 +89,7 @@ SceneSpec Pile1000Spec() {
     for (int j = 0; j < 10; ++j)
       for (int k = 0; k < 10; ++k) {
         const double yaw = 0.3 * random.next(), a = 0.1 * random.next(), b = 0.1 * random.next();
-        s.bodies.push_back(
-            {kCube, 5, {(i - 4.5) * 0.7, 0.6 + 0.7 * j, (k - 4.5) * 0.7}, Tilt(yaw, a, b), 0});
+        s.bodies.push_back({kCube, 5, {(i - 4.5) * 0.7, 0.6 + 0.7 * j, (k - 4.5) * 0.7}, Tilt(yaw, a, b), 0});
       }
   s.expectation = Expectation::kNothingLost;
   s.capacity = {1000, 1001, 20000, 30000};

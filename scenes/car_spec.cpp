@@ -17,13 +17,11 @@ SceneSpec CarSpec() {
   s.friction = {0.4, 0.4, 1.0};
   s.groundMaterial = 0;
   const int chassisMaterial = 1, wheelMaterial = 2;
-  s.bodies.push_back({{ShapeKind::kBox, 1.6, 0.4, 0.8}, 150, {0, 0.6, 0}, kIdentityAxes,
-                      chassisMaterial});
+  s.bodies.push_back({{ShapeKind::kBox, 1.6, 0.4, 0.8}, 150, {0, 0.6, 0}, kIdentityAxes, chassisMaterial});
   for (int i = 0; i < 4; ++i) {
     const double x = (i & 1) ? 0.6 : -0.6, z = (i & 2) ? 0.5 : -0.5;
     const int wheel = 1 + i;
-    s.bodies.push_back({{ShapeKind::kSphere, 0.3, 0, 0}, 10, {x, 0.3, z}, kIdentityAxes,
-                        wheelMaterial});
+    s.bodies.push_back({{ShapeKind::kSphere, 0.3, 0, 0}, 10, {x, 0.3, z}, kIdentityAxes, wheelMaterial});
     s.disabledPairs.push_back({0, wheel});
     for (int j = 0; j < i; ++j) s.disabledPairs.push_back({wheel, 1 + j});
     s.carWheels.push_back({0, wheel, {x, 0.3, z}, {0, 1, 0}, {0, 0, 1}, 20000, 500, -0.2, 0.2});

@@ -29,8 +29,8 @@ struct Joint {
 constexpr ShapeKind kBox = ShapeKind::kBox, kCapsule = ShapeKind::kCapsule;
 
 const Part kParts[10] = {
-    {{kBox, 0.36, 0.55, 0.20}, kUpright, 30, {0, 1.225, 0}},   // 0 torso
-    {{kBox, 0.20, 0.24, 0.20}, kUpright, 5, {0, 1.62, 0}},     // 1 head
+    {{kBox, 0.36, 0.55, 0.20}, kUpright, 30, {0, 1.225, 0}},      // 0 torso
+    {{kBox, 0.20, 0.24, 0.20}, kUpright, 5, {0, 1.62, 0}},        // 1 head
     {{kCapsule, 0.05, 0.30, 0}, kAlongX, 2.5, {0.33, 1.42, 0}},   // 2 upper arm L
     {{kCapsule, 0.05, 0.30, 0}, kAlongX, 2.5, {-0.33, 1.42, 0}},  // 3 upper arm R
     {{kCapsule, 0.04, 0.28, 0}, kAlongX, 1.5, {0.62, 1.42, 0}},   // 4 forearm L
@@ -42,18 +42,22 @@ const Part kParts[10] = {
 };
 
 const Joint kJoints[9] = {
-    {0, 1, {0, 1.50, 0}},     {0, 2, {0.18, 1.42, 0}}, {0, 3, {-0.18, 1.42, 0}},
-    {2, 4, {0.48, 1.42, 0}},  {3, 5, {-0.48, 1.42, 0}}, {0, 6, {0.1, 0.95, 0}},
-    {0, 7, {-0.1, 0.95, 0}},  {6, 8, {0.1, 0.50, 0}},  {7, 9, {-0.1, 0.50, 0}},
+    {0, 1, {0, 1.50, 0}},    {0, 2, {0.18, 1.42, 0}},  {0, 3, {-0.18, 1.42, 0}},
+    {2, 4, {0.48, 1.42, 0}}, {3, 5, {-0.48, 1.42, 0}}, {0, 6, {0.1, 0.95, 0}},
+    {0, 7, {-0.1, 0.95, 0}}, {6, 8, {0.1, 0.50, 0}},   {7, 9, {-0.1, 0.50, 0}},
 };
 
 // Rotation by `angle` about the unit axis k (column-vector matrix).
 void AxisAngle(double M[3][3], const double k[3], double angle) {
   const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
-  M[0][0] = t * k[0] * k[0] + c;        M[0][1] = t * k[0] * k[1] - s * k[2];
-  M[0][2] = t * k[0] * k[2] + s * k[1]; M[1][0] = t * k[0] * k[1] + s * k[2];
-  M[1][1] = t * k[1] * k[1] + c;        M[1][2] = t * k[1] * k[2] - s * k[0];
-  M[2][0] = t * k[0] * k[2] - s * k[1]; M[2][1] = t * k[1] * k[2] + s * k[0];
+  M[0][0] = t * k[0] * k[0] + c;
+  M[0][1] = t * k[0] * k[1] - s * k[2];
+  M[0][2] = t * k[0] * k[2] + s * k[1];
+  M[1][0] = t * k[0] * k[1] + s * k[2];
+  M[1][1] = t * k[1] * k[1] + c;
+  M[1][2] = t * k[1] * k[2] - s * k[0];
+  M[2][0] = t * k[0] * k[2] - s * k[1];
+  M[2][1] = t * k[1] * k[2] + s * k[0];
   M[2][2] = t * k[2] * k[2] + c;
 }
 

@@ -27,13 +27,10 @@ Vec3 ToBody(const BodyState &s, const Vec3 &p) {
 }
 
 double Distance(const Vec3 &a, const Vec3 &b) {
-  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                   (a[2] - b[2]) * (a[2] - b[2]));
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-bool Finite(const Vec3 &v) {
-  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
-}
+bool Finite(const Vec3 &v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
 }  // namespace
 
@@ -52,8 +49,7 @@ void SceneMonitor::start(const std::vector<BodyState> &bodies) {
 
 void SceneMonitor::observe(const std::vector<BodyState> &bodies) {
   for (const BodyState &b : bodies) {
-    if (!Finite(b.position) || !Finite(b.velocity) || !Finite(b.angularVelocity))
-      running_.finite = false;
+    if (!Finite(b.position) || !Finite(b.velocity) || !Finite(b.angularVelocity)) running_.finite = false;
     const Vec3 &v = b.velocity;
     running_.maxSpeed = std::max(running_.maxSpeed, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
   }
@@ -71,8 +67,7 @@ double SceneMonitor::jointError(const std::vector<BodyState> &bodies) const {
   return worst;
 }
 
-SceneFigures SceneMonitor::finish(const std::vector<BodyState> &bodies, int steps,
-                                  double penetration) const {
+SceneFigures SceneMonitor::finish(const std::vector<BodyState> &bodies, int steps, double penetration) const {
   SceneFigures f = running_;
   f.steps = steps;
   f.penetration = penetration;
@@ -93,8 +88,7 @@ void SceneMonitor::check(const std::vector<BodyState> &bodies, SceneFigures &f) 
       const double vExpected = a * t, xExpected = a * t * t / 2;
       f.expectation = std::fabs(f.carVelocity - vExpected) < 0.05 * vExpected &&
                       std::fabs(f.carPosition - xExpected) < 0.05 * xExpected;
-      std::snprintf(text, sizeof text,
-                    "v %.3f m/s (analytic %.3f), x %.3f m (analytic %.3f), height %.3f m",
+      std::snprintf(text, sizeof text, "v %.3f m/s (analytic %.3f), x %.3f m (analytic %.3f), height %.3f m",
                     f.carVelocity, vExpected, f.carPosition, xExpected, f.carRideHeight);
       break;
     }
@@ -110,8 +104,8 @@ void SceneMonitor::check(const std::vector<BodyState> &bodies, SceneFigures &f) 
       }
       if (spec_->expectation == Expectation::kStacksStand) {
         f.expectation = f.drift < 0.05 && f.drop < 0.05;
-        std::snprintf(text, sizeof text, "worst top box: drift %.1f mm, drop %.1f mm (%d of %d stand)",
-                      f.drift * 1e3, f.drop * 1e3, f.standing, f.stacks);
+        std::snprintf(text, sizeof text, "worst top box: drift %.1f mm, drop %.1f mm (%d of %d stand)", f.drift * 1e3,
+                      f.drop * 1e3, f.standing, f.stacks);
       } else {
         f.expectation = f.drift < 0.05;
         std::snprintf(text, sizeof text, "top box drift %.2f mm, height %.4f m", f.drift * 1e3,
@@ -124,8 +118,8 @@ void SceneMonitor::check(const std::vector<BodyState> &bodies, SceneFigures &f) 
       // body is whole again once it has landed (the peak, at the impact,
       // is a reported figure).
       f.expectation = f.jointErrorEnd < 0.02;
-      std::snprintf(text, sizeof text, "joint error: max %.2f mm, end %.2f mm",
-                    f.jointErrorMax * 1e3, f.jointErrorEnd * 1e3);
+      std::snprintf(text, sizeof text, "joint error: max %.2f mm, end %.2f mm", f.jointErrorMax * 1e3,
+                    f.jointErrorEnd * 1e3);
       break;
     case Expectation::kNothingLost: {
       // No box below the ground (a centre at least 0.25 m up, less 50 mm)
@@ -136,8 +130,7 @@ void SceneMonitor::check(const std::vector<BodyState> &bodies, SceneFigures &f) 
         f.farthest = std::max(f.farthest, std::hypot(b.position[0], b.position[2]));
       }
       f.expectation = f.lowest > 0.2 && f.farthest < 20;
-      std::snprintf(text, sizeof text, "lowest centre %.3f m, farthest %.2f m from the middle",
-                    f.lowest, f.farthest);
+      std::snprintf(text, sizeof text, "lowest centre %.3f m, farthest %.2f m from the middle", f.lowest, f.farthest);
       break;
     }
   }

@@ -20,11 +20,11 @@ struct BodyState {
 
 struct SceneFigures {
   int steps = 0;
-  bool finite = true;         // no NaN or infinity in any body's state
-  double maxSpeed = 0;        // fastest body speed seen at any step, m/s
-  bool expectation = false;   // the scene's own check, after the run
-  std::string detail;         // the figures behind `expectation`
-  double penetration = 0;     // deepest overlap of two bodies after the last step, m
+  bool finite = true;        // no NaN or infinity in any body's state
+  double maxSpeed = 0;       // fastest body speed seen at any step, m/s
+  bool expectation = false;  // the scene's own check, after the run
+  std::string detail;        // the figures behind `expectation`
+  double penetration = 0;    // deepest overlap of two bodies after the last step, m
   // car: chassis velocity, position and height after the run.
   double carVelocity = 0, carPosition = 0, carRideHeight = 0;
   // ragdoll: joint error (anchor gap), largest over the run and at the end.

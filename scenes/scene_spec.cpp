@@ -8,9 +8,7 @@
 
 namespace karma::scenes {
 
-std::vector<SceneSpec> AnchorSpecs() {
-  return {CarSpec(), ToppleSpec(), Stack21Spec(), RagdollSpec(), Pile1000Spec()};
-}
+std::vector<SceneSpec> AnchorSpecs() { return {CarSpec(), ToppleSpec(), Stack21Spec(), RagdollSpec(), Pile1000Spec()}; }
 
 double ShapeVolume(const ShapeSpec &s) {
   constexpr double pi = std::numbers::pi;
@@ -29,8 +27,7 @@ Vec3 UniformInertia(const ShapeSpec &s, double mass) {
   switch (s.kind) {
     case ShapeKind::kBox: {
       const double k = mass / 12;
-      return {k * (s.b * s.b + s.c * s.c), k * (s.a * s.a + s.c * s.c),
-              k * (s.a * s.a + s.b * s.b)};
+      return {k * (s.b * s.b + s.c * s.c), k * (s.a * s.a + s.c * s.c), k * (s.a * s.a + s.b * s.b)};
     }
     case ShapeKind::kSphere: {
       const double i = 0.4 * mass * s.a * s.a;
@@ -51,8 +48,8 @@ double LowestPoint(const ShapeSpec &s, const Vec3 &position, const Axes &axes) {
   // A body-frame vector b reaches sum_k b_k axes[k][1] in world y.
   switch (s.kind) {
     case ShapeKind::kBox:
-      return position[1] - (s.a / 2 * std::fabs(axes[0][1]) + s.b / 2 * std::fabs(axes[1][1]) +
-                            s.c / 2 * std::fabs(axes[2][1]));
+      return position[1] -
+             (s.a / 2 * std::fabs(axes[0][1]) + s.b / 2 * std::fabs(axes[1][1]) + s.c / 2 * std::fabs(axes[2][1]));
     case ShapeKind::kSphere:
       return position[1] - s.a;
     case ShapeKind::kCapsule:

@@ -25,7 +25,7 @@ using Vec3 = std::array<double, 3>;
 using Axes = std::array<Vec3, 3>;
 
 inline constexpr Axes kIdentityAxes = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-inline constexpr double kGravity = 9.81;       // m/s^2, along -y
+inline constexpr double kGravity = 9.81;  // m/s^2, along -y
 inline constexpr double kStepSeconds = 1.0 / 60;
 
 enum class ShapeKind { kBox, kSphere, kCapsule };

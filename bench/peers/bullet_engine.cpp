@@ -71,9 +71,7 @@ class PairFilter final : public btOverlapFilterCallback {
 class BulletEngine final : public PeerEngine {
  public:
   explicit BulletEngine(const SceneSpec &spec)
-      : dispatcher_(&configuration_),
-        world_(&dispatcher_, &broadphase_, &solver_, &configuration_),
-        filter_(spec) {
+      : dispatcher_(&configuration_), world_(&dispatcher_, &broadphase_, &solver_, &configuration_), filter_(spec) {
     gCalculateCombinedFrictionCallback = &LargerFriction;
     world_.setGravity(btVector3(0, (btScalar)-scenes::kGravity, 0));
     world_.getPairCache()->setOverlapFilterCallback(&filter_);
@@ -98,8 +96,7 @@ class BulletEngine final : public PeerEngine {
     out.resize(bodies_.size());
     for (size_t i = 0; i < bodies_.size(); ++i) {
       const btRigidBody &b = *bodies_[i];
-      const btVector3 &x = b.getCenterOfMassPosition(), &v = b.getLinearVelocity(),
-                      &w = b.getAngularVelocity();
+      const btVector3 &x = b.getCenterOfMassPosition(), &v = b.getLinearVelocity(), &w = b.getAngularVelocity();
       const btMatrix3x3 &R = b.getWorldTransform().getBasis();
       for (int k = 0; k < 3; ++k) {
         out[i].position[k] = x[k];
@@ -147,8 +144,7 @@ class BulletEngine final : public PeerEngine {
         break;
     }
     const Vec3 I = scenes::UniformInertia(b.shape, b.mass);
-    btRigidBody::btRigidBodyConstructionInfo info((btScalar)b.mass, nullptr, shapes_.back().get(),
-                                                  ToBullet(I));
+    btRigidBody::btRigidBodyConstructionInfo info((btScalar)b.mass, nullptr, shapes_.back().get(), ToBullet(I));
     info.m_friction = (btScalar)spec.friction[(size_t)b.material];
     info.m_restitution = 0;
     info.m_linearDamping = 0;
@@ -192,8 +188,8 @@ class BulletEngine final : public PeerEngine {
     for (int i = 0; i < 3; ++i) at[i] += spec.offset[i];
     btRigidBody &a = *bodies_[(size_t)j.body0], &b = *bodies_[(size_t)j.body1];
     const btVector3 anchor = ToBullet(at);
-    auto joint = std::make_unique<btPoint2PointConstraint>(
-        a, b, a.getWorldTransform().inverse() * anchor, b.getWorldTransform().inverse() * anchor);
+    auto joint = std::make_unique<btPoint2PointConstraint>(a, b, a.getWorldTransform().inverse() * anchor,
+                                                           b.getWorldTransform().inverse() * anchor);
     world_.addConstraint(joint.get(), true);
     constraints_.push_back(std::move(joint));
   }
@@ -225,8 +221,6 @@ class BulletEngine final : public PeerEngine {
 
 }  // namespace
 
-std::unique_ptr<PeerEngine> MakeBullet(const SceneSpec &spec) {
-  return std::make_unique<BulletEngine>(spec);
-}
+std::unique_ptr<PeerEngine> MakeBullet(const SceneSpec &spec) { return std::make_unique<BulletEngine>(spec); }
 
 }  // namespace karma::peers

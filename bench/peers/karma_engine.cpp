@@ -21,8 +21,6 @@ class KarmaEngine final : public PeerEngine {
 
 }  // namespace
 
-std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec) {
-  return std::make_unique<KarmaEngine>(spec);
-}
+std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec) { return std::make_unique<KarmaEngine>(spec); }
 
 }  // namespace karma::peers

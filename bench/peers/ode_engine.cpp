@@ -149,8 +149,7 @@ class OdeEngine final : public PeerEngine {
   void addCarWheel(const SceneSpec &spec, const scenes::CarWheelSpec &w) {
     dJointID j = dJointCreateHinge2(world_, nullptr);
     dJointAttach(j, bodies_[(size_t)w.chassis], bodies_[(size_t)w.wheel]);
-    dJointSetHinge2Anchor(j, w.anchor[0] + spec.offset[0], w.anchor[1] + spec.offset[1],
-                          w.anchor[2] + spec.offset[2]);
+    dJointSetHinge2Anchor(j, w.anchor[0] + spec.offset[0], w.anchor[1] + spec.offset[1], w.anchor[2] + spec.offset[2]);
     const dReal axis1[3] = {w.steeringAxis[0], w.steeringAxis[1], w.steeringAxis[2]};
     const dReal axis2[3] = {w.hingeAxis[0], w.hingeAxis[1], w.hingeAxis[2]};
     dJointSetHinge2Axes(j, axis1, axis2);
@@ -223,11 +222,7 @@ class OdeEngine final : public PeerEngine {
 
 void SetOdeMaxContacts(int n) { maxContacts = std::clamp(n, 1, kMaxContacts); }
 
-std::unique_ptr<PeerEngine> MakeOdeStep(const SceneSpec &spec) {
-  return std::make_unique<OdeEngine>(spec, false);
-}
-std::unique_ptr<PeerEngine> MakeOdeQuickStep(const SceneSpec &spec) {
-  return std::make_unique<OdeEngine>(spec, true);
-}
+std::unique_ptr<PeerEngine> MakeOdeStep(const SceneSpec &spec) { return std::make_unique<OdeEngine>(spec, false); }
+std::unique_ptr<PeerEngine> MakeOdeQuickStep(const SceneSpec &spec) { return std::make_unique<OdeEngine>(spec, true); }
 
 }  // namespace karma::peers

@@ -75,13 +75,20 @@ std::vector<std::string> Split(const char *list) {
 bool Parse(int argc, char **argv, Options &o) {
   for (int i = 1; i < argc; ++i) {
     const bool hasValue = i + 1 < argc;
-    if (!std::strcmp(argv[i], "--scenes") && hasValue) o.scenes = Split(argv[++i]);
-    else if (!std::strcmp(argv[i], "--engines") && hasValue) o.engines = Split(argv[++i]);
-    else if (!std::strcmp(argv[i], "--reps") && hasValue) o.reps = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--steps") && hasValue) o.steps = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--pile-steps") && hasValue) o.pileSteps = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--ode-contacts") && hasValue) o.odeContacts = std::atoi(argv[++i]);
-    else return false;
+    if (!std::strcmp(argv[i], "--scenes") && hasValue)
+      o.scenes = Split(argv[++i]);
+    else if (!std::strcmp(argv[i], "--engines") && hasValue)
+      o.engines = Split(argv[++i]);
+    else if (!std::strcmp(argv[i], "--reps") && hasValue)
+      o.reps = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--steps") && hasValue)
+      o.steps = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--pile-steps") && hasValue)
+      o.pileSteps = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--ode-contacts") && hasValue)
+      o.odeContacts = std::atoi(argv[++i]);
+    else
+      return false;
   }
   return o.reps > 0 && o.steps >= 0 && o.pileSteps > 0 && o.odeContacts >= 1 && o.odeContacts <= 8;
 }
@@ -163,9 +170,9 @@ void PrintScene(const SceneSpec &spec, int steps, const std::vector<Result> &res
   for (const Result &r : results) {
     const auto [lo, hi] = std::minmax_element(r.micros.begin(), r.micros.end());
     const SceneFigures &f = r.figures;
-    std::printf("| %s (%d%s) | %s | %s [%s–%s] | %s | %s | %s | %s | %.2f | %.1f |\n",
-                spec.name.c_str(), steps, steps < spec.steps ? Format(" of %.0f", spec.steps).c_str() : "",
-                r.engine.c_str(), Micros(r.median()).c_str(), Micros(*lo).c_str(), Micros(*hi).c_str(), Ratio(r.median(), step).c_str(),
+    std::printf("| %s (%d%s) | %s | %s [%s–%s] | %s | %s | %s | %s | %.2f | %.1f |\n", spec.name.c_str(), steps,
+                steps < spec.steps ? Format(" of %.0f", spec.steps).c_str() : "", r.engine.c_str(),
+                Micros(r.median()).c_str(), Micros(*lo).c_str(), Micros(*hi).c_str(), Ratio(r.median(), step).c_str(),
                 Ratio(r.median(), quick).c_str(), Stability(f).c_str(), f.detail.c_str(), f.maxSpeed,
                 f.penetration * 1e3);
   }
@@ -200,8 +207,9 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "peer_bench: no engine or no scene selected\n");
     return 2;
   }
-  std::printf("| scene (steps) | engine | µs/step, median [range] | × ODE step | × ODE QuickStep | stable "
-              "| scene figures | max speed (m/s) | penetration (mm) |\n");
+  std::printf(
+      "| scene (steps) | engine | µs/step, median [range] | × ODE step | × ODE QuickStep | stable "
+      "| scene figures | max speed (m/s) | penetration (mm) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (const SceneSpec &spec : specs) {
     int steps = spec.name == "pile1000" ? std::min(spec.steps, o.pileSteps) : spec.steps;
@@ -210,8 +218,7 @@ int main(int argc, char **argv) {
     for (int rep = 0; rep < o.reps; ++rep) {
       for (size_t k = 0; k < engines.size(); ++k) {
         const size_t e = (k + (size_t)rep) % engines.size();  // rotate the first engine
-        std::fprintf(stderr, "%s, repetition %d: %s\n", spec.name.c_str(), rep + 1,
-                     engines[e].name.c_str());
+        std::fprintf(stderr, "%s, repetition %d: %s\n", spec.name.c_str(), rep + 1, engines[e].name.c_str());
         const Run run = RunOnce(engines[e], spec, steps);
         results[e].engine = engines[e].name;
         results[e].micros.push_back(run.microsPerStep);

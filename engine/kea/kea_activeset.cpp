@@ -66,14 +66,17 @@ struct DenseBackend {
 
   /* Solves for the free rows with the clamped rows at their (frozen)
    * bounds; writes the whole lambda. */
-  void solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
-                 const std::vector<MeReal> &hi, std::vector<MeReal> &lambda) {
+  void solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo, const std::vector<MeReal> &hi,
+                 std::vector<MeReal> &lambda) {
     const auto n = static_cast<std::size_t>(p.n);
     freeRows.clear();
     for (std::size_t i = 0; i < n; ++i) {
-      if (set[i] == detail::AtLo) lambda[i] = lo[i];
-      else if (set[i] == detail::AtHi) lambda[i] = hi[i];
-      else freeRows.push_back(static_cast<int>(i));
+      if (set[i] == detail::AtLo)
+        lambda[i] = lo[i];
+      else if (set[i] == detail::AtHi)
+        lambda[i] = hi[i];
+      else
+        freeRows.push_back(static_cast<int>(i));
     }
     const std::size_t m = freeRows.size();
     if (m == 0) return;

@@ -56,12 +56,14 @@ inline bool Tried(const std::vector<unsigned char> &tried, const std::vector<uns
 
 /* Keeps the sets consistent with the frozen bounds: a row cannot be clamped
  * at an infinite bound, and a row with lo = hi is clamped at lo. */
-inline void Normalise(std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
-                      const std::vector<MeReal> &hi) {
+inline void Normalise(std::vector<unsigned char> &set, const std::vector<MeReal> &lo, const std::vector<MeReal> &hi) {
   for (std::size_t i = 0; i < set.size(); ++i) {
-    if (lo[i] == hi[i]) set[i] = AtLo;
-    else if (set[i] == AtLo && std::isinf(lo[i])) set[i] = Free;
-    else if (set[i] == AtHi && std::isinf(hi[i])) set[i] = Free;
+    if (lo[i] == hi[i])
+      set[i] = AtLo;
+    else if (set[i] == AtLo && std::isinf(lo[i]))
+      set[i] = Free;
+    else if (set[i] == AtHi && std::isinf(hi[i]))
+      set[i] = Free;
   }
 }
 
@@ -109,8 +111,10 @@ inline void InitialSets(std::span<const MeReal> lambda, MeReal slack, ActiveSetS
   const std::size_t n = lambda.size();
   s.set.assign(n, Free);
   for (std::size_t i = 0; i < n; ++i) {
-    if (lambda[i] <= s.lo[i] + slack) s.set[i] = AtLo;
-    else if (lambda[i] >= s.hi[i] - slack) s.set[i] = AtHi;
+    if (lambda[i] <= s.lo[i] + slack)
+      s.set[i] = AtLo;
+    else if (lambda[i] >= s.hi[i] - slack)
+      s.set[i] = AtHi;
   }
 }
 
@@ -122,10 +126,17 @@ class ActiveSetRun {
  public:
   ActiveSetRun(const RowView &p, const KeaOptions &o, const char *name, Backend &backend, ActiveSetScratch &s,
                KeaResult &r)
-      : p_(p), o_(o), name_(name), backend_(backend), s_(s), r_(r), n_(static_cast<std::size_t>(p.n)),
+      : p_(p),
+        o_(o),
+        name_(name),
+        backend_(backend),
+        s_(s),
+        r_(r),
+        n_(static_cast<std::size_t>(p.n)),
         /* Friction's fixed point converges linearly: it gets a larger budget. */
         cap_(o.maxIterations > 0 ? o.maxIterations : 10 * p.n + 20 + (p.findex.empty() ? 0 : 20 * p.n + 100)),
-        threshold_(SolvedThreshold(p, o)), slack_(threshold_ / 2) {}
+        threshold_(SolvedThreshold(p, o)),
+        slack_(threshold_ / 2) {}
 
   void run() {
     if (!start()) return;
@@ -269,8 +280,10 @@ class ActiveSetRun {
     ++solves_;
     ComputeBounds(p_, r_.lambda, s_.newLo, s_.newHi);
     for (std::size_t i = 0; i < n_; ++i) {
-      if (set[i] == AtLo) r_.lambda[i] = s_.newLo[i];
-      else if (set[i] == AtHi) r_.lambda[i] = s_.newHi[i];
+      if (set[i] == AtLo)
+        r_.lambda[i] = s_.newLo[i];
+      else if (set[i] == AtHi)
+        r_.lambda[i] = s_.newHi[i];
     }
     score();
     bool agree = true;

@@ -55,8 +55,8 @@ bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> 
   return true;
 }
 
-void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start,
-                       std::span<const MeReal> value, std::span<MeReal> x) {
+void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start, std::span<const MeReal> value,
+                       std::span<MeReal> x) {
   /* L y = rhs, row by row. */
   for (int i = 0; i < m; ++i) {
     const int fi = first[static_cast<std::size_t>(i)];
@@ -66,7 +66,8 @@ void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> s
     x[static_cast<std::size_t>(i)] = s;
   }
   /* D z = y */
-  for (int i = 0; i < m; ++i) x[static_cast<std::size_t>(i)] /= value[static_cast<std::size_t>(start[static_cast<std::size_t>(i + 1)] - 1)];
+  for (int i = 0; i < m; ++i)
+    x[static_cast<std::size_t>(i)] /= value[static_cast<std::size_t>(start[static_cast<std::size_t>(i + 1)] - 1)];
   /* L^T x = z, by rows of L from the bottom: x_i is final once the rows
    * below it have been subtracted. */
   for (int i = m - 1; i > 0; --i) {
@@ -94,7 +95,8 @@ void EnvelopeSystem::layout() {
   start.resize(static_cast<std::size_t>(m) + 1);
   start[0] = 0;
   for (int i = 0; i < m; ++i)
-    start[static_cast<std::size_t>(i) + 1] = start[static_cast<std::size_t>(i)] + i - first[static_cast<std::size_t>(i)] + 1;
+    start[static_cast<std::size_t>(i) + 1] =
+        start[static_cast<std::size_t>(i)] + i - first[static_cast<std::size_t>(i)] + 1;
   value.assign(size(), MeReal(0));
   factored = broken = false;
 }
@@ -122,7 +124,8 @@ void EnvelopeSystem::solve(std::span<const MeReal> rhs, std::span<MeReal> x) con
     for (int j = first[static_cast<std::size_t>(i)]; j <= i; ++j) a(i, j) = a(j, i) = original[at(i, j)];
   const Vec b = Eigen::Map<const Vec>(rhs.data(), m);
   const Vec sol = a.completeOrthogonalDecomposition().solve(b);
-  for (std::size_t i = 0; i < size; ++i) x[i] = std::isfinite(sol(static_cast<Eigen::Index>(i))) ? sol(static_cast<Eigen::Index>(i)) : MeReal(0);
+  for (std::size_t i = 0; i < size; ++i)
+    x[i] = std::isfinite(sol(static_cast<Eigen::Index>(i))) ? sol(static_cast<Eigen::Index>(i)) : MeReal(0);
 }
 
 }  // namespace karma::kea::detail

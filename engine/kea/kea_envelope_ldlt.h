@@ -43,8 +43,8 @@ bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> 
 
 /* Solves L D L^T x = rhs with a factor from EnvelopeLdltFactor; x holds rhs
  * on entry and the solution on return (m values). */
-void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start,
-                       std::span<const MeReal> value, std::span<MeReal> x);
+void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start, std::span<const MeReal> value,
+                       std::span<MeReal> x);
 
 /* A symmetric system solved through the envelope LDL^T, its arrays kept
  * from one solve to the next (they only grow). Use:

@@ -99,8 +99,8 @@ inline bool SolveSmallDense(std::size_t k, std::vector<MeReal> &m, std::vector<M
  * singular k x k system); lambda may then have been partly updated, and
  * the caller restores it. */
 template <class Backend>
-bool CoupleFriction(const RowView &p, const std::vector<unsigned char> &set, Backend &backend,
-                    CouplingScratch &s, std::vector<MeReal> &lambda) {
+bool CoupleFriction(const RowView &p, const std::vector<unsigned char> &set, Backend &backend, CouplingScratch &s,
+                    std::vector<MeReal> &lambda) {
   const auto n = static_cast<std::size_t>(p.n);
   const std::span<const int> rows = backend.factorRows();
   const std::size_t m = rows.size();
@@ -116,7 +116,8 @@ bool CoupleFriction(const RowView &p, const std::vector<unsigned char> &set, Bac
   for (std::size_t i = 0; i < n; ++i) {
     const int j = p.findex[i];
     if (j < 0 || set[i] == 0 /* Free */ || s.position[static_cast<std::size_t>(j)] >= 0) continue;
-    const MeReal bound = (set[i] == 1 /* AtLo */ ? -1 : 1) * p.mu[i] * std::max(lambda[static_cast<std::size_t>(j)], MeReal(0));
+    const MeReal bound =
+        (set[i] == 1 /* AtLo */ ? -1 : 1) * p.mu[i] * std::max(lambda[static_cast<std::size_t>(j)], MeReal(0));
     const MeReal d = bound - lambda[i];
     if (d == 0) continue;
     std::fill(s.work.begin(), s.work.end(), MeReal(0));

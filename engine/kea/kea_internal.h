@@ -34,8 +34,7 @@ inline RowView Rows(const SparseLcpProblem &p) { return {p.n, p.b, p.lo, p.hi, p
 
 /* The bounds of every row for a given lambda: the caller's (normalised) box,
  * or +-mu_i * max(lambda_j, 0) on friction rows. */
-void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo,
-                   std::vector<MeReal> &hi);
+void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo, std::vector<MeReal> &hi);
 
 /* The contract's residual max_i |lambda_i - clamp(lambda_i - w_i, lo_i, hi_i)|
  * for a given lambda and its w (bounds computed from lambda, row by row:

@@ -11,8 +11,7 @@
 namespace karma::kea {
 namespace detail {
 
-void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo,
-                   std::vector<MeReal> &hi) {
+void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector<MeReal> &lo, std::vector<MeReal> &hi) {
   const auto n = static_cast<std::size_t>(p.n);
   lo.resize(n);
   hi.resize(n);
@@ -124,8 +123,7 @@ bool ValidateRows(const RowView &p, const KeaOptions &o, const char *function) {
     if (j >= 0) {
       anyFriction = true;
       if (j >= p.n || static_cast<std::size_t>(j) == i) return Reject(function, "findex out of range");
-      if (p.findex[static_cast<std::size_t>(j)] >= 0)
-        return Reject(function, "findex points at another friction row");
+      if (p.findex[static_cast<std::size_t>(j)] >= 0) return Reject(function, "findex points at another friction row");
       continue;
     }
     if (j < -1) return Reject(function, "findex out of range");
@@ -162,14 +160,14 @@ MeReal SolvedThreshold(const RowView &p, const KeaOptions &o) {
 
 void WarnIterationLimit(const KeaOptions &o, const char *function, int iterations, MeReal residual) {
   if (o.warnings)
-    MeWarning(0, "%s: maximum number of iterations exceeded (%d); residual %g, returning the best iterate",
-              function, iterations, static_cast<double>(residual));
+    MeWarning(0, "%s: maximum number of iterations exceeded (%d); residual %g, returning the best iterate", function,
+              iterations, static_cast<double>(residual));
 }
 
 void WarnCycle(const KeaOptions &o, const char *function, int iterations, MeReal residual) {
   if (o.warnings)
-    MeWarning(0, "%s: cycle has been detected after %d iterations; residual %g, returning the best iterate",
-              function, iterations, static_cast<double>(residual));
+    MeWarning(0, "%s: cycle has been detected after %d iterations; residual %g, returning the best iterate", function,
+              iterations, static_cast<double>(residual));
 }
 
 }  // namespace detail
@@ -184,10 +182,14 @@ MeReal KeaDefaultTolerance() {
 
 const char *KeaStatusName(KeaStatus status) {
   switch (status) {
-    case KeaStatus::Solved: return "Solved";
-    case KeaStatus::IterationLimit: return "IterationLimit";
-    case KeaStatus::CycleDetected: return "CycleDetected";
-    case KeaStatus::BadInput: return "BadInput";
+    case KeaStatus::Solved:
+      return "Solved";
+    case KeaStatus::IterationLimit:
+      return "IterationLimit";
+    case KeaStatus::CycleDetected:
+      return "CycleDetected";
+    case KeaStatus::BadInput:
+      return "BadInput";
   }
   return "?";
 }
@@ -206,8 +208,7 @@ MeReal KeaResidual(const LcpProblem &p, MeReal epsilon, std::span<const MeReal> 
 }
 
 KeaResult KeaSolve(const LcpProblem &problem, const KeaOptions &options) {
-  return options.method == KeaMethod::PGS ? KeaSolvePGS(problem, options)
-                                          : KeaSolveActiveSet(problem, options);
+  return options.method == KeaMethod::PGS ? KeaSolvePGS(problem, options) : KeaSolveActiveSet(problem, options);
 }
 
 }  // namespace karma::kea

@@ -125,12 +125,12 @@ namespace karma::kea {
  * during the solve. */
 struct LcpProblem {
   int n = 0;
-  std::span<const MeReal> A;      /* n*n, row-major, symmetric: J M^-1 J^T */
-  std::span<const MeReal> b;      /* n */
-  std::span<const MeReal> lo;     /* n; ignored on friction rows */
-  std::span<const MeReal> hi;     /* n; ignored on friction rows */
-  std::span<const int> findex;    /* empty (no friction) or n; -1 = none */
-  std::span<const MeReal> mu;     /* n when any findex >= 0 (read on friction rows) */
+  std::span<const MeReal> A;   /* n*n, row-major, symmetric: J M^-1 J^T */
+  std::span<const MeReal> b;   /* n */
+  std::span<const MeReal> lo;  /* n; ignored on friction rows */
+  std::span<const MeReal> hi;  /* n; ignored on friction rows */
+  std::span<const int> findex; /* empty (no friction) or n; -1 = none */
+  std::span<const MeReal> mu;  /* n when any findex >= 0 (read on friction rows) */
 };
 
 enum class KeaMethod {
@@ -188,11 +188,11 @@ struct KeaOptions {
 };
 
 struct KeaResult {
-  std::vector<MeReal> lambda;  /* n */
-  std::vector<MeReal> w;       /* n: A*lambda - b, eps included */
+  std::vector<MeReal> lambda; /* n */
+  std::vector<MeReal> w;      /* n: A*lambda - b, eps included */
   KeaStatus status = KeaStatus::BadInput;
-  int iterations = 0;          /* linear solves (active set) or sweeps (PGS) */
-  MeReal residual = 0;         /* max complementarity violation (absolute) */
+  int iterations = 0;  /* linear solves (active set) or sweeps (PGS) */
+  MeReal residual = 0; /* max complementarity violation (absolute) */
   /* Statistics (active set; 0 for PGS): factorisations of a free block (a
    * solve whose free set is the previous solve's re-uses its factor), and
    * friction fixed-point rounds that needed another inner solve (0 when
@@ -210,9 +210,9 @@ struct KeaResult {
  * Mdt hands over: A's sparsity follows which rows share a body. */
 struct SparseLcpProblem {
   int n = 0;
-  std::span<const int> rowStart;  /* n + 1 */
-  std::span<const int> col;       /* rowStart[n] */
-  std::span<const MeReal> val;    /* rowStart[n] */
+  std::span<const int> rowStart; /* n + 1 */
+  std::span<const int> col;      /* rowStart[n] */
+  std::span<const MeReal> val;   /* rowStart[n] */
   std::span<const MeReal> b, lo, hi;
   std::span<const int> findex;
   std::span<const MeReal> mu;
@@ -231,8 +231,8 @@ void KeaWorkspaceDestroy(KeaWorkspace *workspace);
 
 /* The same solve with the caller's workspace; the answer goes to `result`,
  * whose vectors keep their capacity from call to call. */
-void KeaSolveSparse(const SparseLcpProblem &problem, const KeaOptions &options,
-                    KeaWorkspace &workspace, KeaResult &result);
+void KeaSolveSparse(const SparseLcpProblem &problem, const KeaOptions &options, KeaWorkspace &workspace,
+                    KeaResult &result);
 
 /* The exact method (see kea_activeset.cpp). */
 KeaResult KeaSolveActiveSet(const LcpProblem &problem, const KeaOptions &options);
@@ -246,8 +246,7 @@ KeaResult KeaSolve(const LcpProblem &problem, const KeaOptions &options);
 /* The contract's residual of a given lambda: max_i r_i, with w = (A + eps I)
  * lambda - b written to `w` when it is not empty (n values). Assumes a valid
  * problem. */
-MeReal KeaResidual(const LcpProblem &problem, MeReal epsilon, std::span<const MeReal> lambda,
-                   std::span<MeReal> w = {});
+MeReal KeaResidual(const LcpProblem &problem, MeReal epsilon, std::span<const MeReal> lambda, std::span<MeReal> w = {});
 
 /* The tolerance a given options value resolves to (its default when 0). */
 MeReal KeaDefaultTolerance();

@@ -53,8 +53,7 @@ namespace {
 
 /* Projected Gauss-Seidel over the CSR rows (see kea_pgs.cpp for the
  * method). */
-void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name, detail::PgsScratch &s,
-               KeaResult &r) {
+void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name, detail::PgsScratch &s, KeaResult &r) {
   const auto n = static_cast<std::size_t>(p.n);
   const MeReal eps = o.epsilon;
   const int cap = o.maxIterations > 0 ? o.maxIterations : 50;
@@ -73,7 +72,8 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   s.diag.assign(n, MeReal(0));
   for (std::size_t i = 0; i < n; ++i)
     for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k)
-      if (static_cast<std::size_t>(p.col[static_cast<std::size_t>(k)]) == i) s.diag[i] = p.val[static_cast<std::size_t>(k)] + eps;
+      if (static_cast<std::size_t>(p.col[static_cast<std::size_t>(k)]) == i)
+        s.diag[i] = p.val[static_cast<std::size_t>(k)] + eps;
 
   s.best = r.lambda;
   s.w.resize(n);
@@ -85,7 +85,8 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
       if (!(s.diag[i] > 0)) continue; /* a null row: nothing to gain from it */
       MeReal wi = -p.b[i] + eps * r.lambda[i];
       for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k)
-        wi += p.val[static_cast<std::size_t>(k)] * r.lambda[static_cast<std::size_t>(p.col[static_cast<std::size_t>(k)])];
+        wi +=
+            p.val[static_cast<std::size_t>(k)] * r.lambda[static_cast<std::size_t>(p.col[static_cast<std::size_t>(k)])];
       MeReal rowLo = s.lo[i], rowHi = s.hi[i];
       if (friction && p.findex[i] >= 0) {
         const MeReal limit = p.mu[i] * std::max(r.lambda[static_cast<std::size_t>(p.findex[i])], MeReal(0));
@@ -182,8 +183,8 @@ void KeaWorkspaceDestroy(KeaWorkspace *workspace) { delete workspace; }
 void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &workspace, KeaResult &result) {
   static const char *const kName = "KeaSolveSparse";
   /* A problem with the kept factor's structure had it validated before. */
-  const bool knownStructure = o.factorMemory != KeaFactorMemory::Off && o.method == KeaMethod::ActiveSet &&
-                              workspace.backend.keptStructure(p);
+  const bool knownStructure =
+      o.factorMemory != KeaFactorMemory::Off && o.method == KeaMethod::ActiveSet && workspace.backend.keptStructure(p);
   if (knownStructure ? !detail::ValidateSparseValues(p, o, kName) : !detail::ValidateSparse(p, o, kName)) {
     BadInput(p.n, result);
     return;
@@ -202,7 +203,8 @@ void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace
   result.factorizations = workspace.backend.factorizations();
   result.staleSolves = workspace.backend.staleSolves();
   result.staleIterations = workspace.backend.staleIterations();
-  if (warm && result.status == KeaStatus::CycleDetected) RetryCold(p, o, target, workspace, result);
+  if (warm && result.status == KeaStatus::CycleDetected)
+    RetryCold(p, o, target, workspace, result);
   else if (warm && result.status == KeaStatus::IterationLimit)
     detail::WarnIterationLimit(o, kName, result.iterations, result.residual);
 }

@@ -99,7 +99,8 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   /* Room for the largest envelope the rule below accepts, so that no free
    * set of this problem makes the envelope grow. */
   std::size_t accepted = std::max(kEnvelopeRows * (kEnvelopeRows + 1) / 2, kEnvelopeWidth * n);
-  if (envelopeRows > 0) accepted = static_cast<std::size_t>(envelopeRows) * (static_cast<std::size_t>(envelopeRows) + 1) / 2;
+  if (envelopeRows > 0)
+    accepted = static_cast<std::size_t>(envelopeRows) * (static_cast<std::size_t>(envelopeRows) + 1) / 2;
   if (envelopeRows < 0) accepted = 0;
   envelope_.reserve(n, std::min(accepted, n * (n + 1) / 2));
   envelopeRows_ = envelopeRows;
@@ -124,9 +125,12 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   const auto n = static_cast<std::size_t>(p.n);
   naturalRows_.clear();
   for (std::size_t i = 0; i < n; ++i) {
-    if (set[i] == AtLo) lambda[i] = lo[i];
-    else if (set[i] == AtHi) lambda[i] = hi[i];
-    else naturalRows_.push_back(static_cast<int>(i));
+    if (set[i] == AtLo)
+      lambda[i] = lo[i];
+    else if (set[i] == AtHi)
+      lambda[i] = hi[i];
+    else
+      naturalRows_.push_back(static_cast<int>(i));
   }
   const std::size_t m = naturalRows_.size();
   if (m == 0) return;
@@ -261,10 +265,14 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
 std::span<const int> SparseBackend::factorRows() const {
   if (stale_) return {}; /* its solves are not exact: no coupled friction step on it */
   switch (factor_) {
-    case Factor::Envelope: return naturalRows_;
-    case Factor::BandEnvelope: return bandRows_;
-    case Factor::Sparse: return ldltOk_ ? std::span<const int>(orderedRows_) : std::span<const int>();
-    default: return {};
+    case Factor::Envelope:
+      return naturalRows_;
+    case Factor::BandEnvelope:
+      return bandRows_;
+    case Factor::Sparse:
+      return ldltOk_ ? std::span<const int>(orderedRows_) : std::span<const int>();
+    default:
+      return {};
   }
 }
 
@@ -542,8 +550,10 @@ void SparseBackend::gatherUpper(std::size_t m, MeReal shift) {
 
 void SparseBackend::factoriseSparse(const std::vector<unsigned char> &set) {
   const std::size_t m = naturalRows_.size();
-  if (order_.empty()) computeOrder();
-  else if (!upperFresh_) buildOrderedUpper();
+  if (order_.empty())
+    computeOrder();
+  else if (!upperFresh_)
+    buildOrderedUpper();
   upperFresh_ = true;
   orderedRows_.clear();
   for (int i : order_)
@@ -588,7 +598,8 @@ void SparseBackend::fallback(const std::vector<unsigned char> &set, std::vector<
   gatherUpper(m, std::sqrt(ME_REAL_EPSILON) * (1 + diagMax));
   const Ldlt shifted(block_);
   Vec x;
-  if (shifted.info() == Eigen::Success) x = shifted.solve(Eigen::Map<const Vec>(rhs_.data(), static_cast<Eigen::Index>(m)));
+  if (shifted.info() == Eigen::Success)
+    x = shifted.solve(Eigen::Map<const Vec>(rhs_.data(), static_cast<Eigen::Index>(m)));
   if (x.size() != static_cast<Eigen::Index>(m) || !x.allFinite()) x = Vec::Zero(static_cast<Eigen::Index>(m));
   /* The kept factorisation is the unshifted one; drop it. */
   factor_ = Factor::None;

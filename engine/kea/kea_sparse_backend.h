@@ -83,14 +83,13 @@ class SparseBackend {
    * arrays. With a factor memory, a factorisation of a previous problem of the
    * same sparsity and eps is kept as a stale factor (see above), and
    * `target` is the largest residual component a solve with it may leave. */
-  void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0,
-             KeaFactorMemory memory = KeaFactorMemory::Off,
+  void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0, KeaFactorMemory memory = KeaFactorMemory::Off,
              MeReal target = 0);
 
   /* See kea_activeset_core.h. */
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w);
-  void solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
-                 const std::vector<MeReal> &hi, std::vector<MeReal> &lambda);
+  void solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo, const std::vector<MeReal> &hi,
+                 std::vector<MeReal> &lambda);
 
   /* See kea_friction_coupling.h. */
   std::span<const int> factorRows() const;
@@ -110,8 +109,7 @@ class SparseBackend {
  private:
   enum class Factor { None, Envelope, BandEnvelope, Sparse };
 
-  void buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set,
-                const std::vector<MeReal> &lambda);
+  void buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set, const std::vector<MeReal> &lambda);
   bool sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const;
   void keepSparsity(const SparseLcpProblem &p);
   void rememberSparsity();

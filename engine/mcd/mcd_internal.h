@@ -28,18 +28,18 @@ namespace karma::mcd {
 // What the framework knows about a geometry type. Mass properties are for
 // density 1 (mass == volume); each type file defines one record.
 struct GeometryType {
-    const char *name;
-    // Frees memory the geometry owns besides its own block (may be NULL).
-    void (*release)(McdGeometry *g);
-    // World AABB of the geometry placed at tm.
-    void (*aabb)(const McdGeometry *g, MECONSTMATRIX MeMatrix4 tm, MeVector3 mn, MeVector3 mx);
-    // Volume, centre of mass and inertia about it (density 1); false when the
-    // shape has no finite volume.
-    bool (*mass)(const McdGeometry *g, MeReal *volume, MeVector3 com, MeMatrix3 inertia);
+  const char *name;
+  // Frees memory the geometry owns besides its own block (may be NULL).
+  void (*release)(McdGeometry *g);
+  // World AABB of the geometry placed at tm.
+  void (*aabb)(const McdGeometry *g, MECONSTMATRIX MeMatrix4 tm, MeVector3 mn, MeVector3 mx);
+  // Volume, centre of mass and inertia about it (density 1); false when the
+  // shape has no finite volume.
+  bool (*mass)(const McdGeometry *g, MeReal *volume, MeVector3 com, MeMatrix3 inertia);
 };
 
-extern const GeometryType kSphereType, kBoxType, kCylinderType, kPlaneType, kSphylType,
-    kTriangleListType, kConvexMeshType, kAggregateType;
+extern const GeometryType kSphereType, kBoxType, kCylinderType, kPlaneType, kSphylType, kTriangleListType,
+    kConvexMeshType, kAggregateType;
 
 // The geometry's type record, or NULL when its framework lacks it.
 const GeometryType *TypeOf(const McdGeometry *g);
@@ -59,7 +59,7 @@ void AggregateDropElements(McdGeometry *g);
 McdGeometry *CheckType(McdGeometry *g, int type, const char *fn);
 template <class T>
 inline T *As(McdGeometry *g, int type, const char *fn) {
-    return reinterpret_cast<T *>(CheckType(g, type, fn));
+  return reinterpret_cast<T *>(CheckType(g, type, fn));
 }
 
 // True when x is finite and > 0 (>= 0 when zeroOk).
@@ -67,8 +67,8 @@ bool PositiveFinite(MeReal x, bool zeroOk = false);
 bool IsFiniteTM(MECONSTMATRIX MeMatrix4 tm);
 
 // Geometry instances (instance.cpp).
-bool BuildInstance(McdFramework *fw, McdGeometryInstance *inst, McdGeometry *g,
-                   McdModel *model, McdGeometryInstance *parent);
+bool BuildInstance(McdFramework *fw, McdGeometryInstance *inst, McdGeometry *g, McdModel *model,
+                   McdGeometryInstance *parent);
 void ReleaseInstance(McdFramework *fw, McdGeometryInstance *inst);
 // Places the instance at world transform tm (stored in inst->tm for
 // children) and caches its AABB, recursively.
@@ -93,53 +93,53 @@ int EffectiveContactCap(const McdModelPair *pair, int resultCap);
 
 // Aggregate layout (shared by aggregate.cpp, instance.cpp and mass code).
 struct McdAggregateData {
-    McdGeometry m_g;
-    int maxCount;
-    int count;
-    McdGeometry **elements;   // maxCount slots
-    MeMatrix4Ptr *relTMs;     // maxCount slots, user pointers
+  McdGeometry m_g;
+  int maxCount;
+  int count;
+  McdGeometry **elements;  // maxCount slots
+  MeMatrix4Ptr *relTMs;    // maxCount slots, user pointers
 };
 
 struct McdGeometryInstance {
-    McdGeometry *geometry;
-    MeMatrix4Ptr tm;            // world TM: the model's pointer, a user pointer or &ownTM
-    MeMatrix4 ownTM;            // storage for a child without a user pointer
-    McdGeometryInstance *parent;
-    McdGeometryInstance **children;
-    int childCount;
-    McdModel *model;
-    MeVector3 aabbMin, aabbMax;
-    int material;
+  McdGeometry *geometry;
+  MeMatrix4Ptr tm;  // world TM: the model's pointer, a user pointer or &ownTM
+  MeMatrix4 ownTM;  // storage for a child without a user pointer
+  McdGeometryInstance *parent;
+  McdGeometryInstance **children;
+  int childCount;
+  McdModel *model;
+  MeVector3 aabbMin, aabbMax;
+  int material;
 };
 
 struct McdModel {
-    McdGeometryInstance instance;  // top instance; instance.tm is the model TM
-    McdFramework *framework;
-    MeMatrix4Ptr relTM;            // optional relative transform...
-    MeMatrix4Ptr linkTM;           // ...composed with this into instance.tm
-    McdModelUpdateCallback callback;
-    void *userData;
-    MdtBodyID body;
-    MeReal *linearVelocity;
-    MeReal *angularVelocity;
-    void *space;
-    int spaceIndex;
-    int sortKey;                   // McdModelSetSortKey's key
-    int sortKeySet;                // 1 once McdModelSetSortKey was called
-    MeI32 inheritedSortKey;        // McdModelSetInheritedSortKey's key (Mst: the body's)
-    MeReal boundsPadding;          // McdModelSetBoundsPadding's margin, >= 0
-    int updated;                   // 1 once McdModelUpdate cached an AABB
+  McdGeometryInstance instance;  // top instance; instance.tm is the model TM
+  McdFramework *framework;
+  MeMatrix4Ptr relTM;   // optional relative transform...
+  MeMatrix4Ptr linkTM;  // ...composed with this into instance.tm
+  McdModelUpdateCallback callback;
+  void *userData;
+  MdtBodyID body;
+  MeReal *linearVelocity;
+  MeReal *angularVelocity;
+  void *space;
+  int spaceIndex;
+  int sortKey;             // McdModelSetSortKey's key
+  int sortKeySet;          // 1 once McdModelSetSortKey was called
+  MeI32 inheritedSortKey;  // McdModelSetInheritedSortKey's key (Mst: the body's)
+  MeReal boundsPadding;    // McdModelSetBoundsPadding's margin, >= 0
+  int updated;             // 1 once McdModelUpdate cached an AABB
 };
 
 struct McdFramework {
-    MeReal lengthScale;
-    MeReal contactTolerance;
-    int typeMax;                                  // built-in + user slots
-    const karma::mcd::GeometryType **types;       // typeMax, NULL = unregistered
-    McdInteractions *table;                       // typeMax * typeMax
-    unsigned char *explicitEntry;                 // typeMax * typeMax
-    MePool models;
-    MePool instances;
-    McdGeometry *geometries;                      // list head
-    int geometryCount;
+  MeReal lengthScale;
+  MeReal contactTolerance;
+  int typeMax;                             // built-in + user slots
+  const karma::mcd::GeometryType **types;  // typeMax, NULL = unregistered
+  McdInteractions *table;                  // typeMax * typeMax
+  unsigned char *explicitEntry;            // typeMax * typeMax
+  MePool models;
+  MePool instances;
+  McdGeometry *geometries;  // list head
+  int geometryCount;
 };

@@ -21,12 +21,9 @@ void MEAPI MdtBodySetCollisionModel(const MdtBodyID body, void *model) {
   body->collisionModel = model;
 }
 
-void *MEAPI MdtBodyGetCollisionModel(const MdtBodyID body) {
-  return body ? body->collisionModel : nullptr;
-}
+void *MEAPI MdtBodyGetCollisionModel(const MdtBodyID body) { return body ? body->collisionModel : nullptr; }
 
-void MEAPI MdtWorldSetBodyEnableCallback(const MdtWorldID world, MdtBodyEnableCallbackPtr cb,
-                                         void *data) {
+void MEAPI MdtWorldSetBodyEnableCallback(const MdtWorldID world, MdtBodyEnableCallbackPtr cb, void *data) {
   ME_REQUIRE_ARG(world != nullptr, "MdtWorldSetBodyEnableCallback", "world is NULL");
   world->priv->bodyEnableCB = cb;
   world->priv->bodyEnableData = data;

@@ -40,8 +40,7 @@ using namespace karma::mdt;
 
 extern "C" {
 
-void MEAPI MdtBodySetCenterOfMassRelativeTransform(const MdtBodyID body,
-                                                   MECONSTMATRIX MeMatrix4 tm) {
+void MEAPI MdtBodySetCenterOfMassRelativeTransform(const MdtBodyID body, MECONSTMATRIX MeMatrix4 tm) {
   static const char *fn = "MdtBodySetCenterOfMassRelativeTransform";
   ME_REQUIRE_ARG(body != nullptr && tm != nullptr, fn, "NULL argument");
   bool finite = true;
@@ -54,8 +53,7 @@ void MEAPI MdtBodySetCenterOfMassRelativeTransform(const MdtBodyID body,
 }
 
 void MEAPI MdtBodyGetCenterOfMassRelativeTransform(const MdtBodyID body, MeMatrix4 tm) {
-  ME_REQUIRE_ARG(body != nullptr && tm != nullptr, "MdtBodyGetCenterOfMassRelativeTransform",
-                 "NULL argument");
+  ME_REQUIRE_ARG(body != nullptr && tm != nullptr, "MdtBodyGetCenterOfMassRelativeTransform", "NULL argument");
   MeMatrix4Copy(tm, body->comTM);
 }
 
@@ -67,14 +65,12 @@ void MEAPI MdtBodySetCenterOfMassRelativePosition(const MdtBodyID body, const Me
 }
 
 void MEAPI MdtBodyGetCenterOfMassRelativePosition(const MdtBodyID body, MeVector3 pos) {
-  ME_REQUIRE_ARG(body != nullptr && pos != nullptr, "MdtBodyGetCenterOfMassRelativePosition",
-                 "NULL argument");
+  ME_REQUIRE_ARG(body != nullptr && pos != nullptr, "MdtBodyGetCenterOfMassRelativePosition", "NULL argument");
   MeMatrix4TMGetPosition(pos, body->comTM);
 }
 
 void MEAPI MdtBodyGetCenterOfMassPosition(const MdtBodyID body, MeVector3 pos) {
-  ME_REQUIRE_ARG(body != nullptr && pos != nullptr, "MdtBodyGetCenterOfMassPosition",
-                 "NULL argument");
+  ME_REQUIRE_ARG(body != nullptr && pos != nullptr, "MdtBodyGetCenterOfMassPosition", "NULL argument");
   bodyCom(body, pos);
 }
 

@@ -21,8 +21,7 @@ bool accumulate(MeVector3 acc, const MeVector3 v) {
 }
 
 // Linear and angular part of v applied at world point p: r = p - centre of mass.
-bool accumulateAt(MdtBody *b, MeVector3 lin, MeVector3 ang, const MeVector3 v,
-                  const MeVector3 p) {
+bool accumulateAt(MdtBody *b, MeVector3 lin, MeVector3 ang, const MeVector3 v, const MeVector3 p) {
   if (!MeVector3AllFinite(v) || !MeVector3AllFinite(p)) return false;
   MeVector3 r, m, newLin, newAng;
   MeVector3 com;
@@ -41,58 +40,50 @@ bool accumulateAt(MdtBody *b, MeVector3 lin, MeVector3 ang, const MeVector3 v,
 
 extern "C" {
 
-void MEAPI MdtBodyAddForce(const MdtBodyID body, const MeReal fx, const MeReal fy,
-                           const MeReal fz) {
+void MEAPI MdtBodyAddForce(const MdtBodyID body, const MeReal fx, const MeReal fy, const MeReal fz) {
   static const char *fn = "MdtBodyAddForce";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
   const MeVector3 f = {fx, fy, fz};
-  ME_REQUIRE_ARG(accumulate(body->force, f), fn,
-                 "force (%g, %g, %g) is not finite or overflows; ignored", (double)fx,
+  ME_REQUIRE_ARG(accumulate(body->force, f), fn, "force (%g, %g, %g) is not finite or overflows; ignored", (double)fx,
                  (double)fy, (double)fz);
 }
 
-void MEAPI MdtBodyAddTorque(const MdtBodyID body, const MeReal tx, const MeReal ty,
-                            const MeReal tz) {
+void MEAPI MdtBodyAddTorque(const MdtBodyID body, const MeReal tx, const MeReal ty, const MeReal tz) {
   static const char *fn = "MdtBodyAddTorque";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
   const MeVector3 t = {tx, ty, tz};
-  ME_REQUIRE_ARG(accumulate(body->torque, t), fn,
-                 "torque (%g, %g, %g) is not finite or overflows; ignored", (double)tx,
+  ME_REQUIRE_ARG(accumulate(body->torque, t), fn, "torque (%g, %g, %g) is not finite or overflows; ignored", (double)tx,
                  (double)ty, (double)tz);
 }
 
-void MEAPI MdtBodyAddForceAtPosition(const MdtBodyID body, const MeReal fx, const MeReal fy,
-                                     const MeReal fz, const MeReal px, const MeReal py,
-                                     const MeReal pz) {
+void MEAPI MdtBodyAddForceAtPosition(const MdtBodyID body, const MeReal fx, const MeReal fy, const MeReal fz,
+                                     const MeReal px, const MeReal py, const MeReal pz) {
   static const char *fn = "MdtBodyAddForceAtPosition";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
   const MeVector3 f = {fx, fy, fz};
   const MeVector3 p = {px, py, pz};
   ME_REQUIRE_ARG(accumulateAt(body, body->force, body->torque, f, p), fn,
-                 "force (%g, %g, %g) at (%g, %g, %g) is not finite or overflows; ignored",
-                 (double)fx, (double)fy, (double)fz, (double)px, (double)py, (double)pz);
+                 "force (%g, %g, %g) at (%g, %g, %g) is not finite or overflows; ignored", (double)fx, (double)fy,
+                 (double)fz, (double)px, (double)py, (double)pz);
 }
 
-void MEAPI MdtBodyAddImpulse(const MdtBodyID body, const MeReal jx, const MeReal jy,
-                             const MeReal jz) {
+void MEAPI MdtBodyAddImpulse(const MdtBodyID body, const MeReal jx, const MeReal jy, const MeReal jz) {
   static const char *fn = "MdtBodyAddImpulse";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
   const MeVector3 j = {jx, jy, jz};
-  ME_REQUIRE_ARG(accumulate(body->impulse, j), fn,
-                 "impulse (%g, %g, %g) is not finite or overflows; ignored", (double)jx,
-                 (double)jy, (double)jz);
+  ME_REQUIRE_ARG(accumulate(body->impulse, j), fn, "impulse (%g, %g, %g) is not finite or overflows; ignored",
+                 (double)jx, (double)jy, (double)jz);
 }
 
-void MEAPI MdtBodyAddImpulseAtPosition(const MdtBodyID body, const MeReal jx, const MeReal jy,
-                                       const MeReal jz, const MeReal px, const MeReal py,
-                                       const MeReal pz) {
+void MEAPI MdtBodyAddImpulseAtPosition(const MdtBodyID body, const MeReal jx, const MeReal jy, const MeReal jz,
+                                       const MeReal px, const MeReal py, const MeReal pz) {
   static const char *fn = "MdtBodyAddImpulseAtPosition";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
   const MeVector3 j = {jx, jy, jz};
   const MeVector3 p = {px, py, pz};
   ME_REQUIRE_ARG(accumulateAt(body, body->impulse, body->angularImpulse, j, p), fn,
-                 "impulse (%g, %g, %g) at (%g, %g, %g) is not finite or overflows; ignored",
-                 (double)jx, (double)jy, (double)jz, (double)px, (double)py, (double)pz);
+                 "impulse (%g, %g, %g) at (%g, %g, %g) is not finite or overflows; ignored", (double)jx, (double)jy,
+                 (double)jz, (double)px, (double)py, (double)pz);
 }
 
 void MEAPI MdtBodyGetForce(const MdtBodyID body, MeVector3 f) {

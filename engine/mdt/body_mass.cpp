@@ -38,8 +38,8 @@ void MEAPI MdtBodySetInertiaTensor(const MdtBodyID body, MECONSTMATRIX MeMatrix3
   }
   ME_REQUIRE_ARG(isFinite, fn, "tensor is not finite; ignored");
   const MeReal tol = (MeReal)1e-4 * largest;
-  const bool symmetric = MeFabs(I[0][1] - I[1][0]) <= tol && MeFabs(I[0][2] - I[2][0]) <= tol &&
-                         MeFabs(I[1][2] - I[2][1]) <= tol;
+  const bool symmetric =
+      MeFabs(I[0][1] - I[1][0]) <= tol && MeFabs(I[0][2] - I[2][0]) <= tol && MeFabs(I[1][2] - I[2][1]) <= tol;
   ME_REQUIRE_ARG(symmetric, fn, "tensor is not symmetric; ignored");
   MeMatrix3 S;
   for (int i = 0; i < 3; ++i)
@@ -47,8 +47,8 @@ void MEAPI MdtBodySetInertiaTensor(const MdtBodyID body, MECONSTMATRIX MeMatrix3
   const MeReal minor2 = S[0][0] * S[1][1] - S[0][1] * S[1][0];
   const MeReal det = MeMatrix3Determinant(S);
   ME_REQUIRE_ARG(S[0][0] > 0 && minor2 > 0 && det > 0, fn,
-                 "tensor is not positive definite (leading minors %g, %g, %g); ignored",
-                 (double)S[0][0], (double)minor2, (double)det);
+                 "tensor is not positive definite (leading minors %g, %g, %g); ignored", (double)S[0][0],
+                 (double)minor2, (double)det);
   MeMatrix3 inv;
   ME_REQUIRE_ARG(MeMatrix3Inverse(inv, S), fn, "tensor is singular; ignored");
   MeMatrix3Copy(body->inertiaCom, S);
@@ -63,8 +63,7 @@ void MEAPI MdtBodyGetInertiaTensor(const MdtBodyID body, MeMatrix3 I) {
 void MEAPI MdtBodySetLinearVelocityDamping(const MdtBodyID body, const MeReal d) {
   static const char *fn = "MdtBodySetLinearVelocityDamping";
   ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
-  ME_REQUIRE_ARG(realFinite(d) && d >= 0, fn, "damping must be finite and >= 0, got %g; ignored",
-                 (double)d);
+  ME_REQUIRE_ARG(realFinite(d) && d >= 0, fn, "damping must be finite and >= 0, got %g; ignored", (double)d);
   body->linearDamping = d;
 }
 
@@ -76,14 +75,12 @@ MeReal MEAPI MdtBodyGetLinearVelocityDamping(const MdtBodyID body) {
 void MEAPI MdtBodySetAngularVelocityDamping(const MdtBodyID body, const MeReal d) {
   static const char *fn = "MdtBodySetAngularVelocityDamping";
   ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
-  ME_REQUIRE_ARG(realFinite(d) && d >= 0, fn, "damping must be finite and >= 0, got %g; ignored",
-                 (double)d);
+  ME_REQUIRE_ARG(realFinite(d) && d >= 0, fn, "damping must be finite and >= 0, got %g; ignored", (double)d);
   body->angularDamping = d;
 }
 
 MeReal MEAPI MdtBodyGetAngularVelocityDamping(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, (MeReal)0, "MdtBodyGetAngularVelocityDamping", "%s",
-                     kNull);
+  ME_REQUIRE_ARG_RET(body != nullptr, (MeReal)0, "MdtBodyGetAngularVelocityDamping", "%s", kNull);
   return body->angularDamping;
 }
 

@@ -10,12 +10,11 @@ constexpr const char *kNull = "body is NULL";
 
 extern "C" {
 
-void MEAPI MdtBodySetPosition(const MdtBodyID body, const MeReal x, const MeReal y,
-                              const MeReal z) {
+void MEAPI MdtBodySetPosition(const MdtBodyID body, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtBodySetPosition";
   ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
-  ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position (%g, %g, %g) is not finite; ignored", (double)x,
-                 (double)y, (double)z);
+  ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position (%g, %g, %g) is not finite; ignored", (double)x, (double)y,
+                 (double)z);
   MeVector3Set(body->position, x, y, z);
   updateTransform(body);
 }
@@ -25,13 +24,12 @@ void MEAPI MdtBodyGetPosition(const MdtBodyID body, MeVector3 position) {
   MeVector3Copy(position, body->position);
 }
 
-void MEAPI MdtBodySetQuaternion(const MdtBodyID body, const MeReal qw, const MeReal qx,
-                                const MeReal qy, const MeReal qz) {
+void MEAPI MdtBodySetQuaternion(const MdtBodyID body, const MeReal qw, const MeReal qx, const MeReal qy,
+                                const MeReal qz) {
   static const char *fn = "MdtBodySetQuaternion";
   ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
-  ME_REQUIRE_ARG(realFinite(qw) && realFinite3(qx, qy, qz), fn,
-                 "quaternion (%g, %g, %g, %g) is not finite; ignored", (double)qw, (double)qx,
-                 (double)qy, (double)qz);
+  ME_REQUIRE_ARG(realFinite(qw) && realFinite3(qx, qy, qz), fn, "quaternion (%g, %g, %g, %g) is not finite; ignored",
+                 (double)qw, (double)qx, (double)qy, (double)qz);
   MeVector4 q = {qw, qx, qy, qz};
   const MeReal n = MeVector4Magnitude(q);
   ME_REQUIRE_ARG(n > 0 && realFinite(n), fn, "quaternion has zero (or overflowing) length; ignored");
@@ -73,12 +71,11 @@ MeMatrix4Ptr MEAPI MdtBodyGetTransformPtr(const MdtBodyID body) {
   return body->tm;
 }
 
-void MEAPI MdtBodySetLinearVelocity(const MdtBodyID body, const MeReal dx, const MeReal dy,
-                                    const MeReal dz) {
+void MEAPI MdtBodySetLinearVelocity(const MdtBodyID body, const MeReal dx, const MeReal dy, const MeReal dz) {
   static const char *fn = "MdtBodySetLinearVelocity";
   ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
-  ME_REQUIRE_ARG(realFinite3(dx, dy, dz), fn, "velocity (%g, %g, %g) is not finite; ignored",
-                 (double)dx, (double)dy, (double)dz);
+  ME_REQUIRE_ARG(realFinite3(dx, dy, dz), fn, "velocity (%g, %g, %g) is not finite; ignored", (double)dx, (double)dy,
+                 (double)dz);
   MeVector3Set(body->velocity, dx, dy, dz);
 }
 
@@ -87,13 +84,11 @@ void MEAPI MdtBodyGetLinearVelocity(const MdtBodyID body, MeVector3 v) {
   MeVector3Copy(v, body->velocity);
 }
 
-void MEAPI MdtBodySetAngularVelocity(const MdtBodyID body, const MeReal wx, const MeReal wy,
-                                     const MeReal wz) {
+void MEAPI MdtBodySetAngularVelocity(const MdtBodyID body, const MeReal wx, const MeReal wy, const MeReal wz) {
   static const char *fn = "MdtBodySetAngularVelocity";
   ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
-  ME_REQUIRE_ARG(realFinite3(wx, wy, wz), fn,
-                 "angular velocity (%g, %g, %g) is not finite; ignored", (double)wx, (double)wy,
-                 (double)wz);
+  ME_REQUIRE_ARG(realFinite3(wx, wy, wz), fn, "angular velocity (%g, %g, %g) is not finite; ignored", (double)wx,
+                 (double)wy, (double)wz);
   MeVector3Set(body->angularVelocity, wx, wy, wz);
 }
 
@@ -103,23 +98,19 @@ void MEAPI MdtBodyGetAngularVelocity(const MdtBodyID body, MeVector3 w) {
 }
 
 void MEAPI MdtBodyGetLinearAcceleration(const MdtBodyID body, MeVector3 a) {
-  ME_REQUIRE_ARG(body != nullptr && a != nullptr, "MdtBodyGetLinearAcceleration",
-                 "NULL argument");
+  ME_REQUIRE_ARG(body != nullptr && a != nullptr, "MdtBodyGetLinearAcceleration", "NULL argument");
   MeVector3Copy(a, body->acceleration);
 }
 
 void MEAPI MdtBodyGetAngularAcceleration(const MdtBodyID body, MeVector3 a) {
-  ME_REQUIRE_ARG(body != nullptr && a != nullptr, "MdtBodyGetAngularAcceleration",
-                 "NULL argument");
+  ME_REQUIRE_ARG(body != nullptr && a != nullptr, "MdtBodyGetAngularAcceleration", "NULL argument");
   MeVector3Copy(a, body->angularAcceleration);
 }
 
-void MEAPI MdtBodySetFastSpinAxis(const MdtBodyID body, const MeReal x, const MeReal y,
-                                  const MeReal z) {
+void MEAPI MdtBodySetFastSpinAxis(const MdtBodyID body, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtBodySetFastSpinAxis";
   ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
-  ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "axis (%g, %g, %g) is not finite; ignored", (double)x,
-                 (double)y, (double)z);
+  ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "axis (%g, %g, %g) is not finite; ignored", (double)x, (double)y, (double)z);
   MeVector3 a = {x, y, z};
   const MeReal n = MeVector3Magnitude(a);
   ME_REQUIRE_ARG(n > 0 && realFinite(n), fn, "axis has zero (or overflowing) length; ignored");

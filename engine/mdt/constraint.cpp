@@ -60,9 +60,7 @@ void attachDefault(MdtConstraint *c) {
   setWorldAxes(c, x, y);
 }
 
-MdtConstraint *castTo(MdtConstraint *c, const ConstraintType &type) {
-  return (c && c->type == &type) ? c : nullptr;
-}
+MdtConstraint *castTo(MdtConstraint *c, const ConstraintType &type) { return (c && c->type == &type) ? c : nullptr; }
 
 bool checkType(const MdtConstraint *c, const ConstraintType &type, const char *fn) {
   if (!c) {
@@ -70,8 +68,7 @@ bool checkType(const MdtConstraint *c, const ConstraintType &type, const char *f
     return false;
   }
   if (c->type != &type) {
-    MeWarning(0, "%s: the constraint is of type %s where %s was expected; ignored", fn,
-              c->type->name, type.name);
+    MeWarning(0, "%s: the constraint is of type %s where %s was expected; ignored", fn, c->type->name, type.name);
     return false;
   }
   return true;
@@ -96,8 +93,7 @@ bool bodyValid(unsigned i, const char *fn) {
 extern "C" {
 
 MdtConstraintType MEAPI MdtConstraintGetType(const MdtConstraintID c) {
-  ME_REQUIRE_ARG_RET(c != nullptr, MdtConstraintTypeCount, "MdtConstraintGetType",
-                     "constraint is NULL");
+  ME_REQUIRE_ARG_RET(c != nullptr, MdtConstraintTypeCount, "MdtConstraintGetType", "constraint is NULL");
   return c->type->id;
 }
 
@@ -117,11 +113,9 @@ void MEAPI MdtConstraintDestroy(const MdtConstraintID c) {
 void MEAPI MdtConstraintEnable(const MdtConstraintID c) {
   static const char *fn = "MdtConstraintEnable";
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
-  ME_REQUIRE_ARG(c->owner == nullptr, fn,
-                 "this contact belongs to a contact group, which is enabled instead; ignored");
+  ME_REQUIRE_ARG(c->owner == nullptr, fn, "this contact belongs to a contact group, which is enabled instead; ignored");
   if (c->type->id != MdtConstraintTypeContactGroup) {
-    ME_REQUIRE_ARG(c->body[0] != nullptr, fn, "%s has no bodies; set them before enabling",
-                   c->type->name);
+    ME_REQUIRE_ARG(c->body[0] != nullptr, fn, "%s has no bodies; set them before enabling", c->type->name);
   }
   c->enabled = TRUE;
 }
@@ -136,12 +130,10 @@ MeBool MEAPI MdtConstraintIsEnabled(const MdtConstraintID c) {
   return c->enabled ? TRUE : FALSE;
 }
 
-void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0,
-                                  const MdtBodyID body1) {
+void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0, const MdtBodyID body1) {
   static const char *fn = "MdtConstraintSetBodies";
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
-  ME_REQUIRE_ARG(!c->enabled, fn, "the %s is enabled; disable it before changing its bodies",
-                 c->type->name);
+  ME_REQUIRE_ARG(!c->enabled, fn, "the %s is enabled; disable it before changing its bodies", c->type->name);
   ME_REQUIRE_ARG(body0 != nullptr, fn, "body0 is NULL (only body1 may be the world)");
   ME_REQUIRE_ARG(body0 != body1, fn, "body0 and body1 are the same body");
   ME_REQUIRE_ARG(body0->world == c->world && (!body1 || body1->world == c->world), fn,

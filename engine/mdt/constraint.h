@@ -64,7 +64,7 @@ struct Row {
   MeReal mu;        // friction rows: coefficient times normal force = bound
   int friction;     // friction rows: index of the normal row within the constraint, else -1
   RowRole role;
-  MeReal depth;     // contact rows: penetration, for capping (shallowest go first)
+  MeReal depth;            // contact rows: penetration, for capping (shallowest go first)
   MdtConstraint *contact;  // contact rows: the contact they belong to
   // Warm start: the impulse the solver starts this row from. A type that
   // keeps its own memory (contacts: per contact, in the contact's frame)
@@ -79,7 +79,7 @@ struct Row {
 
 // The step's view of the world, handed to every constraint.
 struct StepContext {
-  MeReal h;        // step size
+  MeReal h;  // step size
   MeReal invH;
   MeReal epsilon;  // world softness for rigid rows
   MeReal gamma;    // world error reduction
@@ -108,8 +108,8 @@ class RowSink {
 struct ConstraintType {
   MdtConstraintType id;
   const char *name;
-  unsigned size;         // sizeof the type's struct
-  int maxRows;           // most rows it ever writes in one step
+  unsigned size;  // sizeof the type's struct
+  int maxRows;    // most rows it ever writes in one step
   // Optional: the most rows this particular constraint can write (contact
   // groups grow with their contacts); maxRows when NULL.
   int (*rowCapacity)(const MdtConstraint *c);
@@ -141,16 +141,16 @@ constexpr int kMaxWarmRows = 16;  // warm-start memory per constraint
 struct MdtConstraint {
   const karma::mdt::ConstraintType *type;
   MdtWorldID world;
-  MdtBodyID body[2];         // body[1] NULL: the world
+  MdtBodyID body[2];  // body[1] NULL: the world
   // Attachment frame per body, in that body's frame (world frame for the world).
   MeVector3 localPos[2];
-  MeVector3 localAxis[2];    // primary
-  MeVector3 localOrtho[2];   // secondary, orthogonal to the primary
+  MeVector3 localAxis[2];   // primary
+  MeVector3 localOrtho[2];  // secondary, orthogonal to the primary
   MeBool enabled;
   void *userData;
   MeI32 sortKey;
   std::uint64_t serial;
-  MeVector3 force[2];        // last step, world frame
+  MeVector3 force[2];  // last step, world frame
   MeVector3 torque[2];
   // Warm start: last step's impulses, valid for `warmRows` rows.
   MeReal warm[karma::mdt::kMaxWarmRows];

@@ -4,19 +4,17 @@
 
 extern "C" {
 
-void MEAPI MdtConstraintSetBothAxis(const MdtConstraintID c, const MeReal px, const MeReal py,
-                                    const MeReal pz, const MeReal ox, const MeReal oy,
-                                    const MeReal oz) {
+void MEAPI MdtConstraintSetBothAxis(const MdtConstraintID c, const MeReal px, const MeReal py, const MeReal pz,
+                                    const MeReal ox, const MeReal oy, const MeReal oz) {
   MdtConstraintSetAxes(c, px, py, pz, ox, oy, oz);
 }
 
-void MEAPI MdtConstraintGetBothAxes(const MdtConstraintID c, MeVector3 primary,
-                                    MeVector3 ortho) {
+void MEAPI MdtConstraintGetBothAxes(const MdtConstraintID c, MeVector3 primary, MeVector3 ortho) {
   MdtConstraintGetAxes(c, primary, ortho);
 }
 
-void MEAPI MdtConstraintBodyGetBothAxes(const MdtConstraintID c, const unsigned int bodyindex,
-                                        MeVector3 primary, MeVector3 ortho) {
+void MEAPI MdtConstraintBodyGetBothAxes(const MdtConstraintID c, const unsigned int bodyindex, MeVector3 primary,
+                                        MeVector3 ortho) {
   MdtConstraintBodyGetAxes(c, bodyindex, primary, ortho);
 }
 

@@ -131,8 +131,7 @@ bool indexOk(unsigned i, const char *fn) {
 
 extern "C" {
 
-void MEAPI MdtConstraintSetPosition(const MdtConstraintID c, const MeReal x, const MeReal y,
-                                    const MeReal z) {
+void MEAPI MdtConstraintSetPosition(const MdtConstraintID c, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtConstraintSetPosition";
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position is not finite; ignored");
@@ -141,13 +140,12 @@ void MEAPI MdtConstraintSetPosition(const MdtConstraintID c, const MeReal x, con
 }
 
 void MEAPI MdtConstraintGetPosition(const MdtConstraintID c, MeVector3 position) {
-  ME_REQUIRE_ARG(c != nullptr && position != nullptr, "MdtConstraintGetPosition",
-                 "NULL argument");
+  ME_REQUIRE_ARG(c != nullptr && position != nullptr, "MdtConstraintGetPosition", "NULL argument");
   attachmentPoint(c, 0, position);
 }
 
-void MEAPI MdtConstraintBodySetPosition(const MdtConstraintID c, const unsigned int i,
-                                        const MeReal x, const MeReal y, const MeReal z) {
+void MEAPI MdtConstraintBodySetPosition(const MdtConstraintID c, const unsigned int i, const MeReal x, const MeReal y,
+                                        const MeReal z) {
   static const char *fn = "MdtConstraintBodySetPosition";
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position is not finite; ignored");
@@ -156,16 +154,14 @@ void MEAPI MdtConstraintBodySetPosition(const MdtConstraintID c, const unsigned 
   pointToBodyFrame(c, (int)i, p, c->localPos[i]);
 }
 
-void MEAPI MdtConstraintBodyGetPosition(const MdtConstraintID c, const unsigned int i,
-                                        MeVector3 position) {
+void MEAPI MdtConstraintBodyGetPosition(const MdtConstraintID c, const unsigned int i, MeVector3 position) {
   static const char *fn = "MdtConstraintBodyGetPosition";
   ME_REQUIRE_ARG(c != nullptr && position != nullptr, fn, "NULL argument");
   if (!indexOk(i, fn)) return;
   attachmentPoint(c, (int)i, position);
 }
 
-void MEAPI MdtConstraintSetAxis(const MdtConstraintID c, const MeReal px, const MeReal py,
-                                const MeReal pz) {
+void MEAPI MdtConstraintSetAxis(const MdtConstraintID c, const MeReal px, const MeReal py, const MeReal pz) {
   static const char *fn = "MdtConstraintSetAxis";
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
   MeVector3 p = {px, py, pz}, o;
@@ -180,9 +176,8 @@ void MEAPI MdtConstraintSetAxis(const MdtConstraintID c, const MeReal px, const 
   setWorldAxes(c, p, o);
 }
 
-void MEAPI MdtConstraintSetAxes(const MdtConstraintID c, const MeReal px, const MeReal py,
-                                const MeReal pz, const MeReal ox, const MeReal oy,
-                                const MeReal oz) {
+void MEAPI MdtConstraintSetAxes(const MdtConstraintID c, const MeReal px, const MeReal py, const MeReal pz,
+                                const MeReal ox, const MeReal oy, const MeReal oz) {
   static const char *fn = "MdtConstraintSetAxes";
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
   MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
@@ -190,9 +185,8 @@ void MEAPI MdtConstraintSetAxes(const MdtConstraintID c, const MeReal px, const 
   setWorldAxes(c, p, o);
 }
 
-void MEAPI MdtConstraintBodySetAxes(const MdtConstraintID c, const unsigned int i,
-                                    const MeReal px, const MeReal py, const MeReal pz,
-                                    const MeReal ox, const MeReal oy, const MeReal oz) {
+void MEAPI MdtConstraintBodySetAxes(const MdtConstraintID c, const unsigned int i, const MeReal px, const MeReal py,
+                                    const MeReal pz, const MeReal ox, const MeReal oy, const MeReal oz) {
   static const char *fn = "MdtConstraintBodySetAxes";
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
   if (!indexOk(i, fn)) return;
@@ -208,14 +202,12 @@ void MEAPI MdtConstraintGetAxis(const MdtConstraintID c, MeVector3 axis) {
 }
 
 void MEAPI MdtConstraintGetAxes(const MdtConstraintID c, MeVector3 primary, MeVector3 ortho) {
-  ME_REQUIRE_ARG(c != nullptr && primary != nullptr && ortho != nullptr, "MdtConstraintGetAxes",
-                 "NULL argument");
+  ME_REQUIRE_ARG(c != nullptr && primary != nullptr && ortho != nullptr, "MdtConstraintGetAxes", "NULL argument");
   attachmentAxis(c, 0, primary);
   attachmentOrtho(c, 0, ortho);
 }
 
-void MEAPI MdtConstraintBodyGetAxes(const MdtConstraintID c, const unsigned int i,
-                                    MeVector3 primary, MeVector3 ortho) {
+void MEAPI MdtConstraintBodyGetAxes(const MdtConstraintID c, const unsigned int i, MeVector3 primary, MeVector3 ortho) {
   static const char *fn = "MdtConstraintBodyGetAxes";
   ME_REQUIRE_ARG(c != nullptr && primary != nullptr && ortho != nullptr, fn, "NULL argument");
   if (!indexOk(i, fn)) return;

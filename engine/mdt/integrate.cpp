@@ -38,13 +38,12 @@ bool MeMatrix3IsZero3(MECONSTMATRIX MeMatrix3 m) {
 }
 }  // namespace
 
-void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor,
-                     const MeVector3 v) {
+void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor, const MeVector3 v) {
   MeMatrix3 R;
   MeMatrix4TMGetRotation(R, b->tm);
   MeVector3 vb, lb;
-  MeMatrix3MultiplyVector(vb, R, v);        // world -> body
-  MeMatrix3MultiplyVector(lb, tensor, vb);  // tensor in the body frame
+  MeMatrix3MultiplyVector(vb, R, v);             // world -> body
+  MeMatrix3MultiplyVector(lb, tensor, vb);       // tensor in the body frame
   MeMatrix3TransposeMultiplyVector(out, R, lb);  // body -> world
 }
 
@@ -78,8 +77,8 @@ void gyroscopicStep(const MdtBody *b, MECONSTMATRIX MeMatrix3 Iw, MeReal h, MeVe
     MeVector3 e = {0, 0, 0}, col, t1, t2;
     e[k] = 1;
     MeMatrix3MultiplyVector(col, Iw, e);  // Iw e_k
-    MeVector3Cross(t1, w, col);          // W Iw e_k
-    MeVector3Cross(t2, L, e);            // [Iw w]x e_k
+    MeVector3Cross(t1, w, col);           // W Iw e_k
+    MeVector3Cross(t2, L, e);             // [Iw w]x e_k
     for (int r = 0; r < 3; ++r) J[r][k] = col[r] + h * (t1[r] - t2[r]);
   }
   if (MeMatrix3Inverse(Jinv, J))
@@ -199,9 +198,8 @@ void advanceBody(MdtBody *b, MeReal h) {
     MeQuaternionRotateVector(rc, q1, c);
     MeVector3Subtract(x1, x1, rc);
   }
-  const bool ok = MeVector3AllFinite(v1) && MeVector3AllFinite(w1) && MeVector3AllFinite(x1) &&
-                  std::isfinite(q1[0]) && std::isfinite(q1[1]) && std::isfinite(q1[2]) &&
-                  std::isfinite(q1[3]);
+  const bool ok = MeVector3AllFinite(v1) && MeVector3AllFinite(w1) && MeVector3AllFinite(x1) && std::isfinite(q1[0]) &&
+                  std::isfinite(q1[1]) && std::isfinite(q1[2]) && std::isfinite(q1[3]);
   if (ok) {
     const MeReal invH = (MeReal)1 / h;
     MeVector3Subtract(tmp, v1, b->velocity);

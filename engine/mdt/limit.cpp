@@ -49,8 +49,7 @@ void MEAPI MdtSingleLimitSetStiffness(const MdtSingleLimitID sl, const MeReal k)
 void MEAPI MdtSingleLimitSetDamping(const MdtSingleLimitID sl, const MeReal d) {
   static const char *fn = "MdtSingleLimitSetDamping";
   ME_REQUIRE_ARG(sl != nullptr, fn, "limit is NULL");
-  ME_REQUIRE_ARG(d >= 0 && realFinite(d), fn, "damping %g must be finite and >= 0; ignored",
-                 (double)d);
+  ME_REQUIRE_ARG(d >= 0 && realFinite(d), fn, "damping %g must be finite and >= 0; ignored", (double)d);
   sl->damping = d;
 }
 void MEAPI MdtSingleLimitSetRestitution(const MdtSingleLimitID sl, const MeReal e) {
@@ -127,13 +126,12 @@ void MEAPI MdtLimitSetStiffnessThreshold(const MdtLimitID limit, const MeReal t)
   limit->stiffnessThreshold = t > MEINFINITY ? MEINFINITY : t;
 }
 
-void MEAPI MdtLimitSetLimitedForceMotor(const MdtLimitID limit, const MeReal desiredVelocity,
-                                        const MeReal forceLimit) {
+void MEAPI MdtLimitSetLimitedForceMotor(const MdtLimitID limit, const MeReal desiredVelocity, const MeReal forceLimit) {
   static const char *fn = "MdtLimitSetLimitedForceMotor";
   ME_REQUIRE_ARG(limit != nullptr, fn, "limit is NULL");
   ME_REQUIRE_ARG(realFinite(desiredVelocity), fn, "desired velocity is not finite; ignored");
-  ME_REQUIRE_ARG(forceLimit >= 0 && realFinite(forceLimit), fn,
-                 "force limit %g must be finite and >= 0; ignored", (double)forceLimit);
+  ME_REQUIRE_ARG(forceLimit >= 0 && realFinite(forceLimit), fn, "force limit %g must be finite and >= 0; ignored",
+                 (double)forceLimit);
   limit->motorDesiredVelocity = desiredVelocity;
   limit->motorMaxForce = forceLimit;
   limit->motorized = forceLimit > 0 ? TRUE : FALSE;
@@ -175,12 +173,11 @@ MeBool MEAPI MdtLimitPositionIsCalculated(const MdtLimitID limit) {
   return limit->calculatePosition;
 }
 
-void MEAPI MdtLimitController(const MdtLimitID limit, const MeReal desiredPosition,
-                              const MeReal gap, const MeReal maxSpeed, const MeReal maxForce) {
+void MEAPI MdtLimitController(const MdtLimitID limit, const MeReal desiredPosition, const MeReal gap,
+                              const MeReal maxSpeed, const MeReal maxForce) {
   static const char *fn = "MdtLimitController";
   ME_REQUIRE_ARG(limit != nullptr, fn, "limit is NULL");
-  ME_REQUIRE_ARG(realFinite(desiredPosition) && realFinite(maxSpeed), fn,
-                 "arguments are not finite; ignored");
+  ME_REQUIRE_ARG(realFinite(desiredPosition) && realFinite(maxSpeed), fn, "arguments are not finite; ignored");
   ME_REQUIRE_ARG(gap > 0 && realFinite(gap), fn, "gap %g must be positive; ignored", (double)gap);
   const MeReal e = desiredPosition - limit->position;
   MeReal v = maxSpeed * e / gap;

@@ -38,7 +38,7 @@ struct MdtBody {
   MeVector3 fastSpinAxis;
   MeBool fastSpinEnabled;
   MeBool enabled;
-  MeBool alive;  // TRUE from MdtBodyCreate to MdtBodyDestroy (stale handles are refused)
+  MeBool alive;          // TRUE from MdtBodyCreate to MdtBodyDestroy (stale handles are refused)
   MdtBody *nextRetired;  // destroyed bodies waiting for reuse, oldest first
   void *userData;
   void *collisionModel;  // the bridge's slot (bridge/mdt_bridge.h); never read here
@@ -63,7 +63,7 @@ struct StepScratch;
 
 struct MdtWorldPrivate {
   MePool bodies;
-  MePool constraints;          // every constraint type, slots of the largest size
+  MePool constraints;  // every constraint type, slots of the largest size
   unsigned constraintSlotSize;
   std::uint64_t nextConstraintSerial;
   karma::mdt::StepScratch *scratch;  // step work arrays, reused across steps
@@ -83,20 +83,18 @@ struct MdtWorldPrivate {
   unsigned int enabledCount;
   MeReal lengthScale;
   MeReal massScale;
-  MeReal lastStepSize;         // of the last MdtWorldStep, 0 before the first
+  MeReal lastStepSize;  // of the last MdtWorldStep, 0 before the first
   std::uint64_t nextSerial;
-  MdtWorldParams checked;      // params as last validated (world_params.cpp)
-  int debugDrawOptions;        // MdtWorldSetDebugDrawOptions, stored only
+  MdtWorldParams checked;              // params as last validated (world_params.cpp)
+  int debugDrawOptions;                // MdtWorldSetDebugDrawOptions, stored only
   MdtAliveWindowMode aliveWindowMode;  // how the alive window counts (sleep.cpp)
-  MeBool forcesDoNotWake;      // MdtWorldSetWakeByForce(world, 0): the FAQ's reading
+  MeBool forcesDoNotWake;              // MdtWorldSetWakeByForce(world, 0): the FAQ's reading
 };
 
 namespace karma::mdt {
 
 inline bool realFinite(MeReal x) { return std::isfinite(x); }
-inline bool realFinite3(MeReal a, MeReal b, MeReal c) {
-  return realFinite(a) && realFinite(b) && realFinite(c);
-}
+inline bool realFinite3(MeReal a, MeReal b, MeReal c) { return realFinite(a) && realFinite(b) && realFinite(c); }
 
 // Rebuilds b->tm from b->q and b->position.
 void updateTransform(MdtBody *b);
@@ -119,11 +117,9 @@ void advanceBody(MdtBody *b, MeReal h);
 // start (rotation_drift.cpp): `turn` is the world angular velocity to hold
 // over h, `wEndBody` the body-frame angular velocity at the end; the world
 // angular momentum and the kinetic energy are kept.
-void freeRotationDrift(const MdtBody *b, const MeVector3 w1, MeReal h, MeVector3 turn,
-                       MeVector3 wEndBody);
+void freeRotationDrift(const MdtBody *b, const MeVector3 w1, MeReal h, MeVector3 turn, MeVector3 wEndBody);
 // w = R^T (Ib (R v)): a world vector through a body-frame tensor.
-void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor,
-                     const MeVector3 v);
+void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor, const MeVector3 v);
 
 // The direct-write check of the world parameters (world_params.cpp):
 // rememberCheckedParams when the world is made, checkDirectParamWrites at

@@ -59,16 +59,14 @@ void turnBack(const MeVector3 w, MeReal h, const MeVector3 v, MeVector3 out) {
 }
 
 // F(m) = 2 m - Lb0 - (Lb0 turned back about Ib^-1 m).
-void residual(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, MeReal h, const MeVector3 m,
-              MeVector3 F) {
+void residual(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, MeReal h, const MeVector3 m, MeVector3 F) {
   MeVector3 wm, L1;
   MeMatrix3MultiplyVector(wm, invIb, m);
   turnBack(wm, h, Lb0, L1);
   for (int r = 0; r < 3; ++r) F[r] = 2 * m[r] - Lb0[r] - L1[r];
 }
 
-void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, MeReal h,
-                           MeVector3 m) {
+void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, MeReal h, MeVector3 m) {
   MeVector3Copy(m, Lb0);
   const MeReal size = MeVector3Magnitude(Lb0);
   if (!(size > 0)) return;  // at rest: m = Lb0 = 0
@@ -95,8 +93,7 @@ void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, M
 
 }  // namespace
 
-void freeRotationDrift(const MdtBody *b, const MeVector3 w1, MeReal h, MeVector3 turn,
-                       MeVector3 wEndBody) {
+void freeRotationDrift(const MdtBody *b, const MeVector3 w1, MeReal h, MeVector3 turn, MeVector3 wEndBody) {
   MeMatrix3 R;
   MeMatrix4TMGetRotation(R, b->tm);
   MeVector3 wb, Lb0;

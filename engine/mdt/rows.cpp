@@ -117,11 +117,11 @@ bool isHard(const MdtSingleLimit &sl, MeReal threshold) {
 // pushed back. Restitution e asks for a rebound of e times the approach
 // speed; past the stop, gamma removes the overshoot. Soft stops are damped
 // springs that act only past the stop.
-void addStopRow(const MdtSingleLimit &sl, MeReal threshold, const MeReal jAxis[4][3], MeReal sign,
-                MeReal gap, MeReal rate, RowSink &sink, const StepContext &ctx) {
+void addStopRow(const MdtSingleLimit &sl, MeReal threshold, const MeReal jAxis[4][3], MeReal sign, MeReal gap,
+                MeReal rate, RowSink &sink, const StepContext &ctx) {
   if (sl.stiffness <= 0 && sl.damping <= 0) return;  // this side is switched off
   const bool hard = isHard(sl, threshold);
-  const MeReal approach = -sign * rate;  // > 0 when closing on (or going past) the stop
+  const MeReal approach = -sign * rate;                     // > 0 when closing on (or going past) the stop
   if (hard ? gap - approach * ctx.h > 0 : gap > 0) return;  // not reached this step
   Row &row = sink.add(ctx);
   for (int k = 0; k < 4; ++k) MeVector3MultiplyScalar(row.J[k], jAxis[k], sign);
@@ -164,10 +164,10 @@ void addLimitRows(MdtLimit *limit, const MdtConstraint *c, RowSink &sink, const 
   }
   if (limit->motorized && limit->motorMaxForce > 0) {
     // A motor pushing into a hard stop it already touches adds nothing.
-    const bool intoLower = atLower && limit->motorDesiredVelocity < 0 &&
-                           isHard(limit->limit[0], limit->stiffnessThreshold);
-    const bool intoUpper = atUpper && limit->motorDesiredVelocity > 0 &&
-                           isHard(limit->limit[1], limit->stiffnessThreshold);
+    const bool intoLower =
+        atLower && limit->motorDesiredVelocity < 0 && isHard(limit->limit[0], limit->stiffnessThreshold);
+    const bool intoUpper =
+        atUpper && limit->motorDesiredVelocity > 0 && isHard(limit->limit[1], limit->stiffnessThreshold);
     if (!intoLower && !intoUpper) {
       Row &row = sink.add(ctx);
       for (int k = 0; k < 4; ++k) MeVector3Copy(row.J[k], jAxis[k]);

@@ -48,8 +48,7 @@ void accumulateGeometricStiffness(MdtWorldID world, StepScratch &s, const Partit
       const MeReal kappa = factor * f * len;
       MeVector3Scale(r, 1 / len);
       for (int a = 0; a < 3; ++a)
-        for (int e = 0; e < 3; ++e)
-          b->geomStiffness[a][e] += kappa * ((a == e ? (MeReal)1 : (MeReal)0) - r[a] * r[e]);
+        for (int e = 0; e < 3; ++e) b->geomStiffness[a][e] += kappa * ((a == e ? (MeReal)1 : (MeReal)0) - r[a] * r[e]);
     }
   }
 }

@@ -38,10 +38,9 @@ extern "C" {
 MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int maxConstraints,
                                 const MeReal lengthScale, const MeReal massScale) {
   static const char *fn = "MdtWorldCreate";
-  ME_REQUIRE_ARG_RET(maxBodies <= (unsigned int)(INT_MAX / 2), nullptr, fn,
-                     "maxBodies %u is too large", maxBodies);
-  ME_REQUIRE_ARG_RET(maxConstraints <= (unsigned int)(INT_MAX / 2), nullptr, fn,
-                     "maxConstraints %u is too large", maxConstraints);
+  ME_REQUIRE_ARG_RET(maxBodies <= (unsigned int)(INT_MAX / 2), nullptr, fn, "maxBodies %u is too large", maxBodies);
+  ME_REQUIRE_ARG_RET(maxConstraints <= (unsigned int)(INT_MAX / 2), nullptr, fn, "maxConstraints %u is too large",
+                     maxConstraints);
   ME_REQUIRE_ARG_RET(realFinite(lengthScale) && lengthScale > 0, nullptr, fn,
                      "lengthScale must be positive and finite, got %g", (double)lengthScale);
   ME_REQUIRE_ARG_RET(realFinite(massScale) && massScale > 0, nullptr, fn,
@@ -53,12 +52,10 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
   const unsigned slot = largestConstraintSize();
   bool bodiesOk = false, constraintsOk = false;
   if (ok) {
-    ok = bodiesOk =
-        MePoolInit(&p->bodies, (int)maxBodies, (int)sizeof(MdtBody), (int)alignof(MdtBody));
+    ok = bodiesOk = MePoolInit(&p->bodies, (int)maxBodies, (int)sizeof(MdtBody), (int)alignof(MdtBody));
   }
   if (ok) {
-    ok = constraintsOk = MePoolInit(&p->constraints, (int)maxConstraints, (int)slot,
-                                    (int)alignof(std::max_align_t));
+    ok = constraintsOk = MePoolInit(&p->constraints, (int)maxConstraints, (int)slot, (int)alignof(std::max_align_t));
   }
   if (ok) {
     p->scratch = new (std::nothrow) StepScratch();
@@ -89,7 +86,7 @@ void MEAPI MdtWorldDestroy(const MdtWorldID world) {
   if (!world) return;
   MdtWorldPrivate *p = world->priv;
   MePoolDestroy(&p->constraints);  // constraints own nothing outside their slot
-  MePoolDestroy(&p->bodies);  // every body goes with the pool
+  MePoolDestroy(&p->bodies);       // every body goes with the pool
   delete p->scratch;
   MeMemoryAPI.destroy(p);
   MeMemoryAPI.destroy(world);
@@ -115,8 +112,8 @@ unsigned int MEAPI MdtWorldGetMaxBodies(const MdtWorldID world) {
 void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   static const char *fn = "MdtWorldStep";
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
-  ME_REQUIRE_ARG(realFinite(stepSize) && stepSize > 0, fn,
-                 "stepSize must be positive and finite, got %g", (double)stepSize);
+  ME_REQUIRE_ARG(realFinite(stepSize) && stepSize > 0, fn, "stepSize must be positive and finite, got %g",
+                 (double)stepSize);
   checkDirectParamWrites(world);
   ME_REQUIRE_ARG(MeVector3AllFinite(world->params.gravity), fn, "gravity is not finite");
   world->priv->lastStepSize = stepSize;
@@ -163,8 +160,7 @@ const Partition *partitionAt(MdtWorldID world, int i, const char *fn) {
   }
   const StepScratch &s = *world->priv->scratch;
   if (i < 0 || i >= (int)s.partitions.size()) {
-    MeWarning(0, "%s: partition %d does not exist (last step had %d)", fn, i,
-              (int)s.partitions.size());
+    MeWarning(0, "%s: partition %d does not exist (last step had %d)", fn, i, (int)s.partitions.size());
     return nullptr;
   }
   return &s.partitions[(size_t)i];
@@ -176,8 +172,7 @@ int MEAPI MdtWorldGetPartitionBodyCount(const MdtWorldID world, const int partit
   return p ? p->bodyCount : 0;
 }
 
-MdtBodyID MEAPI MdtWorldGetPartitionBody(const MdtWorldID world, const int partition,
-                                         const int i) {
+MdtBodyID MEAPI MdtWorldGetPartitionBody(const MdtWorldID world, const int partition, const int i) {
   const Partition *p = partitionAt(world, partition, "MdtWorldGetPartitionBody");
   if (!p) return nullptr;
   if (i < 0 || i >= p->bodyCount) {

@@ -30,12 +30,11 @@ void warnGammaOverOne(MeReal gamma, const char *fn) {
 
 extern "C" {
 
-void MEAPI MdtWorldSetGravity(const MdtWorldID world, const MeReal gx, const MeReal gy,
-                              const MeReal gz) {
+void MEAPI MdtWorldSetGravity(const MdtWorldID world, const MeReal gx, const MeReal gy, const MeReal gz) {
   static const char *fn = "MdtWorldSetGravity";
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
-  ME_REQUIRE_ARG(realFinite3(gx, gy, gz), fn, "gravity (%g, %g, %g) is not finite; ignored",
-                 (double)gx, (double)gy, (double)gz);
+  ME_REQUIRE_ARG(realFinite3(gx, gy, gz), fn, "gravity (%g, %g, %g) is not finite; ignored", (double)gx, (double)gy,
+                 (double)gz);
   MeVector3Set(world->params.gravity, gx, gy, gz);
   MeVector3Copy(world->priv->checked.gravity, world->params.gravity);
 }
@@ -48,8 +47,8 @@ void MEAPI MdtWorldGetGravity(const MdtWorldID world, MeVector3 g) {
 void MEAPI MdtWorldSetEpsilon(const MdtWorldID world, const MeReal epsilon) {
   static const char *fn = "MdtWorldSetEpsilon";
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
-  ME_REQUIRE_ARG(realFinite(epsilon) && epsilon >= 0, fn,
-                 "epsilon must be finite and >= 0, got %g; ignored", (double)epsilon);
+  ME_REQUIRE_ARG(realFinite(epsilon) && epsilon >= 0, fn, "epsilon must be finite and >= 0, got %g; ignored",
+                 (double)epsilon);
   world->params.epsilon = world->priv->checked.epsilon = epsilon;
 }
 
@@ -61,8 +60,7 @@ MeReal MEAPI MdtWorldGetEpsilon(const MdtWorldID world) {
 void MEAPI MdtWorldSetGamma(const MdtWorldID world, const MeReal gamma) {
   static const char *fn = "MdtWorldSetGamma";
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
-  ME_REQUIRE_ARG(realFinite(gamma) && gamma >= 0, fn,
-                 "gamma must be finite and >= 0, got %g; ignored", (double)gamma);
+  ME_REQUIRE_ARG(realFinite(gamma) && gamma >= 0, fn, "gamma must be finite and >= 0, got %g; ignored", (double)gamma);
   warnGammaOverOne(gamma, fn);
   world->params.gamma = world->priv->checked.gamma = gamma;
 }
@@ -85,27 +83,21 @@ MeBool MEAPI MdtWorldGetAutoDisable(const MdtWorldID world) {
 namespace {
 void setNonNegative(MdtWorldID world, MeReal v, MeReal MdtWorldParams::*field, const char *fn) {
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
-  ME_REQUIRE_ARG(realFinite(v) && v >= 0, fn, "value must be finite and >= 0, got %g; ignored",
-                 (double)v);
+  ME_REQUIRE_ARG(realFinite(v) && v >= 0, fn, "value must be finite and >= 0, got %g; ignored", (double)v);
   world->params.*field = world->priv->checked.*field = v;
 }
 }  // namespace
 
 void MEAPI MdtWorldSetAutoDisableVelocityThreshold(const MdtWorldID world, const MeReal v) {
-  setNonNegative(world, v, &MdtWorldParams::velocityThreshold,
-                 "MdtWorldSetAutoDisableVelocityThreshold");
+  setNonNegative(world, v, &MdtWorldParams::velocityThreshold, "MdtWorldSetAutoDisableVelocityThreshold");
 }
-void MEAPI MdtWorldSetAutoDisableAngularVelocityThreshold(const MdtWorldID world,
-                                                          const MeReal w) {
-  setNonNegative(world, w, &MdtWorldParams::angularVelocityThreshold,
-                 "MdtWorldSetAutoDisableAngularVelocityThreshold");
+void MEAPI MdtWorldSetAutoDisableAngularVelocityThreshold(const MdtWorldID world, const MeReal w) {
+  setNonNegative(world, w, &MdtWorldParams::angularVelocityThreshold, "MdtWorldSetAutoDisableAngularVelocityThreshold");
 }
 void MEAPI MdtWorldSetAutoDisableAccelerationThreshold(const MdtWorldID world, const MeReal a) {
-  setNonNegative(world, a, &MdtWorldParams::accelerationThreshold,
-                 "MdtWorldSetAutoDisableAccelerationThreshold");
+  setNonNegative(world, a, &MdtWorldParams::accelerationThreshold, "MdtWorldSetAutoDisableAccelerationThreshold");
 }
-void MEAPI MdtWorldSetAutoDisableAngularAccelerationThreshold(const MdtWorldID world,
-                                                              const MeReal a) {
+void MEAPI MdtWorldSetAutoDisableAngularAccelerationThreshold(const MdtWorldID world, const MeReal a) {
   setNonNegative(world, a, &MdtWorldParams::angularAccelerationThreshold,
                  "MdtWorldSetAutoDisableAngularAccelerationThreshold");
 }
@@ -113,19 +105,18 @@ void MEAPI MdtWorldSetAutoDisableAliveWindow(const MdtWorldID world, const MeRea
   setNonNegative(world, t, &MdtWorldParams::aliveWindow, "MdtWorldSetAutoDisableAliveWindow");
 }
 
-void MEAPI MdtWorldSetAutoDisableAliveWindowMode(const MdtWorldID world,
-                                                 const MdtAliveWindowMode mode) {
+void MEAPI MdtWorldSetAutoDisableAliveWindowMode(const MdtWorldID world, const MdtAliveWindowMode mode) {
   static const char *fn = "MdtWorldSetAutoDisableAliveWindowMode";
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
-  ME_REQUIRE_ARG(mode == MdtAliveWindowIdleSeconds || mode == MdtAliveWindowAwakeSeconds ||
-                     mode == MdtAliveWindowAwakeSteps,
-                 fn, "unknown mode %d; ignored", (int)mode);
+  ME_REQUIRE_ARG(
+      mode == MdtAliveWindowIdleSeconds || mode == MdtAliveWindowAwakeSeconds || mode == MdtAliveWindowAwakeSteps, fn,
+      "unknown mode %d; ignored", (int)mode);
   world->priv->aliveWindowMode = mode;
 }
 
 MdtAliveWindowMode MEAPI MdtWorldGetAutoDisableAliveWindowMode(const MdtWorldID world) {
-  ME_REQUIRE_ARG_RET(world != nullptr, MdtAliveWindowIdleSeconds,
-                     "MdtWorldGetAutoDisableAliveWindowMode", "world is NULL");
+  ME_REQUIRE_ARG_RET(world != nullptr, MdtAliveWindowIdleSeconds, "MdtWorldGetAutoDisableAliveWindowMode",
+                     "world is NULL");
   return world->priv->aliveWindowMode;
 }
 
@@ -164,8 +155,8 @@ void MEAPI MdtWorldSetContactImportanceCB(const MdtWorldID world, MdtContactImpo
 void MEAPI MdtWorldSetKeaMethod(const MdtWorldID world, const MdtKeaMethod method) {
   static const char *fn = "MdtWorldSetKeaMethod";
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
-  ME_REQUIRE_ARG(method == MdtKeaMethodActiveSet || method == MdtKeaMethodPGS, fn,
-                 "unknown method %d; ignored", (int)method);
+  ME_REQUIRE_ARG(method == MdtKeaMethodActiveSet || method == MdtKeaMethodPGS, fn, "unknown method %d; ignored",
+                 (int)method);
   world->params.keaMethod = world->priv->checked.keaMethod = method;
 }
 
@@ -177,8 +168,7 @@ void MEAPI MdtWorldSetKeaMaxIterations(const MdtWorldID world, const int n) {
 }
 
 void MEAPI MdtWorldSetGeometricStiffness(const MdtWorldID world, const MeReal factor) {
-  setNonNegative(world, factor, &MdtWorldParams::geometricStiffness,
-                 "MdtWorldSetGeometricStiffness");
+  setNonNegative(world, factor, &MdtWorldParams::geometricStiffness, "MdtWorldSetGeometricStiffness");
 }
 
 void MEAPI MdtWorldSetKeaTolerance(const MdtWorldID world, const MeReal tol) {
@@ -210,19 +200,16 @@ struct NonNegativeField {
 constexpr NonNegativeField kNonNegativeFields[] = {
     {&MdtWorldParams::epsilon, "MdtWorldSetEpsilon", "epsilon"},
     {&MdtWorldParams::gamma, "MdtWorldSetGamma", "gamma"},
-    {&MdtWorldParams::velocityThreshold, "MdtWorldSetAutoDisableVelocityThreshold",
-     "velocityThreshold"},
-    {&MdtWorldParams::angularVelocityThreshold,
-     "MdtWorldSetAutoDisableAngularVelocityThreshold", "angularVelocityThreshold"},
-    {&MdtWorldParams::accelerationThreshold, "MdtWorldSetAutoDisableAccelerationThreshold",
-     "accelerationThreshold"},
-    {&MdtWorldParams::angularAccelerationThreshold,
-     "MdtWorldSetAutoDisableAngularAccelerationThreshold", "angularAccelerationThreshold"},
+    {&MdtWorldParams::velocityThreshold, "MdtWorldSetAutoDisableVelocityThreshold", "velocityThreshold"},
+    {&MdtWorldParams::angularVelocityThreshold, "MdtWorldSetAutoDisableAngularVelocityThreshold",
+     "angularVelocityThreshold"},
+    {&MdtWorldParams::accelerationThreshold, "MdtWorldSetAutoDisableAccelerationThreshold", "accelerationThreshold"},
+    {&MdtWorldParams::angularAccelerationThreshold, "MdtWorldSetAutoDisableAngularAccelerationThreshold",
+     "angularAccelerationThreshold"},
     {&MdtWorldParams::aliveWindow, "MdtWorldSetAutoDisableAliveWindow", "aliveWindow"},
     {&MdtWorldParams::minSafeTime, "MdtWorldStep", "minSafeTime"},
     {&MdtWorldParams::keaTolerance, "MdtWorldSetKeaTolerance", "keaTolerance"},
-    {&MdtWorldParams::geometricStiffness, "MdtWorldSetGeometricStiffness",
-     "geometricStiffness"},
+    {&MdtWorldParams::geometricStiffness, "MdtWorldSetGeometricStiffness", "geometricStiffness"},
 };
 
 // Bit patterns compared, so a NaN written directly counts as a change.
@@ -279,8 +266,7 @@ void checkGravity(MdtWorldParams &p, MdtWorldParams &ok) {
 void checkKeaMethod(MdtWorldParams &p, MdtWorldParams &ok) {
   if (p.keaMethod == ok.keaMethod) return;
   if (p.keaMethod != MdtKeaMethodActiveSet && p.keaMethod != MdtKeaMethodPGS) {
-    MeArgumentWarning("MdtWorldSetKeaMethod",
-                      "world->params.keaMethod = %d (written directly) is unknown; ignored",
+    MeArgumentWarning("MdtWorldSetKeaMethod", "world->params.keaMethod = %d (written directly) is unknown; ignored",
                       (int)p.keaMethod);
     p.keaMethod = ok.keaMethod;
     return;
@@ -299,8 +285,7 @@ void checkDirectParamWrites(MdtWorldID world) {
   for (const NonNegativeField &f : kNonNegativeFields) checkNonNegative(p, ok, f);
   p.autoDisable = ok.autoDisable = p.autoDisable ? TRUE : FALSE;
   checkCount(p.maxMatrixSize, ok.maxMatrixSize, "MdtWorldSetMaxMatrixSize", "maxMatrixSize");
-  checkCount(p.keaMaxIterations, ok.keaMaxIterations, "MdtWorldSetKeaMaxIterations",
-             "keaMaxIterations");
+  checkCount(p.keaMaxIterations, ok.keaMaxIterations, "MdtWorldSetKeaMaxIterations", "keaMaxIterations");
   checkKeaMethod(p, ok);
 }
 

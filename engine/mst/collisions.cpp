@@ -32,7 +32,7 @@ using namespace karma::mst;
 namespace {
 
 void ClearContacts(MdtContactGroupID g) {
-    while (MdtContactID c = MdtContactGroupGetFirstContact(g)) MdtContactGroupDestroyContact(g, c);
+  while (MdtContactID c = MdtContactGroupGetFirstContact(g)) MdtContactGroupDestroyContact(g, c);
 }
 
 // How far a turn of the model about its origin can move its surface
@@ -41,100 +41,98 @@ void ClearContacts(MdtContactGroupID g) {
 // the geometry's own box (half its diagonal, less half its smallest side);
 // a sphere turning about its centre does not move its surface at all.
 MeReal TurnReach(McdModelID m) {
-    McdGeometryID g = McdModelGetGeometry(m);
-    if (McdGeometryGetType(g) == kMcdGeometryTypeSphere) return 0;
-    MeMatrix4 identity;
-    MeMatrix4TMMakeIdentity(identity);
-    MeVector3 lo, hi, d;
-    McdGeometryGetAABB(g, identity, lo, hi);
-    MeVector3Subtract(d, hi, lo);
-    const MeReal smallest = d[0] < d[1] ? (d[0] < d[2] ? d[0] : d[2]) : (d[1] < d[2] ? d[1] : d[2]);
-    const MeReal r = (MeReal)0.5 * (MeVector3Magnitude(d) - smallest);
-    return std::isfinite(r) && r > 0 ? r : 0;
+  McdGeometryID g = McdModelGetGeometry(m);
+  if (McdGeometryGetType(g) == kMcdGeometryTypeSphere) return 0;
+  MeMatrix4 identity;
+  MeMatrix4TMMakeIdentity(identity);
+  MeVector3 lo, hi, d;
+  McdGeometryGetAABB(g, identity, lo, hi);
+  MeVector3Subtract(d, hi, lo);
+  const MeReal smallest = d[0] < d[1] ? (d[0] < d[2] ? d[0] : d[2]) : (d[1] < d[2] ? d[1] : d[2]);
+  const MeReal r = (MeReal)0.5 * (MeVector3Magnitude(d) - smallest);
+  return std::isfinite(r) && r > 0 ? r : 0;
 }
 
 // The most the two models' gap can close in the coming step (see the top).
 MeReal ClosingDistance(McdModelID m1, McdModelID m2, MdtWorldID world) {
-    const MeReal h = MdtWorldGetLastStepSize(world);
-    if (!(h > 0)) return 0;
-    MeVector3 v = {0, 0, 0}, g;
-    MeReal angular = 0;
-    const McdModelID models[2] = {m1, m2};
-    for (int k = 0; k < 2; ++k) {
-        MdtBodyID b = McdModelGetBody(models[k]);
-        if (!b || !MdtBodyIsEnabled(b)) continue;
-        MeVector3 vb, wb;
-        MdtBodyGetLinearVelocity(b, vb);
-        MdtBodyGetAngularVelocity(b, wb);
-        MeVector3MultiplyAdd(v, k == 0 ? 1 : -1, vb);
-        angular += MeVector3Magnitude(wb) * TurnReach(models[k]);
-    }
-    MdtWorldGetGravity(world, g);
-    const MeReal speed = MeVector3Magnitude(v) + angular + MeVector3Magnitude(g) * h;
-    const MeReal closing = h * speed;
-    return std::isfinite(closing) ? closing : 0;
+  const MeReal h = MdtWorldGetLastStepSize(world);
+  if (!(h > 0)) return 0;
+  MeVector3 v = {0, 0, 0}, g;
+  MeReal angular = 0;
+  const McdModelID models[2] = {m1, m2};
+  for (int k = 0; k < 2; ++k) {
+    MdtBodyID b = McdModelGetBody(models[k]);
+    if (!b || !MdtBodyIsEnabled(b)) continue;
+    MeVector3 vb, wb;
+    MdtBodyGetLinearVelocity(b, vb);
+    MdtBodyGetAngularVelocity(b, wb);
+    MeVector3MultiplyAdd(v, k == 0 ? 1 : -1, vb);
+    angular += MeVector3Magnitude(wb) * TurnReach(models[k]);
+  }
+  MdtWorldGetGravity(world, g);
+  const MeReal speed = MeVector3Magnitude(v) + angular + MeVector3Magnitude(g) * h;
+  const MeReal closing = h * speed;
+  return std::isfinite(closing) ? closing : 0;
 }
 
 // McdIntersect with the contact tolerance raised by `extra` for this call.
 int IntersectWithMargin(McdModelPair *pair, McdIntersectResult *r, MeReal extra) {
-    McdFrameworkID fw = McdModelGetFramework(pair->model1);
-    const MeReal tolerance = McdFrameworkGetContactTolerance(fw);
-    if (extra > 0) McdFrameworkSetContactTolerance(fw, tolerance + extra);
-    const int touch = McdIntersect(pair, r);
-    if (extra > 0) McdFrameworkSetContactTolerance(fw, tolerance);
-    return touch;
+  McdFrameworkID fw = McdModelGetFramework(pair->model1);
+  const MeReal tolerance = McdFrameworkGetContactTolerance(fw);
+  if (extra > 0) McdFrameworkSetContactTolerance(fw, tolerance + extra);
+  const int touch = McdIntersect(pair, r);
+  if (extra > 0) McdFrameworkSetContactTolerance(fw, tolerance);
+  return touch;
 }
 
 void Collide(McdModelPair *pair, MdtWorldID world, MstBridge *b) {
-    McdModelID m1 = pair->model1, m2 = pair->model2;
-    if (McdSpaceModelIsFrozen(m1) && McdSpaceModelIsFrozen(m2)) return;
-    MdtBodyID b1 = McdModelGetBody(m1), b2 = McdModelGetBody(m2);
-    if (!b1 && !b2) return;
-    const bool flip = b1 == nullptr;
-    auto group = static_cast<MdtContactGroupID>(pair->responseData);
+  McdModelID m1 = pair->model1, m2 = pair->model2;
+  if (McdSpaceModelIsFrozen(m1) && McdSpaceModelIsFrozen(m2)) return;
+  MdtBodyID b1 = McdModelGetBody(m1), b2 = McdModelGetBody(m2);
+  if (!b1 && !b2) return;
+  const bool flip = b1 == nullptr;
+  auto group = static_cast<MdtContactGroupID>(pair->responseData);
 
-    McdIntersectResult r{};
-    r.contacts = b->contacts;
-    r.contactMaxCount = kContactBuffer;
-    int count = 0;
-    MaterialEntry *e = nullptr;
-    if (IntersectWithMargin(pair, &r, ClosingDistance(m1, m2, world)) && r.contactCount > 0) {
-        e = Entry(b, McdModelGetMaterial(m1), McdModelGetMaterial(m2), "MstHandleCollisions");
-        if (!e) e = &b->materials[0];  // (warned) an unknown material acts as the default
-        count = (e->intersectCB && !e->intersectCB(&r)) ? 0 : r.contactCount;
-    }
-    if (count > kContactBuffer) count = kContactBuffer;
-    if (count > 0 && !group) {
-        group = MdtContactGroupCreate(world);
-        if (!group) return;  // the constraint pool is full (it warned)
-        MdtContactGroupSetBodies(group, flip ? b2 : b1, flip ? nullptr : b2);
-        pair->responseData = group;
-    }
-    if (!group) return;
-    if (count == 0) {
-        ClearContacts(group);
-    } else {
-        const MeReal reach = kMatchDistance * McdFrameworkGetLengthScale(McdModelGetFramework(m1));
-        MatchContacts(group, r.contacts, count, flip ? -1 : 1, e->params, reach, e->perContactCB, &r);
-        if (e->perPairCB && !e->perPairCB(&r, group)) ClearContacts(group);
-    }
-    if (MdtContactGroupGetCount(group) > 0)
-        MdtContactGroupEnable(group);
-    else
-        MdtContactGroupDisable(group);
+  McdIntersectResult r{};
+  r.contacts = b->contacts;
+  r.contactMaxCount = kContactBuffer;
+  int count = 0;
+  MaterialEntry *e = nullptr;
+  if (IntersectWithMargin(pair, &r, ClosingDistance(m1, m2, world)) && r.contactCount > 0) {
+    e = Entry(b, McdModelGetMaterial(m1), McdModelGetMaterial(m2), "MstHandleCollisions");
+    if (!e) e = &b->materials[0];  // (warned) an unknown material acts as the default
+    count = (e->intersectCB && !e->intersectCB(&r)) ? 0 : r.contactCount;
+  }
+  if (count > kContactBuffer) count = kContactBuffer;
+  if (count > 0 && !group) {
+    group = MdtContactGroupCreate(world);
+    if (!group) return;  // the constraint pool is full (it warned)
+    MdtContactGroupSetBodies(group, flip ? b2 : b1, flip ? nullptr : b2);
+    pair->responseData = group;
+  }
+  if (!group) return;
+  if (count == 0) {
+    ClearContacts(group);
+  } else {
+    const MeReal reach = kMatchDistance * McdFrameworkGetLengthScale(McdModelGetFramework(m1));
+    MatchContacts(group, r.contacts, count, flip ? -1 : 1, e->params, reach, e->perContactCB, &r);
+    if (e->perPairCB && !e->perPairCB(&r, group)) ClearContacts(group);
+  }
+  if (MdtContactGroupGetCount(group) > 0)
+    MdtContactGroupEnable(group);
+  else
+    MdtContactGroupDisable(group);
 }
 
 }  // namespace
 
 extern "C" {
 
-void MEAPI MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world,
-                               MstBridgeID b) {
-    static const char *fn = "MstHandleCollisions";
-    ME_REQUIRE_ARG(pairs != nullptr && world != nullptr && b != nullptr, fn,
-                   "container, world or bridge is NULL");
-    (void)space;  // frozen states are read through the models
-    for (int i = pairs->helloFirst; i < pairs->stayingEnd; ++i) Collide(pairs->array[i], world, b);
+void MEAPI MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID b) {
+  static const char *fn = "MstHandleCollisions";
+  ME_REQUIRE_ARG(pairs != nullptr && world != nullptr && b != nullptr, fn, "container, world or bridge is NULL");
+  (void)space;  // frozen states are read through the models
+  for (int i = pairs->helloFirst; i < pairs->stayingEnd; ++i) Collide(pairs->array[i], world, b);
 }
 
 }  // extern "C"

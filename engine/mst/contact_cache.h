@@ -52,9 +52,9 @@ inline constexpr MeReal kMatchCosine = (MeReal)0.9;
 
 // What the matching did, for the caller's bookkeeping and for tests.
 struct MatchCounts {
-    int kept = 0;     // old contacts matched and updated
-    int created = 0;  // new contacts appended
-    int removed = 0;  // old contacts destroyed
+  int kept = 0;     // old contacts matched and updated
+  int created = 0;  // new contacts appended
+  int removed = 0;  // old contacts destroyed
 };
 
 // Brings group g (body 0's normals: `sign` flips the collision normals when
@@ -64,8 +64,7 @@ struct MatchCounts {
 // (it may reject one: the contact is destroyed). Never allocates beyond the
 // world's constraint pool; a full pool drops the remaining new contacts
 // (the pool warned).
-MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeReal sign,
-                          const MdtContactParams &params, MeReal matchDistance,
-                          MstPerContactCBPtr perContact, McdIntersectResult *result);
+MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeReal sign, const MdtContactParams &params,
+                          MeReal matchDistance, MstPerContactCBPtr perContact, McdIntersectResult *result);
 
 }  // namespace karma::mst

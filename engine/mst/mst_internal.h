@@ -11,24 +11,24 @@
 namespace karma::mst {
 
 struct MaterialEntry {
-    MdtContactParams params;
-    MstIntersectCBPtr intersectCB;
-    MstPerContactCBPtr perContactCB;
-    MstPerPairCBPtr perPairCB;
+  MdtContactParams params;
+  MstIntersectCBPtr intersectCB;
+  MstPerContactCBPtr perContactCB;
+  MstPerPairCBPtr perPairCB;
 };
 
-inline constexpr int kPairChunk = 128;      // pairs per McdSpaceGetPairs call
-inline constexpr int kContactBuffer = 64;   // collision contacts per pair and step
+inline constexpr int kPairChunk = 128;     // pairs per McdSpaceGetPairs call
+inline constexpr int kContactBuffer = 64;  // collision contacts per pair and step
 
 }  // namespace karma::mst
 
 struct MstBridge {
-    McdFrameworkID framework;
-    int maxMaterials;
-    int materialCount;                     // materials in use, >= 1
-    karma::mst::MaterialEntry *materials;  // maxMaterials^2, MeMemoryAPI
-    McdModelPairContainer *pairs;
-    McdContact contacts[karma::mst::kContactBuffer];
+  McdFrameworkID framework;
+  int maxMaterials;
+  int materialCount;                     // materials in use, >= 1
+  karma::mst::MaterialEntry *materials;  // maxMaterials^2, MeMemoryAPI
+  McdModelPairContainer *pairs;
+  McdContact contacts[karma::mst::kContactBuffer];
 };
 
 namespace karma::mst {

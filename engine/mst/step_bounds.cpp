@@ -38,44 +38,43 @@ MeReal Norm(const MeVector3 a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[
 
 // The model's radius about the point c (see the top of the file).
 MeReal RadiusAbout(McdModelID model, const MeVector3 c) {
-    MeVector3 mn, mx, centre, half;
-    McdModelGetAABB(model, mn, mx);
-    for (int k = 0; k < 3; ++k) {
-        centre[k] = (MeReal)0.5 * (mn[k] + mx[k]) - c[k];
-        half[k] = (MeReal)0.5 * (mx[k] - mn[k]);
-    }
-    const MeReal r = Norm(centre) + Norm(half);
-    return std::isfinite(r) ? r : 0;
+  MeVector3 mn, mx, centre, half;
+  McdModelGetAABB(model, mn, mx);
+  for (int k = 0; k < 3; ++k) {
+    centre[k] = (MeReal)0.5 * (mn[k] + mx[k]) - c[k];
+    half[k] = (MeReal)0.5 * (mx[k] - mn[k]);
+  }
+  const MeReal r = Norm(centre) + Norm(half);
+  return std::isfinite(r) ? r : 0;
 }
 
 MeReal StepMargin(McdModelID model, MdtBodyID body, MeReal h, MeReal gravity, MeReal lengthScale) {
-    MeVector3 v, w, com;
-    MdtBodyGetLinearVelocity(body, v);
-    MdtBodyGetAngularVelocity(body, w);
-    MdtBodyGetCenterOfMassPosition(body, com);
-    const MeReal r = RadiusAbout(model, com);
-    const MeReal motion = h * Norm(v) + h * h * gravity + h * Norm(w) * r;
-    const MeReal cap = 2 * std::max(r, lengthScale);
-    return std::isfinite(motion) ? std::min(motion, cap) : cap;
+  MeVector3 v, w, com;
+  MdtBodyGetLinearVelocity(body, v);
+  MdtBodyGetAngularVelocity(body, w);
+  MdtBodyGetCenterOfMassPosition(body, com);
+  const MeReal r = RadiusAbout(model, com);
+  const MeReal motion = h * Norm(v) + h * h * gravity + h * Norm(w) * r;
+  const MeReal cap = 2 * std::max(r, lengthScale);
+  return std::isfinite(motion) ? std::min(motion, cap) : cap;
 }
 
 }  // namespace
 
 void PrepareModelsForStep(MstUniverseID u, MeReal h) {
-    MeVector3 g;
-    MdtWorldGetGravity(u->world, g);
-    const MeReal gravity = Norm(g);
-    const MeReal stepSize = h > 0 ? h : 0;
-    McdSpaceModelIterator it;
-    McdSpaceModelIteratorBegin(u->space, &it);
-    McdModelID model = nullptr;
-    while (McdSpaceGetModel(u->space, &it, &model)) {
-        MdtBodyID body = McdModelGetBody(model);
-        if (body) McdModelSetInheritedSortKey(model, MdtBodyGetSortKey(body));
-        const bool moving = body && MdtBodyIsEnabled(body);
-        McdModelSetBoundsPadding(
-            model, moving ? StepMargin(model, body, stepSize, gravity, u->sizes.lengthScale) : 0);
-    }
+  MeVector3 g;
+  MdtWorldGetGravity(u->world, g);
+  const MeReal gravity = Norm(g);
+  const MeReal stepSize = h > 0 ? h : 0;
+  McdSpaceModelIterator it;
+  McdSpaceModelIteratorBegin(u->space, &it);
+  McdModelID model = nullptr;
+  while (McdSpaceGetModel(u->space, &it, &model)) {
+    MdtBodyID body = McdModelGetBody(model);
+    if (body) McdModelSetInheritedSortKey(model, MdtBodyGetSortKey(body));
+    const bool moving = body && MdtBodyIsEnabled(body);
+    McdModelSetBoundsPadding(model, moving ? StepMargin(model, body, stepSize, gravity, u->sizes.lengthScale) : 0);
+  }
 }
 
 }  // namespace karma::mst

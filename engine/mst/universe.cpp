@@ -22,59 +22,58 @@ const MstUniverseSizes MstUniverseDefaultSizes = {
 };
 
 MstUniverseID MEAPI MstUniverseCreate(const MstUniverseSizes *sizes) {
-    static const char *fn = "MstUniverseCreate";
-    ME_REQUIRE_ARG_RET(sizes != nullptr, nullptr, fn, "sizes is NULL");
-    const MstUniverseSizes &s = *sizes;
-    ME_REQUIRE_ARG_RET(s.dynamicBodiesMaxCount >= 1 && s.dynamicConstraintsMaxCount >= 0 &&
-                           s.collisionUserGeometryTypesMaxCount >= 0 &&
-                           s.collisionModelsMaxCount >= 1 && s.collisionPairsMaxCount >= 1 &&
-                           s.collisionGeometryInstancesMaxCount >= 0 && s.materialsMaxCount >= 1,
-                       nullptr, fn,
-                       "bad sizes: bodies, models, pairs and materials must be at least 1, the "
-                       "other counts at least 0");
-    ME_REQUIRE_ARG_RET(s.lengthScale > 0 && s.massScale > 0, nullptr, fn,
-                       "lengthScale (%g) and massScale (%g) must be positive",
-                       (double)s.lengthScale, (double)s.massScale);
-    auto *u = static_cast<MstUniverse *>(MeMemoryAPI.createZeroed(sizeof(MstUniverse)));
-    if (!u) return nullptr;
-    u->sizes = s;
-    u->frame = McdInit(s.collisionUserGeometryTypesMaxCount, s.collisionModelsMaxCount,
-                       s.collisionGeometryInstancesMaxCount, s.lengthScale);
-    if (u->frame) {
-        McdPrimitivesRegisterTypes(u->frame);
-        McdPrimitivesRegisterInteractions(u->frame);
-        u->space = McdSpaceAxisSortCreate(u->frame, McdAllAxes, s.collisionModelsMaxCount,
-                                          s.collisionPairsMaxCount);
-    }
-    u->world = MdtWorldCreate((unsigned)s.dynamicBodiesMaxCount,
-                              (unsigned)s.dynamicConstraintsMaxCount, s.lengthScale, s.massScale);
-    u->bridge = MstBridgeCreate(u->frame, s.materialsMaxCount);
-    if (!u->frame || !u->space || !u->world || !u->bridge) {
-        MstUniverseDestroy(u);
-        return nullptr;
-    }
-    MstSetWorldHandlers(u->world);
-    return u;
+  static const char *fn = "MstUniverseCreate";
+  ME_REQUIRE_ARG_RET(sizes != nullptr, nullptr, fn, "sizes is NULL");
+  const MstUniverseSizes &s = *sizes;
+  ME_REQUIRE_ARG_RET(s.dynamicBodiesMaxCount >= 1 && s.dynamicConstraintsMaxCount >= 0 &&
+                         s.collisionUserGeometryTypesMaxCount >= 0 && s.collisionModelsMaxCount >= 1 &&
+                         s.collisionPairsMaxCount >= 1 && s.collisionGeometryInstancesMaxCount >= 0 &&
+                         s.materialsMaxCount >= 1,
+                     nullptr, fn,
+                     "bad sizes: bodies, models, pairs and materials must be at least 1, the "
+                     "other counts at least 0");
+  ME_REQUIRE_ARG_RET(s.lengthScale > 0 && s.massScale > 0, nullptr, fn,
+                     "lengthScale (%g) and massScale (%g) must be positive", (double)s.lengthScale,
+                     (double)s.massScale);
+  auto *u = static_cast<MstUniverse *>(MeMemoryAPI.createZeroed(sizeof(MstUniverse)));
+  if (!u) return nullptr;
+  u->sizes = s;
+  u->frame = McdInit(s.collisionUserGeometryTypesMaxCount, s.collisionModelsMaxCount,
+                     s.collisionGeometryInstancesMaxCount, s.lengthScale);
+  if (u->frame) {
+    McdPrimitivesRegisterTypes(u->frame);
+    McdPrimitivesRegisterInteractions(u->frame);
+    u->space = McdSpaceAxisSortCreate(u->frame, McdAllAxes, s.collisionModelsMaxCount, s.collisionPairsMaxCount);
+  }
+  u->world = MdtWorldCreate((unsigned)s.dynamicBodiesMaxCount, (unsigned)s.dynamicConstraintsMaxCount, s.lengthScale,
+                            s.massScale);
+  u->bridge = MstBridgeCreate(u->frame, s.materialsMaxCount);
+  if (!u->frame || !u->space || !u->world || !u->bridge) {
+    MstUniverseDestroy(u);
+    return nullptr;
+  }
+  MstSetWorldHandlers(u->world);
+  return u;
 }
 
 void MEAPI MstUniverseDestroy(MstUniverseID u) {
-    if (!u) return;
-    // The world first (bodies and contact groups), then the space (its
-    // pairs say goodbye while the models still exist), then the models and
-    // geometries with the framework.
-    MdtWorldDestroy(u->world);
-    McdSpaceDestroy(u->space);
-    if (u->frame) McdTerm(u->frame);
-    MstBridgeDestroy(u->bridge);
-    MeMemoryAPI.destroy(u);
+  if (!u) return;
+  // The world first (bodies and contact groups), then the space (its
+  // pairs say goodbye while the models still exist), then the models and
+  // geometries with the framework.
+  MdtWorldDestroy(u->world);
+  McdSpaceDestroy(u->space);
+  if (u->frame) McdTerm(u->frame);
+  MstBridgeDestroy(u->bridge);
+  MeMemoryAPI.destroy(u);
 }
 
 void MEAPI MstUniverseStep(MstUniverseID u, MeReal stepSize) {
-    ME_REQUIRE_ARG(u != nullptr, "MstUniverseStep", "universe is NULL");
-    karma::mst::PrepareModelsForStep(u, stepSize);
-    McdSpaceUpdateAll(u->space);
-    MstBridgeUpdateContacts(u->bridge, u->space, u->world);
-    MdtWorldStep(u->world, stepSize);
+  ME_REQUIRE_ARG(u != nullptr, "MstUniverseStep", "universe is NULL");
+  karma::mst::PrepareModelsForStep(u, stepSize);
+  McdSpaceUpdateAll(u->space);
+  MstBridgeUpdateContacts(u->bridge, u->space, u->world);
+  MdtWorldStep(u->world, stepSize);
 }
 
 MdtWorldID MEAPI MstUniverseGetWorld(MstUniverseID u) { return u ? u->world : nullptr; }

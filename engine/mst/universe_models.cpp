@@ -6,23 +6,24 @@
 namespace karma::mst {
 
 bool RemoveModelAndItsContacts(McdModelID model, const char *fn) {
-    auto *space = static_cast<McdSpace *>(McdModelGetSpace(model));
-    if (!space) return true;
-    if (!McdSpaceIsChanging(space)) {
-        MeArgumentWarning(fn, "the space is not in a change block (between steps it is); the "
-                              "model stays, nothing is destroyed");
-        return false;
+  auto *space = static_cast<McdSpace *>(McdModelGetSpace(model));
+  if (!space) return true;
+  if (!McdSpaceIsChanging(space)) {
+    MeArgumentWarning(fn,
+                      "the space is not in a change block (between steps it is); the "
+                      "model stays, nothing is destroyed");
+    return false;
+  }
+  for (int i = 0; i < space->pairCount; ++i) {
+    McdModelPair *p = &space->pairs[i];
+    if (p->model1 != model && p->model2 != model) continue;
+    if (p->responseData) {
+      MdtContactGroupDestroy(static_cast<MdtContactGroupID>(p->responseData));
+      p->responseData = nullptr;
     }
-    for (int i = 0; i < space->pairCount; ++i) {
-        McdModelPair *p = &space->pairs[i];
-        if (p->model1 != model && p->model2 != model) continue;
-        if (p->responseData) {
-            MdtContactGroupDestroy(static_cast<MdtContactGroupID>(p->responseData));
-            p->responseData = nullptr;
-        }
-        McdGoodbye(p);
-    }
-    return McdSpaceRemoveModel(model) != 0;
+    McdGoodbye(p);
+  }
+  return McdSpaceRemoveModel(model) != 0;
 }
 
 }  // namespace karma::mst
@@ -32,56 +33,56 @@ using namespace karma::mst;
 extern "C" {
 
 McdModelID MEAPI MstModelAndBodyCreate(MstUniverseID u, McdGeometryID g, MeReal density) {
-    static const char *fn = "MstModelAndBodyCreate";
-    ME_REQUIRE_ARG_RET(u != nullptr && g != nullptr, nullptr, fn, "universe or geometry is NULL");
-    McdModelID model = McdModelCreate(g);
-    if (!model) return nullptr;
-    MdtBodyID body = MdtBodyCreate(u->world);
-    if (!body) {
-        McdModelDestroy(model);
-        return nullptr;
-    }
-    MstAutoSetMassProperties(body, g, density);
-    McdModelSetBody(model, body);
-    MdtBodyEnable(body);
-    if (!McdSpaceInsertModel(u->space, model)) {
-        MdtBodyDestroy(body);
-        McdModelDestroy(model);
-        return nullptr;
-    }
-    return model;
+  static const char *fn = "MstModelAndBodyCreate";
+  ME_REQUIRE_ARG_RET(u != nullptr && g != nullptr, nullptr, fn, "universe or geometry is NULL");
+  McdModelID model = McdModelCreate(g);
+  if (!model) return nullptr;
+  MdtBodyID body = MdtBodyCreate(u->world);
+  if (!body) {
+    McdModelDestroy(model);
+    return nullptr;
+  }
+  MstAutoSetMassProperties(body, g, density);
+  McdModelSetBody(model, body);
+  MdtBodyEnable(body);
+  if (!McdSpaceInsertModel(u->space, model)) {
+    MdtBodyDestroy(body);
+    McdModelDestroy(model);
+    return nullptr;
+  }
+  return model;
 }
 
 void MEAPI MstModelAndBodyDestroy(McdModelID model) {
-    static const char *fn = "MstModelAndBodyDestroy";
-    if (!model) return;
-    if (!RemoveModelAndItsContacts(model, fn)) return;
-    MdtBodyID body = McdModelGetBody(model);
-    McdModelSetBody(model, nullptr);
-    MdtBodyDestroy(body);
-    McdModelDestroy(model);
+  static const char *fn = "MstModelAndBodyDestroy";
+  if (!model) return;
+  if (!RemoveModelAndItsContacts(model, fn)) return;
+  MdtBodyID body = McdModelGetBody(model);
+  McdModelSetBody(model, nullptr);
+  MdtBodyDestroy(body);
+  McdModelDestroy(model);
 }
 
 McdModelID MEAPI MstFixedModelCreate(MstUniverseID u, McdGeometryID g, MeMatrix4Ptr tm) {
-    static const char *fn = "MstFixedModelCreate";
-    ME_REQUIRE_ARG_RET(u != nullptr && g != nullptr && tm != nullptr, nullptr, fn,
-                       "universe, geometry or transform is NULL");
-    McdModelID model = McdModelCreate(g);
-    if (!model) return nullptr;
-    McdModelSetTransformPtr(model, tm);
-    if (!McdSpaceInsertModel(u->space, model)) {
-        McdModelDestroy(model);
-        return nullptr;
-    }
-    McdSpaceUpdateModel(model);
-    McdSpaceFreezeModel(model);
-    return model;
+  static const char *fn = "MstFixedModelCreate";
+  ME_REQUIRE_ARG_RET(u != nullptr && g != nullptr && tm != nullptr, nullptr, fn,
+                     "universe, geometry or transform is NULL");
+  McdModelID model = McdModelCreate(g);
+  if (!model) return nullptr;
+  McdModelSetTransformPtr(model, tm);
+  if (!McdSpaceInsertModel(u->space, model)) {
+    McdModelDestroy(model);
+    return nullptr;
+  }
+  McdSpaceUpdateModel(model);
+  McdSpaceFreezeModel(model);
+  return model;
 }
 
 void MEAPI MstFixedModelDestroy(McdModelID model) {
-    if (!model) return;
-    if (!RemoveModelAndItsContacts(model, "MstFixedModelDestroy")) return;
-    McdModelDestroy(model);
+  if (!model) return;
+  if (!RemoveModelAndItsContacts(model, "MstFixedModelDestroy")) return;
+  McdModelDestroy(model);
 }
 
 }  // extern "C"

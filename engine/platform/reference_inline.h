@@ -10,8 +10,8 @@
 
 namespace karma::platform::reference {
 
-inline void BodyMinvJt(MeReal invMass, const MeReal invInertiaWorld[3][3], const MeReal jl[3],
-                       const MeReal ja[3], MeReal outLin[3], MeReal outAng[3]) {
+inline void BodyMinvJt(MeReal invMass, const MeReal invInertiaWorld[3][3], const MeReal jl[3], const MeReal ja[3],
+                       MeReal outLin[3], MeReal outAng[3]) {
   outLin[0] = jl[0] * invMass;
   outLin[1] = jl[1] * invMass;
   outLin[2] = jl[2] * invMass;

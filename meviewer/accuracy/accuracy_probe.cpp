@@ -10,7 +10,7 @@ struct RAccuracyProbe {
   RRender *rc = nullptr;
   MdtWorldID world = nullptr;
   std::vector<MdtConstraintID> joints;
-  std::vector<MdtBodyID> bodies;  /* every body seen in a partition, first sighting order */
+  std::vector<MdtBodyID> bodies; /* every body seen in a partition, first sighting order */
   std::unordered_set<MdtBodyID> seen;
   bool started = false;
   double startEnergy = 0;
@@ -60,7 +60,7 @@ void MEAPI ProbeSource(RAccuracyFigures *figures, void *data) {
   RAccuracyProbeRead(static_cast<RAccuracyProbe *>(data), figures);
 }
 
-} // namespace
+}  // namespace
 
 RAccuracyProbe *MEAPI RAccuracyProbeCreate(RRender *rc, MdtWorldID world) {
   ME_REQUIRE_ARG_RET(rc && world, nullptr, "RAccuracyProbeCreate", "rc or world is NULL");
@@ -84,8 +84,10 @@ void MEAPI RAccuracyProbeRead(RAccuracyProbe *p, RAccuracyFigures *figures) {
   double energy = 0, deepest = 0, gap = 0;
   for (MdtBodyID b : p->bodies) energy += BodyEnergy(b, g);
   /* A body first seen now joins at its present energy: no drift from it. */
-  if (!p->started) p->startEnergy = energy, p->started = true;
-  else p->startEnergy += joined;
+  if (!p->started)
+    p->startEnergy = energy, p->started = true;
+  else
+    p->startEnergy += joined;
   for (int k = 0; k < MdtWorldGetPartitionCount(p->world); ++k)
     for (int i = 0; i < MdtWorldGetPartitionBodyCount(p->world, k); ++i) {
       MdtBodyID b = MdtWorldGetPartitionBody(p->world, k, i);

@@ -10,7 +10,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   std::string error;
   const std::string text(reinterpret_cast<const char *>(data), size);
   if (karma::viewer::ParseAse(text, vertices, error)) {
-    if (vertices.empty() || vertices.size() % 3 != 0) __builtin_trap(); // whole triangles only
+    if (vertices.empty() || vertices.size() % 3 != 0) __builtin_trap();  // whole triangles only
   }
   return 0;
 }

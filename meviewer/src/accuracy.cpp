@@ -25,7 +25,7 @@ constexpr float kX = 330, kWidth = 300, kTop = R_2D_HEIGHT - 38, kHeight = 30;
 struct FigureRow {
   const char *name;
   MeReal RAccuracyFigures::*field;
-  double scale;  /* to the printed unit */
+  double scale; /* to the printed unit */
   const char *unit;
 };
 constexpr FigureRow kRows[] = {{"joint error", &RAccuracyFigures::jointError, 1e3, "mm"},
@@ -33,7 +33,7 @@ constexpr FigureRow kRows[] = {{"joint error", &RAccuracyFigures::jointError, 1e
                                {"energy drift", &RAccuracyFigures::energyDrift, 1, "J"},
                                {"residual", &RAccuracyFigures::residual, 1, ""}};
 
-} // namespace
+}  // namespace
 
 void SampleAccuracy(RRender *rc) {
   RRenderPrivate *p = rc->m_pPrivate;
@@ -87,14 +87,16 @@ void PrintAccuracyReport(const AccuracyState &a, std::FILE *f) {
         const double v = double(a.frames[i].*row.field) * row.scale;
         if (std::fabs(v) > std::fabs(largest)) largest = v;
       }
-      if (begin == end) std::fprintf(f, " %12s", "-");
-      else std::fprintf(f, " %12.4g", largest);
+      if (begin == end)
+        std::fprintf(f, " %12s", "-");
+      else
+        std::fprintf(f, " %12.4g", largest);
     }
     std::fprintf(f, " %12.4g\n", double(a.frames.back().*row.field) * row.scale);
   }
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 using namespace karma::viewer;
 

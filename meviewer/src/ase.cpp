@@ -66,8 +66,10 @@ bool Flush(Mesh &m, std::vector<RObjectVertex> &out, std::string &error) {
       v.m_X = p[k][0], v.m_Y = p[k][1], v.m_Z = p[k][2];
       const float *vn = m.normalCount[f] == 3 ? m.normal[f][std::size_t(k)].data() : nullptr;
       const float vl = vn ? std::sqrt(vn[0] * vn[0] + vn[1] * vn[1] + vn[2] * vn[2]) : 0;
-      if (vl > 0) v.m_NX = vn[0] / vl, v.m_NY = vn[1] / vl, v.m_NZ = vn[2] / vl;
-      else v.m_NX = n[0] / len, v.m_NY = n[1] / len, v.m_NZ = n[2] / len;
+      if (vl > 0)
+        v.m_NX = vn[0] / vl, v.m_NY = vn[1] / vl, v.m_NZ = vn[2] / vl;
+      else
+        v.m_NX = n[0] / len, v.m_NY = n[1] / len, v.m_NZ = n[2] / len;
       if (f < m.tface.size()) {
         const std::array<float, 3> &t = m.tvert[std::size_t(m.tface[f][std::size_t(k)])];
         v.m_U = t[0], v.m_V = 1 - t[1];
@@ -79,7 +81,7 @@ bool Flush(Mesh &m, std::vector<RObjectVertex> &out, std::string &error) {
   return true;
 }
 
-} // namespace
+}  // namespace
 
 bool ParseAse(const std::string &text, std::vector<RObjectVertex> &out, std::string &error) {
   out.clear();
@@ -145,7 +147,8 @@ bool ParseAse(const std::string &text, std::vector<RObjectVertex> &out, std::str
     } else if (key == "*MESH_TFACE") {
       long i = -1, ta = -1, tb = -1, tc = -1;
       if (!(ls >> i >> ta >> tb >> tc)) return fail("bad *MESH_TFACE");
-      if (i != long(m.tface.size()) || i >= m.numFaces) return fail("*MESH_TFACE " + std::to_string(i) + " out of order or range");
+      if (i != long(m.tface.size()) || i >= m.numFaces)
+        return fail("*MESH_TFACE " + std::to_string(i) + " out of order or range");
       for (long v : {ta, tb, tc})
         if (v < 0 || v >= m.numTVertex) return fail("texture corner " + std::to_string(v) + " is not a *MESH_TVERT");
       m.tface.push_back({ta, tb, tc});
@@ -174,7 +177,7 @@ bool ParseAse(const std::string &text, std::vector<RObjectVertex> &out, std::str
   return true;
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 using namespace karma::viewer;
 
@@ -221,7 +224,7 @@ RGraphic *Load(RRender *rc, const char *fn, const char *filename, const AcmeReal
   return RGraphicFinishPrimitive(rc, g, color, matrix, is2D);
 }
 
-} // namespace
+}  // namespace
 
 RGraphic *MEAPI RGraphicLoadASE(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale,
                                 const float color[4], MeMatrix4Ptr matrix) {

@@ -28,12 +28,12 @@ std::uint32_t U32(const std::uint8_t *p) {
 }
 std::uint16_t U16(const std::uint8_t *p) { return std::uint16_t(p[0] | p[1] << 8); }
 
-} // namespace
+}  // namespace
 
 bool DecodeTextureBmp(const std::uint8_t *data, std::size_t size, Image &out, std::string &error) {
   if (size < 54 || data[0] != 'B' || data[1] != 'M') {
-    error = size < 2 || data[0] != 'B' || data[1] != 'M' ? "not a BMP file (no 'BM' signature)"
-                                                          : "truncated BMP header";
+    error =
+        size < 2 || data[0] != 'B' || data[1] != 'M' ? "not a BMP file (no 'BM' signature)" : "truncated BMP header";
     return false;
   }
   const std::uint32_t offset = U32(data + 10), infoSize = U32(data + 14);
@@ -95,4 +95,4 @@ bool LoadTextureBmp(const std::string &path, Image &out, std::string &error) {
   return true;
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

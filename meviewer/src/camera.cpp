@@ -45,7 +45,7 @@ void Pan(RRender *rc, int axis, AcmeReal dist) {
   RCameraUpdate(rc);
 }
 
-} // namespace
+}  // namespace
 
 void MEAPI RCameraUpdate(RRender *rc) {
   ME_REQUIRE_ARG(rc, "RCameraUpdate", "rc is NULL");
@@ -149,4 +149,4 @@ void CameraMatrixFloat(const RRender *rc, float out[16]) {
     for (int j = 0; j < 4; ++j) out[4 * i + j] = float(rc->m_CameraMatrix[i][j]);
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

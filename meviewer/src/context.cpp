@@ -125,10 +125,9 @@ std::unique_ptr<Backend> CreateBackend(ViewerOptions &opts, bool draws) {
   return gl;
 }
 
-} // namespace
+}  // namespace
 
-RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLineOptions *overrideOptions,
-                                    MeBool eat) {
+RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLineOptions *overrideOptions, MeBool eat) {
   ViewerOptions opts;
   std::string error;
   if (!ParseViewerOptions(options, overrideOptions, eat != 0, opts, error)) {
@@ -166,8 +165,10 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
       MeWarning(0, "RRenderContextCreate: -video %s is ignored: nothing is drawn", opts.video.c_str());
       opts.video.clear();
     } else if (FindInPath("ffmpeg").empty()) {
-      MeWarning(0, "RRenderContextCreate: -video %s: ffmpeg is not installed (Debian package ffmpeg); no video "
-                "will be made%s", opts.video.c_str(), opts.outDir.empty() ? "" : ", the frames are still written");
+      MeWarning(0,
+                "RRenderContextCreate: -video %s: ffmpeg is not installed (Debian package ffmpeg); no video "
+                "will be made%s",
+                opts.video.c_str(), opts.outDir.empty() ? "" : ", the frames are still written");
       opts.video.clear();
     } else if (opts.outDir.empty()) {
       /* Frames for the video only: a private directory, removed after. */

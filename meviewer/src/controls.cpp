@@ -23,8 +23,10 @@ void RunAction(RRender *rc, int n) {
   if (c.action[n]) {
     c.action[n](rc, c.actionData[n]);
   } else if (n == 1 && rc->m_pPrivate->defaultMenu) {
-    if (rc->m_pPrivate->shownMenu) rc->m_pPrivate->shownMenu = nullptr;
-    else RMenuDisplay(rc->m_pPrivate->defaultMenu);
+    if (rc->m_pPrivate->shownMenu)
+      rc->m_pPrivate->shownMenu = nullptr;
+    else
+      RMenuDisplay(rc->m_pPrivate->defaultMenu);
   }
 }
 
@@ -33,7 +35,7 @@ void SetArrow(RRender *rc, int i, RButtonPressCallBack func, const char *fn) {
   rc->m_pPrivate->controls.arrows[i] = func;
 }
 
-} // namespace
+}  // namespace
 
 void PressKey(RRender *rc, int key) {
   RRenderPrivate *p = rc->m_pPrivate;
@@ -76,12 +78,14 @@ void Record(RRender *rc, const std::string &text) {
   std::fflush(f);
 }
 
-} // namespace
+}  // namespace
 
 void LiveKey(RRender *rc, int key, bool down) {
   Record(rc, std::string(down ? "press " : "release ") + KeyName(key));
-  if (down) PressKey(rc, key);
-  else ReleaseKey(rc, key);
+  if (down)
+    PressKey(rc, key);
+  else
+    ReleaseKey(rc, key);
 }
 
 void LiveMouse(RRender *rc, int x, int y, int buttons) {
@@ -101,30 +105,46 @@ void ProcessInput(RRender *rc) {
   while (c.next < c.script.size() && c.script[c.next].frame <= rc->m_nFrame) {
     const KeyEvent &e = c.script[c.next++];
     switch (e.kind) {
-    case KeyEvent::Press: PressKey(rc, e.key); break;
-    case KeyEvent::Release: ReleaseKey(rc, e.key); break;
-    case KeyEvent::Tap: PressKey(rc, e.key), ReleaseKey(rc, e.key); break;
-    case KeyEvent::Action: RunAction(rc, e.action); break;
-    case KeyEvent::Mouse:
-      if (c.mouse) c.mouse(rc, e.x, e.y, e.buttons, c.mouseData);
-      break;
-    case KeyEvent::Quit: p->quit = true; break;
+      case KeyEvent::Press:
+        PressKey(rc, e.key);
+        break;
+      case KeyEvent::Release:
+        ReleaseKey(rc, e.key);
+        break;
+      case KeyEvent::Tap:
+        PressKey(rc, e.key), ReleaseKey(rc, e.key);
+        break;
+      case KeyEvent::Action:
+        RunAction(rc, e.action);
+        break;
+      case KeyEvent::Mouse:
+        if (c.mouse) c.mouse(rc, e.x, e.y, e.buttons, c.mouseData);
+        break;
+      case KeyEvent::Quit:
+        p->quit = true;
+        break;
     }
   }
   p->backend->PollInput(rc);
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 using namespace karma::viewer;
 
 void MEAPI RRenderSetUpCallBack(RRender *rc, RButtonPressCallBack f) { SetArrow(rc, 0, f, "RRenderSetUpCallBack"); }
 void MEAPI RRenderSetUp2CallBack(RRender *rc, RButtonPressCallBack f) { SetArrow(rc, 1, f, "RRenderSetUp2CallBack"); }
 void MEAPI RRenderSetDownCallBack(RRender *rc, RButtonPressCallBack f) { SetArrow(rc, 2, f, "RRenderSetDownCallBack"); }
-void MEAPI RRenderSetDown2CallBack(RRender *rc, RButtonPressCallBack f) { SetArrow(rc, 3, f, "RRenderSetDown2CallBack"); }
+void MEAPI RRenderSetDown2CallBack(RRender *rc, RButtonPressCallBack f) {
+  SetArrow(rc, 3, f, "RRenderSetDown2CallBack");
+}
 void MEAPI RRenderSetLeftCallBack(RRender *rc, RButtonPressCallBack f) { SetArrow(rc, 4, f, "RRenderSetLeftCallBack"); }
-void MEAPI RRenderSetLeft2CallBack(RRender *rc, RButtonPressCallBack f) { SetArrow(rc, 5, f, "RRenderSetLeft2CallBack"); }
-void MEAPI RRenderSetRightCallBack(RRender *rc, RButtonPressCallBack f) { SetArrow(rc, 6, f, "RRenderSetRightCallBack"); }
+void MEAPI RRenderSetLeft2CallBack(RRender *rc, RButtonPressCallBack f) {
+  SetArrow(rc, 5, f, "RRenderSetLeft2CallBack");
+}
+void MEAPI RRenderSetRightCallBack(RRender *rc, RButtonPressCallBack f) {
+  SetArrow(rc, 6, f, "RRenderSetRightCallBack");
+}
 void MEAPI RRenderSetRight2CallBack(RRender *rc, RButtonPressCallBack f) {
   SetArrow(rc, 7, f, "RRenderSetRight2CallBack");
 }

@@ -69,4 +69,4 @@ int FontAdvance(unsigned char c) {
   return stb_easy_font_charinfo[c - 32].advance & 15;
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

@@ -57,4 +57,4 @@ bool WriteFrameImage(const std::string &dir, long frame, bool bmp, const Image &
   return true;
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

@@ -11,14 +11,14 @@ namespace karma::viewer {
 namespace {
 
 class NullBackend final : public Backend {
-public:
+ public:
   bool Draws() const override { return false; }
   void DrawFrame(RRender *) override {}
   bool ReadFrame(Image &) override { return false; }
 };
 
 class GLBackend final : public Backend {
-public:
+ public:
   GLBackend(OSMesaContext context, int width, int height)
       : context_(context), width_(width), height_(height), buffer_(std::size_t(width) * std::size_t(height) * 4) {}
   ~GLBackend() override { OSMesaDestroyContext(context_); }
@@ -43,19 +43,20 @@ public:
     for (int y = 0; y < height_; ++y) {
       const std::uint8_t *src = buffer_.data() + std::size_t(height_ - 1 - y) * std::size_t(width_) * 4;
       std::uint8_t *dst = out.pixels.data() + std::size_t(y) * std::size_t(width_) * 3;
-      for (int x = 0; x < width_; ++x) dst[3 * x] = src[4 * x], dst[3 * x + 1] = src[4 * x + 1], dst[3 * x + 2] = src[4 * x + 2];
+      for (int x = 0; x < width_; ++x)
+        dst[3 * x] = src[4 * x], dst[3 * x + 1] = src[4 * x + 1], dst[3 * x + 2] = src[4 * x + 2];
     }
     return true;
   }
 
-private:
+ private:
   OSMesaContext context_;
   int width_, height_;
   std::vector<std::uint8_t> buffer_;
   bool drawn_ = false;
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<Backend> CreateNullBackend() { return std::make_unique<NullBackend>(); }
 
@@ -73,7 +74,7 @@ std::unique_ptr<Backend> CreateGLBackend(int width, int height, std::string &err
   return backend;
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 /* Mesa's OSMesa keeps the framebuffer records OSMesaMakeCurrent allocates
  * in a private list that OSMesaDestroyContext never frees (Mesa 22), so

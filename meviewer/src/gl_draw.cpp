@@ -145,7 +145,7 @@ void DrawNativeLines(RRender *rc) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void DrawSceneGL(RRender *rc) {
   RRenderPrivate *p = rc->m_pPrivate;
@@ -211,4 +211,4 @@ void DrawSceneGL(RRender *rc) {
   glFinish();
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

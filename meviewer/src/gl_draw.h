@@ -12,6 +12,6 @@ namespace karma::viewer {
  * loaded since the last frame. */
 void DrawSceneGL(RRender *rc);
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 #endif

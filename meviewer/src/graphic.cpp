@@ -19,7 +19,7 @@ RObjectHeader *AllocateObject(int numVertices) {
 
 RGraphic **ListHead(RRender *rc, int is2D) { return is2D ? &rc->m_pRG_First2D : &rc->m_pRG_First; }
 
-} // namespace
+}  // namespace
 
 void RSetVertex(RObjectVertex *v, float x, float y, float z, float nx, float ny, float nz, float u, float w) {
   v->m_X = x, v->m_Y = y, v->m_Z = z;

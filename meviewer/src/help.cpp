@@ -23,8 +23,8 @@ bool Lookup(const RRender *rc, const std::string &name, std::string &value) {
   static const struct {
     const char *name;
     int key;
-  } kKeys[] = {{"UP", kKeyUp},  {"DOWN", kKeyDown},  {"LEFT", kKeyLeft},  {"RIGHT", kKeyRight},
-               {"UP2", 'w'},    {"DOWN2", 's'},      {"LEFT2", 'a'},      {"RIGHT2", 'd'}};
+  } kKeys[] = {{"UP", kKeyUp}, {"DOWN", kKeyDown}, {"LEFT", kKeyLeft}, {"RIGHT", kKeyRight},
+               {"UP2", 'w'},   {"DOWN2", 's'},     {"LEFT2", 'a'},     {"RIGHT2", 'd'}};
   for (const auto &k : kKeys)
     if (name == k.name) return value = KeyName(k.key), true;
   if (name.size() == 7 && name.compare(0, 6, "ACTION") == 0 && name[6] >= '0' && name[6] < '0' + R_MAX_ACTIONS)
@@ -34,7 +34,7 @@ bool Lookup(const RRender *rc, const std::string &name, std::string &value) {
   return false;
 }
 
-} // namespace
+}  // namespace
 
 std::string ParseText(const RRender *rc, const char *text) {
   std::string out;
@@ -79,7 +79,7 @@ std::vector<RGraphic *> HelpOverlay(RRender *rc) {
   return out;
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 void MEAPI RParseText(RRender *rc, char *text_in, char *text_out, int outbuffersize) {
   ME_REQUIRE_ARG(rc && text_in && text_out && outbuffersize > 0, "RParseText",
@@ -92,8 +92,7 @@ void MEAPI RParseText(RRender *rc, char *text_in, char *text_out, int outbuffers
 
 void MEAPI RRenderCreateUserHelp(RRender *rc, char *help[], int arraySize) {
   ME_REQUIRE_ARG(rc, "RRenderCreateUserHelp", "rc is NULL");
-  ME_REQUIRE_ARG(arraySize >= 0 && (help || arraySize == 0), "RRenderCreateUserHelp",
-                 "help is NULL or arraySize < 0");
+  ME_REQUIRE_ARG(arraySize >= 0 && (help || arraySize == 0), "RRenderCreateUserHelp", "help is NULL or arraySize < 0");
   rc->m_pPrivate->help.clear();
   for (int i = 0; i < arraySize; ++i) rc->m_pPrivate->help.push_back(help[i] ? ParseText(rc, help[i]) : "");
 }

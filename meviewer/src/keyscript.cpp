@@ -32,10 +32,9 @@ struct Named {
   const char *name;
   int key;
 };
-const Named kNames[] = {{"Up", kKeyUp},         {"Down", kKeyDown},     {"Left", kKeyLeft},
-                        {"Right", kKeyRight},   {"Return", kKeyReturn}, {"Escape", kKeyEscape},
-                        {"Tab", kKeyTab},       {"Space", kKeySpace},   {"Semicolon", ';'},
-                        {"Hash", '#'}};
+const Named kNames[] = {{"Up", kKeyUp},         {"Down", kKeyDown},     {"Left", kKeyLeft}, {"Right", kKeyRight},
+                        {"Return", kKeyReturn}, {"Escape", kKeyEscape}, {"Tab", kKeyTab},   {"Space", kKeySpace},
+                        {"Semicolon", ';'},     {"Hash", '#'}};
 
 std::string Trim(const std::string &s) {
   const std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
@@ -59,7 +58,7 @@ bool SameNoCase(const std::string &a, const char *b) {
   return true;
 }
 
-} // namespace
+}  // namespace
 
 std::string KeyName(int key) {
   for (const Named &n : kNames)
@@ -116,7 +115,8 @@ bool ParseKeyScript(const std::string &text, std::vector<KeyEvent> &out, std::st
     const std::size_t colon = e.find(':');
     if (colon == std::string::npos) return fail("want FRAME:VERB, e.g. 10:key Return");
     KeyEvent ev;
-    if (!ParseLong(Trim(e.substr(0, colon)), 0, 2000000000L, ev.frame)) return fail("the frame must be a whole number >= 0");
+    if (!ParseLong(Trim(e.substr(0, colon)), 0, 2000000000L, ev.frame))
+      return fail("the frame must be a whole number >= 0");
     const std::string rest = Trim(e.substr(colon + 1));
     const std::size_t space = rest.find_first_of(" \t");
     const std::string verb = rest.substr(0, space), arg = space == std::string::npos ? "" : Trim(rest.substr(space));
@@ -124,11 +124,13 @@ bool ParseKeyScript(const std::string &text, std::vector<KeyEvent> &out, std::st
       ev.kind = verb == "press" ? KeyEvent::Press : verb == "release" ? KeyEvent::Release : KeyEvent::Tap;
       ev.key = ParseKeyName(arg);
       if (ev.key < 0)
-        return fail("unknown key '" + arg + "' (a printable character, or Up Down Left Right Return Escape Tab Space "
+        return fail("unknown key '" + arg +
+                    "' (a printable character, or Up Down Left Right Return Escape Tab Space "
                     "Semicolon Hash F1..F12)");
     } else if (verb == "action") {
       long n = 0;
-      if (!ParseLong(arg, 0, R_MAX_ACTIONS - 1, n)) return fail("the action number must be 0.." + std::to_string(R_MAX_ACTIONS - 1));
+      if (!ParseLong(arg, 0, R_MAX_ACTIONS - 1, n))
+        return fail("the action number must be 0.." + std::to_string(R_MAX_ACTIONS - 1));
       ev.kind = KeyEvent::Action, ev.action = int(n);
     } else if (verb == "mouse") {
       std::vector<std::string> parts;
@@ -166,4 +168,4 @@ const char *KeyScriptHelp() {
          "  Example: -keys \"10:key Return; 20:press Up; 30:release Up; 40:mouse 320,240,1\"\n";
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

@@ -30,7 +30,7 @@ bool IsLine(const RGraphic *g) {
          v[1].m_Y == v[2].m_Y && v[1].m_Z == v[2].m_Z;
 }
 
-} // namespace
+}  // namespace
 
 RGraphic *MEAPI RGraphicLineCreate(RRender *rc, AcmeReal *origin, AcmeReal *end, const float color[4],
                                    MeMatrix4Ptr matrix) {

@@ -51,9 +51,13 @@ void Step(RMenuEntry &e, int direction) {
 std::string EntryText(const RMenuEntry &e) {
   char buffer[64];
   switch (e.kind) {
-  case RMenuEntry::Toggle: return e.name + ": " + (e.on ? "on" : "off");
-  case RMenuEntry::Value: std::snprintf(buffer, sizeof buffer, "%g", double(e.current)); return e.name + ": " + buffer;
-  case RMenuEntry::Submenu: return e.name + " >";
+    case RMenuEntry::Toggle:
+      return e.name + ": " + (e.on ? "on" : "off");
+    case RMenuEntry::Value:
+      std::snprintf(buffer, sizeof buffer, "%g", double(e.current));
+      return e.name + ": " + buffer;
+    case RMenuEntry::Submenu:
+      return e.name + " >";
   }
   return e.name;
 }
@@ -63,7 +67,7 @@ RGraphic *Detached(RRender *rc, RGraphic *g) {
   return g;
 }
 
-} // namespace
+}  // namespace
 
 namespace karma::viewer {
 
@@ -84,21 +88,30 @@ bool MenuHandleKey(RRender *rc, int key) {
   if (n == 0) return false;
   RMenuEntry &e = m->entries[std::size_t(m->highlight)];
   switch (key) {
-  case kKeyUp: m->highlight = (m->highlight + n - 1) % n; return true;
-  case kKeyDown: m->highlight = (m->highlight + 1) % n; return true;
-  case kKeyLeft: Step(e, -1); return true;
-  case kKeyRight: Step(e, +1); return true;
-  case kKeyReturn:
-    if (e.kind == RMenuEntry::Submenu) {
-      if (e.submenu) {
-        e.submenu->parent = m;
-        p->shownMenu = e.submenu;
-      }
-    } else if (e.kind == RMenuEntry::Toggle) {
+    case kKeyUp:
+      m->highlight = (m->highlight + n - 1) % n;
+      return true;
+    case kKeyDown:
+      m->highlight = (m->highlight + 1) % n;
+      return true;
+    case kKeyLeft:
+      Step(e, -1);
+      return true;
+    case kKeyRight:
       Step(e, +1);
-    }
-    return true;
-  default: return false;
+      return true;
+    case kKeyReturn:
+      if (e.kind == RMenuEntry::Submenu) {
+        if (e.submenu) {
+          e.submenu->parent = m;
+          p->shownMenu = e.submenu;
+        }
+      } else if (e.kind == RMenuEntry::Toggle) {
+        Step(e, +1);
+      }
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -118,8 +131,8 @@ std::vector<RGraphic *> MenuOverlay(RRender *rc) {
   for (std::size_t i = 0; i < m->entries.size(); ++i) {
     const bool lit = int(i) == m->highlight;
     text = (lit ? "> " : "  ") + EntryText(m->entries[i]);
-    out.push_back(Detached(rc, RGraphicTextCreate(rc, text.data(), x + pad, y + pad + line * float(i + 1),
-                                                  lit ? yellow : white)));
+    out.push_back(Detached(
+        rc, RGraphicTextCreate(rc, text.data(), x + pad, y + pad + line * float(i + 1), lit ? yellow : white)));
   }
   out.erase(std::remove(out.begin(), out.end(), nullptr), out.end());
   return out;
@@ -129,7 +142,7 @@ void DestroyMenus(RRender *rc) {
   while (!rc->m_pPrivate->menus.empty()) RMenuDestroy(rc->m_pPrivate->menus.back());
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 RMenu *MEAPI RMenuCreate(RRender *rc, const char *name) {
   ME_REQUIRE_ARG_RET(rc, nullptr, "RMenuCreate", "rc is NULL");

@@ -22,9 +22,9 @@ const BackendKind kBackendKinds[] = {BackendKind::GL,    BackendKind::GL,      B
 constexpr int kBackendCount = 6;
 
 /* Options taking a value, then flags; used for the misspelling check. */
-const char *const kKnownOptions[] = {"-gl",  "-d3d", "-null",  "-bench", "-profile", "-frames",
-                                     "-out", "-every", "-bmp", "-size", "-help", "-keys", "-keyfile", "-video",
-                                     "-window", "-record", "-screenshot", "-accuracy"};
+const char *const kKnownOptions[] = {"-gl",      "-d3d",   "-null",   "-bench",  "-profile",    "-frames",
+                                     "-out",     "-every", "-bmp",    "-size",   "-help",       "-keys",
+                                     "-keyfile", "-video", "-window", "-record", "-screenshot", "-accuracy"};
 /* Options the project's own programs read (golden runs pass them to every
  * program), never reported as unknown. */
 const char *const kProgramOptions[] = {"-platform", "-trajectory"};
@@ -61,8 +61,10 @@ const char *Value(MeCommandLineOptions *o, const char *name, bool eat, bool &mis
   const char *found = nullptr;
   while (MeCommandLineOptionsCheckFor(o, name, 0)) {
     const char *s = MeCommandLineOptionsGetString(o, name, 1);
-    if (s) found = s;
-    else missing = true;
+    if (s)
+      found = s;
+    else
+      missing = true;
   }
   return found;
 }
@@ -127,16 +129,26 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
     }
     bool ok = true;
     long n = 0;
-    if (!std::strcmp(v.name, "-frames")) ok = ParseLong(text, 0, 2000000000L, n), out.frames = ok ? n : out.frames;
-    else if (!std::strcmp(v.name, "-every")) ok = ParseLong(text, 1, 2000000000L, n), out.every = ok ? int(n) : out.every;
-    else if (!std::strcmp(v.name, "-size")) ok = ParseSize(text, out.width, out.height);
-    else if (!std::strcmp(v.name, "-keys")) out.keys = text;
-    else if (!*text) ok = false;
-    else if (!std::strcmp(v.name, "-keyfile")) out.keyFile = text;
-    else if (!std::strcmp(v.name, "-video")) out.video = text;
-    else if (!std::strcmp(v.name, "-record")) out.record = text;
-    else if (!std::strcmp(v.name, "-screenshot")) out.screenshot = text;
-    else out.outDir = text;
+    if (!std::strcmp(v.name, "-frames"))
+      ok = ParseLong(text, 0, 2000000000L, n), out.frames = ok ? n : out.frames;
+    else if (!std::strcmp(v.name, "-every"))
+      ok = ParseLong(text, 1, 2000000000L, n), out.every = ok ? int(n) : out.every;
+    else if (!std::strcmp(v.name, "-size"))
+      ok = ParseSize(text, out.width, out.height);
+    else if (!std::strcmp(v.name, "-keys"))
+      out.keys = text;
+    else if (!*text)
+      ok = false;
+    else if (!std::strcmp(v.name, "-keyfile"))
+      out.keyFile = text;
+    else if (!std::strcmp(v.name, "-video"))
+      out.video = text;
+    else if (!std::strcmp(v.name, "-record"))
+      out.record = text;
+    else if (!std::strcmp(v.name, "-screenshot"))
+      out.screenshot = text;
+    else
+      out.outDir = text;
     if (!ok) {
       error = std::string("bad value '") + text + "' for " + v.name + ": want " + v.want;
       return false;
@@ -162,7 +174,7 @@ int Distance(const char *a, const char *b) {
   return row[m];
 }
 
-} // namespace
+}  // namespace
 
 const char *HelpText() {
   return "MeViewer options (any program that draws with MeViewer reads these):\n"
@@ -204,8 +216,8 @@ bool DisplayPresent() {
 
 /* Without a backend option, a program with no frame limit opens a window
  * when there is a display to show it on. */
-bool ParseViewerOptions(MeCommandLineOptions *options, MeCommandLineOptions *overrides, bool eat,
-                        ViewerOptions &out, std::string &error) {
+bool ParseViewerOptions(MeCommandLineOptions *options, MeCommandLineOptions *overrides, bool eat, ViewerOptions &out,
+                        std::string &error) {
   out = ViewerOptions{};
   if (!ParseOne(options, eat, out, error) || !ParseOne(overrides, eat, out, error)) return false;
   if (!out.backendGiven && out.frames < 0 && DisplayPresent()) out.backend = BackendKind::Window;
@@ -238,4 +250,4 @@ void ReportUnknownOptions(const MeCommandLineOptions *options) {
   }
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

@@ -26,7 +26,8 @@ std::vector<RGraphic *> PerformanceBarOverlay(RRender *rc) {
   const float busy = t[0] + t[1] + t[2];
   const float times[4] = {t[0], t[1], t[2], std::max(0.0f, kBudget - busy)};
   const float scale = kWidth / std::max(kBudget, busy);
-  const float colours[4][4] = {{0.9f, 0.25f, 0.2f, 1}, {0.3f, 0.85f, 0.3f, 1}, {0.3f, 0.5f, 1, 1}, {0.5f, 0.5f, 0.5f, 0.8f}};
+  const float colours[4][4] = {
+      {0.9f, 0.25f, 0.2f, 1}, {0.3f, 0.85f, 0.3f, 1}, {0.3f, 0.5f, 1, 1}, {0.5f, 0.5f, 0.5f, 0.8f}};
   auto detach = [&](RGraphic *g) {
     if (g) RGraphicRemoveFromList(rc, g, 1), out.push_back(g);
   };
@@ -46,7 +47,7 @@ std::vector<RGraphic *> PerformanceBarOverlay(RRender *rc) {
   return out;
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 RPerformanceBar *MEAPI RPerformanceBarCreate(RRender *rc) {
   ME_REQUIRE_ARG_RET(rc, nullptr, "RPerformanceBarCreate", "rc is NULL");
@@ -63,4 +64,4 @@ void DestroyPerformanceBar(RRender *rc) {
   delete rc->m_pPrivate->bar;
   rc->m_pPrivate->bar = nullptr;
 }
-} // namespace karma::viewer
+}  // namespace karma::viewer

@@ -36,7 +36,7 @@ RObjectVertex *Quad(RObjectVertex *v, const float a[3], const float b[3], const 
 
 bool Finite(AcmeReal x) { return std::isfinite(double(x)); }
 
-} // namespace
+}  // namespace
 
 RGraphic *MEAPI RGraphic2DRectangleCreate(RRender *rc, AcmeReal x, AcmeReal y, AcmeReal width, AcmeReal height,
                                           const float color[4]) {
@@ -81,8 +81,8 @@ RGraphic *MEAPI RGraphicGroundPlaneCreate(RRender *rc, AcmeReal length, int tria
 RGraphic *MEAPI RGraphicBoxCreate(RRender *rc, AcmeReal x, AcmeReal y, AcmeReal z, const float color[4],
                                   MeMatrix4Ptr matrix) {
   ME_REQUIRE_ARG_RET(rc, nullptr, "RGraphicBoxCreate", "rc is NULL");
-  ME_REQUIRE_ARG_RET(Finite(x) && Finite(y) && Finite(z) && x >= 0 && y >= 0 && z >= 0, nullptr,
-                     "RGraphicBoxCreate", "the sides must be finite and not negative");
+  ME_REQUIRE_ARG_RET(Finite(x) && Finite(y) && Finite(z) && x >= 0 && y >= 0 && z >= 0, nullptr, "RGraphicBoxCreate",
+                     "the sides must be finite and not negative");
   RGraphic *g = RGraphicCreateSized(36, 36);
   if (!g) return nullptr;
   const float hx = float(x) / 2, hy = float(y) / 2, hz = float(z) / 2;

@@ -12,8 +12,8 @@
 
 namespace {
 
-constexpr int kRoundSides = 24;    /* cylinder, cone */
-constexpr int kSphereStacks = 16;  /* sphere: kRoundSides slices */
+constexpr int kRoundSides = 24;   /* cylinder, cone */
+constexpr int kSphereStacks = 16; /* sphere: kRoundSides slices */
 constexpr int kTorusRing = 32, kTorusTube = 16;
 
 RObjectVertex V(float x, float y, float z, float nx, float ny, float nz, float u, float w) {
@@ -55,10 +55,10 @@ RObjectVertex *Cap(RObjectVertex *v, float r, float z, int sides, bool up) {
   for (int k = 0; k < sides; ++k) {
     const float t0 = 2 * float(ME_PI) * float(k) / float(sides), t1 = 2 * float(ME_PI) * float(k + 1) / float(sides);
     const RObjectVertex c = V(0, 0, z, 0, 0, n, 0.5f, 0.5f);
-    const RObjectVertex a = V(r * std::cos(t0), r * std::sin(t0), z, 0, 0, n, 0.5f + 0.5f * std::cos(t0),
-                              0.5f - 0.5f * std::sin(t0));
-    const RObjectVertex b = V(r * std::cos(t1), r * std::sin(t1), z, 0, 0, n, 0.5f + 0.5f * std::cos(t1),
-                              0.5f - 0.5f * std::sin(t1));
+    const RObjectVertex a =
+        V(r * std::cos(t0), r * std::sin(t0), z, 0, 0, n, 0.5f + 0.5f * std::cos(t0), 0.5f - 0.5f * std::sin(t0));
+    const RObjectVertex b =
+        V(r * std::cos(t1), r * std::sin(t1), z, 0, 0, n, 0.5f + 0.5f * std::cos(t1), 0.5f - 0.5f * std::sin(t1));
     *v++ = c;
     *v++ = up ? a : b;
     *v++ = up ? b : a;
@@ -68,7 +68,7 @@ RObjectVertex *Cap(RObjectVertex *v, float r, float z, int sides, bool up) {
 
 bool Finite(AcmeReal x) { return std::isfinite(double(x)); }
 
-} // namespace
+}  // namespace
 
 RGraphic *MEAPI RGraphicSphereCreate(RRender *rc, AcmeReal radius, const float color[4], MeMatrix4Ptr matrix) {
   ME_REQUIRE_ARG_RET(rc, nullptr, "RGraphicSphereCreate", "rc is NULL");
@@ -92,8 +92,8 @@ RGraphic *MEAPI RGraphicSphereCreate(RRender *rc, AcmeReal radius, const float c
 RGraphic *MEAPI RGraphicCylinderCreate(RRender *rc, AcmeReal radius, AcmeReal height, const float color[4],
                                        MeMatrix4Ptr matrix) {
   ME_REQUIRE_ARG_RET(rc, nullptr, "RGraphicCylinderCreate", "rc is NULL");
-  ME_REQUIRE_ARG_RET(Finite(radius) && Finite(height) && radius >= 0 && height >= 0, nullptr,
-                     "RGraphicCylinderCreate", "radius and height must be finite, >= 0");
+  ME_REQUIRE_ARG_RET(Finite(radius) && Finite(height) && radius >= 0 && height >= 0, nullptr, "RGraphicCylinderCreate",
+                     "radius and height must be finite, >= 0");
   const int S = kRoundSides;
   RGraphic *g = RGraphicCreateSized(12 * S, 12 * S);
   if (!g) return nullptr;
@@ -120,14 +120,15 @@ RGraphic *MEAPI RGraphicConeCreate(RRender *rc, AcmeReal radius, AcmeReal uheigh
 RGraphic *MEAPI RGraphicFrustumCreate(RRender *rc, AcmeReal bottomRadius, AcmeReal topRadius, AcmeReal bottom,
                                       AcmeReal top, int sides, const float color[4], MeMatrix4Ptr matrix) {
   ME_REQUIRE_ARG_RET(rc, nullptr, "RGraphicFrustumCreate", "rc is NULL");
-  ME_REQUIRE_ARG_RET(Finite(bottomRadius) && Finite(topRadius) && Finite(bottom) && Finite(top) &&
-                         bottomRadius >= 0 && topRadius >= 0 && top > bottom,
+  ME_REQUIRE_ARG_RET(Finite(bottomRadius) && Finite(topRadius) && Finite(bottom) && Finite(top) && bottomRadius >= 0 &&
+                         topRadius >= 0 && top > bottom,
                      nullptr, "RGraphicFrustumCreate", "radii must be finite, >= 0, and top > bottom");
   ME_REQUIRE_ARG_RET(sides >= 3 && sides <= 4096, nullptr, "RGraphicFrustumCreate", "sides must be 3..4096, not %d",
                      sides);
   RGraphic *g = RGraphicCreateSized(12 * sides, 12 * sides);
   if (!g) return nullptr;
-  RObjectVertex *v = Band(g->m_pVertices, float(bottomRadius), float(bottom), float(topRadius), float(top), sides, false);
+  RObjectVertex *v =
+      Band(g->m_pVertices, float(bottomRadius), float(bottom), float(topRadius), float(top), sides, false);
   v = Cap(v, float(topRadius), float(top), sides, true);
   Cap(v, float(bottomRadius), float(bottom), sides, false);
   return RGraphicFinishPrimitive(rc, g, color, matrix, 0);

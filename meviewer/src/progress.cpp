@@ -13,7 +13,10 @@
 namespace karma::viewer {
 
 ProgressLine::ProgressLine(long total, std::string what)
-    : total_(total), what_(std::move(what)), terminal_(isatty(STDERR_FILENO) != 0), start_(Clock::now()),
+    : total_(total),
+      what_(std::move(what)),
+      terminal_(isatty(STDERR_FILENO) != 0),
+      start_(Clock::now()),
       last_(start_) {}
 
 void ProgressLine::FrameDone(long done) {
@@ -38,4 +41,4 @@ ProgressLine::~ProgressLine() {
   if (printed_ && terminal_) std::fputc('\n', stderr);
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

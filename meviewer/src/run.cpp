@@ -23,9 +23,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double Ms(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
+double Ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
 /* Writes frame `frame` if the options ask for it. A failed write stops
  * further writing with one message. */
@@ -36,7 +34,8 @@ void OutputFrame(RRender *rc, bool &writeFailed) {
   Image image;
   std::string error;
   if (!p->backend->ReadFrame(image) || !WriteFrameImage(o.outDir, rc->m_nFrame, o.bmp, image, error)) {
-    MeWarning(0, "RRun: %s; no further frames will be written", error.empty() ? "cannot read the frame" : error.c_str());
+    MeWarning(0, "RRun: %s; no further frames will be written",
+              error.empty() ? "cannot read the frame" : error.c_str());
     writeFailed = true;
     return;
   }
@@ -53,7 +52,7 @@ void SaveScreenshot(RRender *rc) {
     MeWarning(0, "RRun: -screenshot %s: %s", p->options.screenshot.c_str(), error.c_str());
 }
 
-} // namespace
+}  // namespace
 
 void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
   if (!rc) {
@@ -64,8 +63,8 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack tick, void *userdata) {
   const ViewerOptions &o = p->options;
   std::unique_ptr<ProgressLine> progress;
   if (!o.outDir.empty())
-    progress = std::make_unique<ProgressLine>(o.frames, p->videoTempDir.empty() ? "written to " + o.outDir
-                                                                                : "for the video " + o.video);
+    progress = std::make_unique<ProgressLine>(
+        o.frames, p->videoTempDir.empty() ? "written to " + o.outDir : "for the video " + o.video);
   if (o.frames < 0 && p->backend->Draws() && !p->backend->Live())
     MeInfo(0, "MeViewer: drawing offscreen with no frame limit; pass -frames N to stop after N frames");
   p->running = true;
@@ -128,7 +127,7 @@ struct NoDataTick {
 
 void MEAPI CallNoDataTick(RRender *rc, void *userdata) { static_cast<NoDataTick *>(userdata)->tick(rc); }
 
-} // namespace
+}  // namespace
 
 /* The record lives in this frame, which RRun never returns to. */
 void MEAPI RRunNoData(RRender *rc, RMainLoopCallBackNoData tick, void *userdata) {

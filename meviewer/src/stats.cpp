@@ -34,7 +34,7 @@ Summary Summarise(std::vector<double> v) {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 void PrintBenchReport(const FrameTimes &t, std::FILE *f) {
   const Summary total = Summarise(t.total), tick = Summarise(t.tick);
@@ -71,4 +71,4 @@ void PrintProfileReport(const FrameTimes &t, std::FILE *f) {
   }
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

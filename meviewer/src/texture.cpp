@@ -44,7 +44,7 @@ std::string FileName(const std::string &name) {
   return name + ext;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::string> TextureSearchPath() {
   std::vector<std::string> dirs{"."};
@@ -91,7 +91,7 @@ void LoadPendingTextures(RRender *rc) {
   }
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 using namespace karma::viewer;
 

@@ -6,8 +6,6 @@ extern "C" {
 
 int MEAPI RCreateTextureID(RRender *rc, char *filename) { return RRenderTextureCreate(rc, filename); }
 
-int MEAPI RSetTexture(RRender *rc, RGraphic *rg, char *filename) {
-  return RGraphicSetTexture(rc, rg, filename);
-}
+int MEAPI RSetTexture(RRender *rc, RGraphic *rg, char *filename) { return RGraphicSetTexture(rc, rg, filename); }
 
 }  // extern "C"

@@ -38,14 +38,13 @@ std::string FindInPath(const std::string &name) {
 bool AssembleVideo(const std::string &dir, bool bmp, const std::string &video) {
   const std::string ffmpeg = FindInPath("ffmpeg");
   if (ffmpeg.empty()) {
-    MeWarning(0, "MeViewer: -video %s: ffmpeg is not installed (Debian package ffmpeg); no video made",
-              video.c_str());
+    MeWarning(0, "MeViewer: -video %s: ffmpeg is not installed (Debian package ffmpeg); no video made", video.c_str());
     return false;
   }
   const bool gif = video.size() >= 4 && video.compare(video.size() - 4, 4, ".gif") == 0;
   const std::string pattern = dir + "/frame_*." + (bmp ? "bmp" : "png");
-  std::vector<std::string> args = {ffmpeg, "-y", "-loglevel", "error", "-framerate", "30", "-pattern_type", "glob",
-                                   "-i", pattern};
+  std::vector<std::string> args = {ffmpeg,          "-y",   "-loglevel", "error", "-framerate", "30",
+                                   "-pattern_type", "glob", "-i",        pattern};
   if (gif) {
     args.insert(args.end(), {"-vf", "split[a][b];[a]palettegen[p];[b][p]paletteuse"});
   } else {
@@ -70,4 +69,4 @@ bool AssembleVideo(const std::string &dir, bool bmp, const std::string &video) {
   return true;
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

@@ -23,18 +23,18 @@ enum class BackendKind { GL, Null, Bench, Profile, Window };
 struct ViewerOptions {
   BackendKind backend = BackendKind::GL;
   bool backendGiven = false; /* a backend option was on the command line */
-  long frames = -1;     /* < 0: no limit */
-  std::string outDir;   /* empty: no images */
-  int every = 1;        /* write frames whose index is a multiple of this */
-  bool bmp = false;     /* BMP instead of PNG */
+  long frames = -1;          /* < 0: no limit */
+  std::string outDir;        /* empty: no images */
+  int every = 1;             /* write frames whose index is a multiple of this */
+  bool bmp = false;          /* BMP instead of PNG */
   int width = 640, height = 480;
   bool help = false;
-  std::string keys;     /* -keys SCRIPT, then -keyfile FILE's text appended */
-  std::string keyFile;  /* -keyfile FILE */
-  std::string video;    /* -video FILE (.gif: GIF, anything else: H.264 MP4) */
-  std::string record;   /* -record FILE: the window's live input as a key script */
+  std::string keys;       /* -keys SCRIPT, then -keyfile FILE's text appended */
+  std::string keyFile;    /* -keyfile FILE */
+  std::string video;      /* -video FILE (.gif: GIF, anything else: H.264 MP4) */
+  std::string record;     /* -record FILE: the window's live input as a key script */
   std::string screenshot; /* -screenshot FILE: the window as the display shows it, at exit */
-  bool accuracy = false; /* -accuracy: the accuracy overlay */
+  bool accuracy = false;  /* -accuracy: the accuracy overlay */
 };
 /* True when a display is there to open windows on ($DISPLAY not empty). */
 bool DisplayPresent();
@@ -44,8 +44,8 @@ const char *HelpText();
 /* Reads the viewer's options, `options` first, then `overrides` (which
  * win). On a malformed value writes a one-line reason to `error` and
  * returns false. */
-bool ParseViewerOptions(MeCommandLineOptions *options, MeCommandLineOptions *overrides, bool eat,
-                        ViewerOptions &out, std::string &error);
+bool ParseViewerOptions(MeCommandLineOptions *options, MeCommandLineOptions *overrides, bool eat, ViewerOptions &out,
+                        std::string &error);
 /* Warns about arguments left in `options` that look like misspelt viewer
  * options, and notes other unknown ones. */
 void ReportUnknownOptions(const MeCommandLineOptions *options);
@@ -66,10 +66,10 @@ bool DecodeTextureBmp(const std::uint8_t *data, std::size_t size, Image &out, st
 enum class TextureState { Pending, Loaded, Failed };
 
 struct Texture {
-  std::string name;       /* as the program gave it */
+  std::string name; /* as the program gave it */
   TextureState state = TextureState::Pending;
-  Image image;            /* RGB (files) or RGBA (the font) */
-  unsigned glName = 0;    /* the backend's texture object, 0 = not uploaded */
+  Image image;         /* RGB (files) or RGBA (the font) */
+  unsigned glName = 0; /* the backend's texture object, 0 = not uploaded */
 };
 
 /* The font texture: 16 x 6 cells of kFontCellW x kFontCellH texels for
@@ -94,7 +94,7 @@ void LoadPendingTextures(RRender *rc);
 
 /* What draws frames. The null backend draws nothing. */
 class Backend {
-public:
+ public:
   virtual ~Backend() = default;
   virtual bool Draws() const = 0;
   /* Draws the context's lists into the offscreen buffer. */
@@ -133,7 +133,7 @@ bool AssembleVideo(const std::string &dir, bool bmp, const std::string &video);
 
 /* The progress line of a render to files (progress.cpp). */
 class ProgressLine {
-public:
+ public:
   /* total < 0: no frame limit. `what` says where the frames go. */
   ProgressLine(long total, std::string what);
   ~ProgressLine();
@@ -142,7 +142,7 @@ public:
   /* `done` frames (1 or more) have been drawn and written. */
   void FrameDone(long done);
 
-private:
+ private:
   using Clock = std::chrono::steady_clock;
   long total_;
   std::string what_;
@@ -162,14 +162,22 @@ void PrintProfileReport(const FrameTimes &t, std::FILE *f);
 void PerspectiveMatrix(const RRender *rc, float out[16]);
 void CameraMatrixFloat(const RRender *rc, float out[16]);
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 namespace karma::viewer {
 
 /* Keys: printable ASCII characters are themselves; named keys follow. */
 enum Key : int {
-  kKeyUp = 256, kKeyDown, kKeyLeft, kKeyRight, kKeyReturn, kKeyEscape, kKeyTab, kKeySpace,
-  kKeyF1, kKeyF12 = kKeyF1 + 11
+  kKeyUp = 256,
+  kKeyDown,
+  kKeyLeft,
+  kKeyRight,
+  kKeyReturn,
+  kKeyEscape,
+  kKeyTab,
+  kKeySpace,
+  kKeyF1,
+  kKeyF12 = kKeyF1 + 11
 };
 /* The key's name as scripts and help text write it ("Up", "Return", "q"). */
 std::string KeyName(int key);
@@ -180,8 +188,8 @@ int ParseKeyName(const std::string &name);
 struct KeyEvent {
   enum Kind { Press, Release, Tap, Action, Mouse, Quit } kind = Press;
   long frame = 0;
-  int key = 0;       /* Press, Release, Tap */
-  int action = 0;    /* Action */
+  int key = 0;                   /* Press, Release, Tap */
+  int action = 0;                /* Action */
   int x = 0, y = 0, buttons = 0; /* Mouse */
 };
 /* Parses a key script; on error returns false with a message naming the
@@ -200,7 +208,7 @@ struct Controls {
   void *mouseData = nullptr;
   std::vector<int> held; /* keys down */
   std::vector<KeyEvent> script;
-  std::size_t next = 0;  /* first script event not yet applied */
+  std::size_t next = 0;        /* first script event not yet applied */
   std::FILE *record = nullptr; /* -record: live events written as a key script */
 };
 /* The input phase of a frame: applies the script's events for this frame. */
@@ -230,7 +238,7 @@ void DestroyPerformanceBar(RRender *rc);
 struct AccuracyState {
   RAccuracySource source = nullptr;
   void *data = nullptr;
-  bool have = false;                    /* `last` holds a reading */
+  bool have = false; /* `last` holds a reading */
   RAccuracyFigures last{};
   std::vector<RAccuracyFigures> frames; /* one per frame read, for -profile */
 };
@@ -245,7 +253,7 @@ void PrintAccuracyReport(const AccuracyState &a, std::FILE *f);
 /* Frees every menu of the context (RRenderContextDestroy). */
 void DestroyMenus(RRender *rc);
 
-} // namespace karma::viewer
+}  // namespace karma::viewer
 
 struct RRenderPrivate {
   karma::viewer::ViewerOptions options;
@@ -261,10 +269,10 @@ struct RRenderPrivate {
   karma::viewer::Controls controls;
   RMenu *defaultMenu = nullptr;
   RMenu *shownMenu = nullptr;
-  std::vector<RMenu *> menus; /* every menu made in this context */
+  std::vector<RMenu *> menus;    /* every menu made in this context */
   std::vector<std::string> help; /* parsed help lines */
   bool helpShown = false;
-  bool paused = false;           /* toggled with the help: no tick */
+  bool paused = false; /* toggled with the help: no tick */
   RPerformanceBar *bar = nullptr;
   karma::viewer::AccuracyState accuracy;
   std::string videoTempDir; /* frames for -video without -out, removed after */

@@ -22,16 +22,25 @@ namespace {
 /* MeViewer's key for an SDL key, or -1 for keys it does not know. */
 int KeyFromSdl(SDL_Keycode sym) {
   switch (sym) {
-  case SDLK_UP: return kKeyUp;
-  case SDLK_DOWN: return kKeyDown;
-  case SDLK_LEFT: return kKeyLeft;
-  case SDLK_RIGHT: return kKeyRight;
-  case SDLK_RETURN:
-  case SDLK_KP_ENTER: return kKeyReturn;
-  case SDLK_ESCAPE: return kKeyEscape;
-  case SDLK_TAB: return kKeyTab;
-  case SDLK_SPACE: return kKeySpace;
-  default: break;
+    case SDLK_UP:
+      return kKeyUp;
+    case SDLK_DOWN:
+      return kKeyDown;
+    case SDLK_LEFT:
+      return kKeyLeft;
+    case SDLK_RIGHT:
+      return kKeyRight;
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER:
+      return kKeyReturn;
+    case SDLK_ESCAPE:
+      return kKeyEscape;
+    case SDLK_TAB:
+      return kKeyTab;
+    case SDLK_SPACE:
+      return kKeySpace;
+    default:
+      break;
   }
   if (sym >= SDLK_F1 && sym <= SDLK_F12) return kKeyF1 + int(sym - SDLK_F1);
   if (sym > 32 && sym < 127) return int(sym);
@@ -41,10 +50,14 @@ int KeyFromSdl(SDL_Keycode sym) {
 /* SDL button number -> MeViewer's button bit (0 left, 1 middle, 2 right). */
 int ButtonBit(Uint8 button) {
   switch (button) {
-  case SDL_BUTTON_LEFT: return 1;
-  case SDL_BUTTON_MIDDLE: return 2;
-  case SDL_BUTTON_RIGHT: return 4;
-  default: return 0;
+    case SDL_BUTTON_LEFT:
+      return 1;
+    case SDL_BUTTON_MIDDLE:
+      return 2;
+    case SDL_BUTTON_RIGHT:
+      return 4;
+    default:
+      return 0;
   }
 }
 
@@ -56,7 +69,7 @@ int MaskShift(unsigned long mask) {
 }
 
 class WindowBackend final : public Backend {
-public:
+ public:
   WindowBackend(std::unique_ptr<Backend> offscreen, SDL_Window *window, int width, int height)
       : offscreen_(std::move(offscreen)), window_(window), width_(width), height_(height) {}
   ~WindowBackend() override {
@@ -77,7 +90,7 @@ public:
   void PollInput(RRender *rc) override;
   bool Screenshot(Image &out, std::string &error) override;
 
-private:
+ private:
   void UpdateTitle(const RRender *rc) {
     const std::string title = rc->m_AppName ? rc->m_AppName : "Karma";
     if (title != title_) SDL_SetWindowTitle(window_, title.c_str()), title_ = title;
@@ -88,8 +101,8 @@ private:
     SDL_Surface *surface = SDL_GetWindowSurface(window_);
     if (!surface || surface->w != width_ || surface->h != height_) return;
     if (SDL_MUSTLOCK(surface) && SDL_LockSurface(surface) != 0) return;
-    SDL_ConvertPixels(width_, height_, SDL_PIXELFORMAT_RGB24, frame_.pixels.data(), width_ * 3,
-                      surface->format->format, surface->pixels, surface->pitch);
+    SDL_ConvertPixels(width_, height_, SDL_PIXELFORMAT_RGB24, frame_.pixels.data(), width_ * 3, surface->format->format,
+                      surface->pixels, surface->pitch);
     if (SDL_MUSTLOCK(surface)) SDL_UnlockSurface(surface);
     SDL_UpdateWindowSurface(window_);
   }
@@ -106,22 +119,29 @@ void WindowBackend::PollInput(RRender *rc) {
   SDL_Event e;
   while (SDL_PollEvent(&e)) {
     switch (e.type) {
-    case SDL_QUIT: LiveQuit(rc); break;
-    case SDL_KEYDOWN:
-    case SDL_KEYUP: {
-      if (e.key.repeat) break; /* held keys press once (controls.cpp) */
-      const int key = KeyFromSdl(e.key.keysym.sym);
-      if (key >= 0) LiveKey(rc, key, e.type == SDL_KEYDOWN);
-      break;
-    }
-    case SDL_MOUSEMOTION: LiveMouse(rc, e.motion.x, e.motion.y, buttons_); break;
-    case SDL_MOUSEBUTTONDOWN:
-    case SDL_MOUSEBUTTONUP:
-      if (e.type == SDL_MOUSEBUTTONDOWN) buttons_ |= ButtonBit(e.button.button);
-      else buttons_ &= ~ButtonBit(e.button.button);
-      LiveMouse(rc, e.button.x, e.button.y, buttons_);
-      break;
-    default: break;
+      case SDL_QUIT:
+        LiveQuit(rc);
+        break;
+      case SDL_KEYDOWN:
+      case SDL_KEYUP: {
+        if (e.key.repeat) break; /* held keys press once (controls.cpp) */
+        const int key = KeyFromSdl(e.key.keysym.sym);
+        if (key >= 0) LiveKey(rc, key, e.type == SDL_KEYDOWN);
+        break;
+      }
+      case SDL_MOUSEMOTION:
+        LiveMouse(rc, e.motion.x, e.motion.y, buttons_);
+        break;
+      case SDL_MOUSEBUTTONDOWN:
+      case SDL_MOUSEBUTTONUP:
+        if (e.type == SDL_MOUSEBUTTONDOWN)
+          buttons_ |= ButtonBit(e.button.button);
+        else
+          buttons_ &= ~ButtonBit(e.button.button);
+        LiveMouse(rc, e.button.x, e.button.y, buttons_);
+        break;
+      default:
+        break;
     }
   }
 }
@@ -135,8 +155,8 @@ bool WindowBackend::Screenshot(Image &out, std::string &error) {
   }
   Display *display = info.info.x11.display;
   XSync(display, False);
-  XImage *image = XGetImage(display, info.info.x11.window, 0, 0, unsigned(width_), unsigned(height_), AllPlanes,
-                            ZPixmap);
+  XImage *image =
+      XGetImage(display, info.info.x11.window, 0, 0, unsigned(width_), unsigned(height_), AllPlanes, ZPixmap);
   if (!image) {
     error = "XGetImage could not read the window";
     return false;
@@ -156,7 +176,7 @@ bool WindowBackend::Screenshot(Image &out, std::string &error) {
   return true;
 }
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<Backend> CreateWindowBackend(int width, int height, std::string &error) {
   std::unique_ptr<Backend> offscreen = CreateGLBackend(width, height, error);
@@ -171,8 +191,8 @@ std::unique_ptr<Backend> CreateWindowBackend(int width, int height, std::string 
     error = std::string("SDL cannot use the display: ") + SDL_GetError();
     return nullptr;
   }
-  SDL_Window *window = SDL_CreateWindow("Karma", SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, width, height,
-                                        SDL_WINDOW_SHOWN);
+  SDL_Window *window =
+      SDL_CreateWindow("Karma", SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, width, height, SDL_WINDOW_SHOWN);
   if (!window) {
     error = std::string("SDL cannot open a window: ") + SDL_GetError();
     SDL_QuitSubSystem(SDL_INIT_VIDEO);
@@ -181,4 +201,4 @@ std::unique_ptr<Backend> CreateWindowBackend(int width, int height, std::string 
   return std::make_unique<WindowBackend>(std::move(offscreen), window, width, height);
 }
 
-} // namespace karma::viewer
+}  // namespace karma::viewer

@@ -16,9 +16,7 @@ constexpr double kG = 9.81;
 // Every solver the engine offers, for parameterised cases.
 inline const MdtKeaMethod kSolvers[] = {MdtKeaMethodActiveSet, MdtKeaMethodPGS};
 
-inline const char *solverName(MdtKeaMethod m) {
-  return m == MdtKeaMethodPGS ? "PGS" : "ActiveSet";
-}
+inline const char *solverName(MdtKeaMethod m) { return m == MdtKeaMethodPGS ? "PGS" : "ActiveSet"; }
 
 // A world destroyed at the end of the test.
 struct World {

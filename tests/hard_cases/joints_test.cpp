@@ -56,13 +56,15 @@ class JointSolvers : public ::testing::TestWithParam<MdtKeaMethod> {};
 // Joint gaps stay within 5 mm at 1/60 s with the default settings.
 TEST_P(JointSolvers, HangingChain1000To1Holds) {
   const double gap60 = chainGap(GetParam(), 1.0 / 60), gap240 = chainGap(GetParam(), 1.0 / 240);
-  std::printf("[ figures  ] 1000:1 chain %s: largest joint gap %.4f m at 1/60 s, %.4f m at "
-              "1/240 s\n",
-              solverName(GetParam()), gap60, gap240);
+  std::printf(
+      "[ figures  ] 1000:1 chain %s: largest joint gap %.4f m at 1/60 s, %.4f m at "
+      "1/240 s\n",
+      solverName(GetParam()), gap60, gap240);
   EXPECT_LT(gap240, gap60 + 1e-3);
   if (gap60 > 0.005)
     GTEST_SKIP() << "known limit (joint error at the default epsilon for a 1000:1 mass ratio, "
-                    "issue 15; engine/mdt/step and engine/kea): gap " << gap60 << " m at 1/60 s";
+                    "issue 15; engine/mdt/step and engine/kea): gap "
+                 << gap60 << " m at 1/60 s";
 }
 
 namespace {
@@ -115,14 +117,16 @@ SpringFigures stiffSpring(MdtKeaMethod m, double h) {
 // should be kept within 10% over 1 s.
 TEST_P(JointSolvers, StiffSpringKeepsItsEnergy) {
   const SpringFigures f = stiffSpring(GetParam(), 1.0 / 60);
-  std::printf("[ figures  ] stiff spring %s 1/60 s: E/E0 after step 1 %.3g, min %.3g, max %.3g "
-              "over 1 s\n",
-              solverName(GetParam()), f.energyAfterFirstStep, f.energyMin, f.energyMax);
+  std::printf(
+      "[ figures  ] stiff spring %s 1/60 s: E/E0 after step 1 %.3g, min %.3g, max %.3g "
+      "over 1 s\n",
+      solverName(GetParam()), f.energyAfterFirstStep, f.energyMin, f.energyMax);
   EXPECT_LE(f.energyMax, 1.01);
   if (f.energyMin < 0.9)
     GTEST_SKIP() << "known limit (a spring is a soft constraint row, implicit in the solve: it "
                     "dissipates at omega h >> 1; engine/mdt/bcl and the solver): E/E0 after the "
-                    "first step " << f.energyAfterFirstStep;
+                    "first step "
+                 << f.energyAfterFirstStep;
 }
 
 INSTANTIATE_TEST_SUITE_P(HardCases, JointSolvers, ::testing::ValuesIn(kSolvers),

@@ -49,26 +49,25 @@ TEST(HardCases, PoolsLargeEnoughKeepBoxesUp) {
 TEST(HardCases, ConstraintPoolRunningOutKeepsRestingBoxes) {
   size_t warnings = 0;
   const double lowest = lowestAfterRest(12, 500, &warnings);
-  std::printf("[ figures  ] constraint pool 12 for 40 contacts: lowest box %.3f m, %zu warnings\n",
-              lowest, warnings);
+  std::printf("[ figures  ] constraint pool 12 for 40 contacts: lowest box %.3f m, %zu warnings\n", lowest, warnings);
   EXPECT_GE(warnings, 1u);
   if (lowest < 0.2 || warnings > 2)
     GTEST_SKIP() << "known limit (issue 15 (d): a full constraint pool drops contacts at "
                     "random, whether they carry weight or not, and MePool re-warns each step "
                     "as contacts come and go; contacts are made in engine/mst/collisions.cpp): "
-                    "lowest box " << lowest << " m, " << warnings << " warnings";
+                    "lowest box "
+                 << lowest << " m, " << warnings << " warnings";
 }
 
 // A pair pool of 4 for 10 box-ground pairs.
 TEST(HardCases, PairPoolRunningOutKeepsRestingBoxes) {
   size_t warnings = 0;
   const double lowest = lowestAfterRest(500, 4, &warnings);
-  std::printf("[ figures  ] pair pool 4 for 10 pairs: lowest box %.3f m, %zu warnings\n", lowest,
-              warnings);
+  std::printf("[ figures  ] pair pool 4 for 10 pairs: lowest box %.3f m, %zu warnings\n", lowest, warnings);
   EXPECT_GE(warnings, 1u);
   if (lowest < 0.2 || warnings > 2)
     GTEST_SKIP() << "known limit (issue 15 (d): a full pair pool leaves the extra pairs "
                     "unreported whatever rests on them, and warns every step; "
-                    "engine/mcd/farfield/pair_events.cpp): lowest box " << lowest << " m, "
-                 << warnings << " warnings";
+                    "engine/mcd/farfield/pair_events.cpp): lowest box "
+                 << lowest << " m, " << warnings << " warnings";
 }

@@ -46,8 +46,7 @@ constexpr double kJointMassRatio = 100;
 
 const char *const kShapeNames[] = {"box", "sphere", "capsule", "hull"};
 
-McdGeometryID randomGeometry(McdFrameworkID fw, Rng &r, double size, double *halfHeight,
-                             int *shape) {
+McdGeometryID randomGeometry(McdFrameworkID fw, Rng &r, double size, double *halfHeight, int *shape) {
   *shape = r.below(4);
   switch (*shape) {
     case 0: {
@@ -105,12 +104,12 @@ SeedResult runSeed(uint64_t seed) {
     MstAutoSetMassProperties(b, g, MdtBodyGetMass(b) / (MeReal)(size * size * size));
     MdtBodySetMass(b, MdtBodyGetMass(b));
     MdtBodySetPosition(b, (MeReal)r.uniform(-0.3, 0.3), (MeReal)y, (MeReal)r.uniform(-0.3, 0.3));
-    MdtBodySetQuaternion(b, (MeReal)r.uniform(-1, 1), (MeReal)r.uniform(-1, 1),
-                         (MeReal)r.uniform(-1, 1), (MeReal)r.uniform(-1, 1));
+    MdtBodySetQuaternion(b, (MeReal)r.uniform(-1, 1), (MeReal)r.uniform(-1, 1), (MeReal)r.uniform(-1, 1),
+                         (MeReal)r.uniform(-1, 1));
     y += hh;
     char line[160];
-    std::snprintf(line, sizeof line, "\n  body %zu: %s size %.3f m, mass %.3g kg, at y %.2f",
-                  bodies.size(), kShapeNames[shape], size, (double)MdtBodyGetMass(b), y - hh);
+    std::snprintf(line, sizeof line, "\n  body %zu: %s size %.3f m, mass %.3g kg, at y %.2f", bodies.size(),
+                  kShapeNames[shape], size, (double)MdtBodyGetMass(b), y - hh);
     res.scene += line;
     if (!bodies.empty() && r.below(3) == 0) {
       const int otherIndex = r.below((int)bodies.size());
@@ -121,8 +120,8 @@ SeedResult runSeed(uint64_t seed) {
       const bool ball = r.below(2) == 0;
       const double ratio = (double)MdtBodyGetMass(b) / (double)MdtBodyGetMass(other);
       const bool join = ratio <= kJointMassRatio && ratio >= 1 / kJointMassRatio;
-      std::snprintf(line, sizeof line, ", %s joint to body %d%s", ball ? "ball" : "hinge",
-                    otherIndex, join ? "" : " (skipped: mass ratio)");
+      std::snprintf(line, sizeof line, ", %s joint to body %d%s", ball ? "ball" : "hinge", otherIndex,
+                    join ? "" : " (skipped: mass ratio)");
       res.scene += line;
       if (join && ball) {
         MdtBSJointID j = MdtBSJointCreate(U.world());
@@ -186,10 +185,11 @@ TEST(HardCases, RandomScenesStayBounded) {
     worstGrowth = std::max(worstGrowth, r.energyGrowth);
     const bool ok = r.finite && r.lowest > -0.05 && r.energyGrowth < 0.1;
     if (!ok && ++failures <= 10)
-      ADD_FAILURE() << "seed " << seed << ": finite " << r.finite << ", lowest centre "
-                    << r.lowest << " m, energy growth " << r.energyGrowth << r.scene;
+      ADD_FAILURE() << "seed " << seed << ": finite " << r.finite << ", lowest centre " << r.lowest
+                    << " m, energy growth " << r.energyGrowth << r.scene;
   }
-  std::printf("[ figures  ] %d random scenes: %d failed; lowest centre %.4f m, largest energy "
-              "growth %.4f\n",
-              seeds, failures, worstLow, worstGrowth);
+  std::printf(
+      "[ figures  ] %d random scenes: %d failed; lowest centre %.4f m, largest energy "
+      "growth %.4f\n",
+      seeds, failures, worstLow, worstGrowth);
 }

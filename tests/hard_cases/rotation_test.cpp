@@ -102,9 +102,9 @@ namespace {
 // horizontal; a ball joint 0.2 m along -x from the centre holds it to the
 // world. Gravity -y.
 struct TopFigures {
-  double axisDrop = 0;      // largest fall of the axis below horizontal (rad)
+  double axisDrop = 0;        // largest fall of the axis below horizontal (rad)
   double precessionRate = 0;  // average rate of the axis about y (rad/s)
-  double verticalL = 0;     // largest |L_y| about the pivot over the spin's L
+  double verticalL = 0;       // largest |L_y| about the pivot over the spin's L
   double jointGap = 0;
 };
 
@@ -184,10 +184,10 @@ TEST_P(RotationSolvers, SpinningTopPrecessesAtTheAnalyticRate) {
   for (double h : {1.0 / 60, 1.0 / 120, 1.0 / 600}) {
     const double hS = 200 * h;
     const TopFigures f = spinTop(GetParam(), h, 10, false);
-    std::printf("[ figures  ] top %s h=1/%.0f: axis drop %.4f rad, precession %.5f rad/s "
-                "(analytic %.5f), |dLy|/Ls %.2e, joint gap %.2e m\n",
-                solverName(GetParam()), 1 / h, f.axisDrop, f.precessionRate, Omega, f.verticalL,
-                f.jointGap);
+    std::printf(
+        "[ figures  ] top %s h=1/%.0f: axis drop %.4f rad, precession %.5f rad/s "
+        "(analytic %.5f), |dLy|/Ls %.2e, joint gap %.2e m\n",
+        solverName(GetParam()), 1 / h, f.axisDrop, f.precessionRate, Omega, f.verticalL, f.jointGap);
     EXPECT_LT(f.axisDrop, 0.05) << "h = " << h;
     EXPECT_NEAR(f.precessionRate, Omega, (hS > 2 ? 0.03 : 0.02) * Omega) << "h = " << h;
     EXPECT_LT(f.verticalL, 0.01) << "h = " << h;
@@ -248,21 +248,23 @@ TEST_P(RotationSolvers, PendulumKeepsItsEnergy) {
   std::string limits;
   for (double h : {1.0 / 60, 1.0 / 240}) {
     const PendulumFigures f = pendulum(GetParam(), h);
-    std::printf("[ figures  ] pendulum %s h=1/%.0f: energy lost %.2f%% at 10 s, %.2f%% at 60 s, "
-                "largest gain %.2f%%, rod error %.2e m\n",
-                solverName(GetParam()), 1 / h, 100 * f.energyLoss10, 100 * f.energyLoss60,
-                100 * f.energyGain, f.jointGap);
+    std::printf(
+        "[ figures  ] pendulum %s h=1/%.0f: energy lost %.2f%% at 10 s, %.2f%% at 60 s, "
+        "largest gain %.2f%%, rod error %.2e m\n",
+        solverName(GetParam()), 1 / h, 100 * f.energyLoss10, 100 * f.energyLoss60, 100 * f.energyGain, f.jointGap);
     if (f.energyLoss60 > 0.05 || f.energyGain > 0.01 || f.jointGap > 1e-3) {
       char line[200];
-      std::snprintf(line, sizeof line, " [h = 1/%.0f: lost %.1f%% in 60 s, gained up to %.1f%%, "
-                    "rod error %.2g m]", 1 / h, 100 * f.energyLoss60, 100 * f.energyGain,
-                    f.jointGap);
+      std::snprintf(line, sizeof line,
+                    " [h = 1/%.0f: lost %.1f%% in 60 s, gained up to %.1f%%, "
+                    "rod error %.2g m]",
+                    1 / h, 100 * f.energyLoss60, 100 * f.energyGain, f.jointGap);
       limits += line;
     }
   }
   if (!limits.empty())
     GTEST_SKIP() << "known limit (the ball joint's rows at the default epsilon and gamma take "
-                    "or give energy; engine/mdt/step and engine/kea, issue 15):" << limits;
+                    "or give energy; engine/mdt/step and engine/kea, issue 15):"
+                 << limits;
 }
 
 INSTANTIATE_TEST_SUITE_P(HardCases, RotationSolvers, ::testing::ValuesIn(kSolvers),

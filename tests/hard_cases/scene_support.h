@@ -32,8 +32,7 @@ struct Universe {
 };
 
 // A box model with a body of mass `mass`, centred at (x, y, z).
-inline McdModelID addBox(Universe &U, double sx, double sy, double sz, double mass, double x,
-                         double y, double z) {
+inline McdModelID addBox(Universe &U, double sx, double sy, double sz, double mass, double x, double y, double z) {
   McdGeometryID g = McdBoxCreate(U.u->frame, (MeReal)sx, (MeReal)sy, (MeReal)sz);
   McdModelID m = MstModelAndBodyCreate(U.u, g, (MeReal)(mass / (sx * sy * sz)));
   MdtBodySetPosition(McdModelGetBody(m), (MeReal)x, (MeReal)y, (MeReal)z);

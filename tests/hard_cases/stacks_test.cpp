@@ -12,15 +12,15 @@ using namespace hard;
 namespace {
 
 struct RestFigures {
-  double drift = 0;       // largest horizontal distance from the start (m)
-  double sink = 0;        // largest depth below the rest height (m)
-  double topSpeed = 0;    // largest speed (m/s)
-  double asleepAt = -1;   // time every body went to sleep (s), -1 if never
+  double drift = 0;      // largest horizontal distance from the start (m)
+  double sink = 0;       // largest depth below the rest height (m)
+  double topSpeed = 0;   // largest speed (m/s)
+  double asleepAt = -1;  // time every body went to sleep (s), -1 if never
 };
 
 // Runs `seconds` at h, tracking every body against its start.
-RestFigures watchRest(Universe &U, const std::vector<MdtBodyID> &bodies,
-                      const std::vector<double> &restY, double h, double seconds) {
+RestFigures watchRest(Universe &U, const std::vector<MdtBodyID> &bodies, const std::vector<double> &restY, double h,
+                      double seconds) {
   RestFigures f;
   std::vector<double> x0, z0;
   for (MdtBodyID b : bodies) {
@@ -57,10 +57,10 @@ RestFigures heavyOnLight(double epsilon) {
   McdModelID light = addBox(U, 1, 1, 1, 1, 0, 0.5, 0);
   McdModelID heavy = addBox(U, 1, 1, 1, 500, 0, 1.5, 0);
   const RestFigures f = watchRest(U, {bodyOf(light), bodyOf(heavy)}, {0.5, 1.5}, 1.0 / 60, 60);
-  std::printf("[ figures  ] heavy on light, epsilon %s: drift %.4f m, sink %.4f m, top speed "
-              "%.3f m/s, asleep at %.2f s\n",
-              epsilon > 0 ? std::to_string(epsilon).c_str() : "default", f.drift, f.sink,
-              f.topSpeed, f.asleepAt);
+  std::printf(
+      "[ figures  ] heavy on light, epsilon %s: drift %.4f m, sink %.4f m, top speed "
+      "%.3f m/s, asleep at %.2f s\n",
+      epsilon > 0 ? std::to_string(epsilon).c_str() : "default", f.drift, f.sink, f.topSpeed, f.asleepAt);
   return f;
 }
 
@@ -71,8 +71,8 @@ TEST(HardCases, HeavyOnLightStaysPut) {
   if (f.drift > 0.01 || f.sink > 0.01 || f.asleepAt < 0)
     GTEST_SKIP() << "known limit (contact softness epsilon 0.01 gives way under 500 kg and "
                     "friction then lets the light box go; the solver, issue 15): drift "
-                 << f.drift << " m, sink " << f.sink << " m, top speed " << f.topSpeed
-                 << " m/s, asleep at " << f.asleepAt << " s";
+                 << f.drift << " m, sink " << f.sink << " m, top speed " << f.topSpeed << " m/s, asleep at "
+                 << f.asleepAt << " s";
   EXPECT_LT(f.topSpeed, 0.1);
 }
 
@@ -80,8 +80,8 @@ TEST(HardCases, HeavyOnLightStaysPut) {
 TEST(HardCases, HeavyOnLightStaysPutAtEpsilon1e3) {
   const RestFigures f = heavyOnLight(1e-3);
   if (f.drift > 0.01 || f.sink > 0.01 || f.asleepAt < 0)
-    GTEST_SKIP() << "known limit even at epsilon 1e-3: drift " << f.drift << " m, sink "
-                 << f.sink << " m, asleep at " << f.asleepAt << " s";
+    GTEST_SKIP() << "known limit even at epsilon 1e-3: drift " << f.drift << " m, sink " << f.sink << " m, asleep at "
+                 << f.asleepAt << " s";
   EXPECT_LT(f.topSpeed, 0.1);
 }
 
@@ -122,11 +122,12 @@ TEST(HardCases, GuideStackStartedTouchingStands) {
     restY.push_back(0.15 + 0.3 * i);
   }
   const RestFigures f = watchRest(U, bodies, restY, h, 20);
-  std::printf("[ figures  ] guide stack touching: drift %.4f m, sink %.4f m, asleep at %.2f s\n",
-              f.drift, f.sink, f.asleepAt);
+  std::printf("[ figures  ] guide stack touching: drift %.4f m, sink %.4f m, asleep at %.2f s\n", f.drift, f.sink,
+              f.asleepAt);
   if (f.drift > 0.05)
     GTEST_SKIP() << "known limit (the solver at epsilon 0.005 on a touching column, issue 15; "
-                    "engine/mdt/step): drift " << f.drift << " m";
+                    "engine/mdt/step): drift "
+                 << f.drift << " m";
   EXPECT_LT(f.sink, 0.05);
 }
 
@@ -144,7 +145,8 @@ TEST(HardCases, SmallCubesStack) {
   std::printf("[ figures  ] 1 cm cubes: drift %.5f m, sink %.5f m\n", f.drift, f.sink);
   if (f.sink > 0.0025)
     GTEST_SKIP() << "known limit (contact softness at small scale, issue 15; engine/mdt/step): "
-                    "sink " << f.sink << " m for 1 cm cubes";
+                    "sink "
+                 << f.sink << " m for 1 cm cubes";
   EXPECT_LT(f.drift, 0.0025);
 }
 
@@ -156,7 +158,8 @@ TEST(HardCases, LargeHeavyBoxDoesNotSink) {
   std::printf("[ figures  ] 100 m 1e9 kg box: sink %.3f m\n", f.sink);
   if (f.sink > 1)
     GTEST_SKIP() << "known limit (contact softness epsilon is absolute, issue 15; "
-                    "engine/mdt/step): sink " << f.sink << " m";
+                    "engine/mdt/step): sink "
+                 << f.sink << " m";
   EXPECT_LT(f.drift, 1.0);
 }
 
@@ -168,8 +171,7 @@ TEST(HardCases, LargeHeavyBoxInAMassScaledWorld) {
   MdtBodyID b = bodyOf(addBox(U, 100, 100, 100, 1e9, 0, 50, 0));
   const RestFigures f = watchRest(U, {b}, {50}, 1.0 / 60, 10);
   std::printf("[ figures  ] 100 m 1e9 kg box, mass scale 1e9: sink %.4f m\n", f.sink);
-  if (f.sink > 1)
-    GTEST_SKIP() << "known limit even with mass scale 1e9: sink " << f.sink << " m";
+  if (f.sink > 1) GTEST_SKIP() << "known limit even with mass scale 1e9: sink " << f.sink << " m";
   EXPECT_LT(f.drift, 1.0);
 }
 

@@ -48,9 +48,10 @@ TEST(HardCases, ThinWallTunnellingThreshold) {
   for (double t : {0.01, 0.05, 0.2}) {
     const double v = largestSafeSpeed(t);
     const double naive = (t + 2 * kRadius) / kStep;
-    std::printf("[ figures  ] wall %.2f m, sphere r %.1f m, h 1/60 s: largest speed that does not "
-                "tunnel %.1f m/s ((t + 2r)/h = %.1f m/s)\n",
-                t, kRadius, v, naive);
+    std::printf(
+        "[ figures  ] wall %.2f m, sphere r %.1f m, h 1/60 s: largest speed that does not "
+        "tunnel %.1f m/s ((t + 2r)/h = %.1f m/s)\n",
+        t, kRadius, v, naive);
     // At least the discrete bound: a wall is never crossed unseen below it.
     EXPECT_GE(v, 0.9 * naive) << "wall " << t;
     EXPECT_LT(v, 2000.0) << "wall " << t << ": some speed must tunnel (no continuous collision)";

@@ -28,12 +28,20 @@ extern "C" {
 
 #define BALLMAN_PARTS 10
 #define BALLMAN_JOINTS 9
-#define BALLMAN_STEPS 6  /* stair blocks: the landing and five steps */
-#define BALLMAN_BOXES 6  /* the stack: rows of 3, 2, 1 */
+#define BALLMAN_STEPS 6 /* stair blocks: the landing and five steps */
+#define BALLMAN_BOXES 6 /* the stack: rows of 3, 2, 1 */
 
 typedef enum BallmanPart {
-    BallmanTorso, BallmanHead, BallmanUpperArmL, BallmanUpperArmR, BallmanForearmL, BallmanForearmR,
-    BallmanThighL, BallmanThighR, BallmanCalfL, BallmanCalfR
+  BallmanTorso,
+  BallmanHead,
+  BallmanUpperArmL,
+  BallmanUpperArmR,
+  BallmanForearmL,
+  BallmanForearmR,
+  BallmanThighL,
+  BallmanThighR,
+  BallmanCalfL,
+  BallmanCalfR
 } BallmanPart;
 
 typedef enum BallmanShape { BallmanBox, BallmanSphere, BallmanCapsule } BallmanShape;
@@ -42,26 +50,26 @@ typedef enum BallmanShape { BallmanBox, BallmanSphere, BallmanCapsule } BallmanS
  * a capsule's radius (a) and the length of its cylinder (b), along its
  * local z. */
 typedef struct BallmanPartShape {
-    BallmanShape shape;
-    MeReal a, b, c;
+  BallmanShape shape;
+  MeReal a, b, c;
 } BallmanPartShape;
 
 typedef struct Ballman {
-    MstUniverseID universe;
-    McdModelID part[BALLMAN_PARTS];
-    BallmanPartShape partShape[BALLMAN_PARTS];
-    MdtSkeletalID joint[BALLMAN_JOINTS];
-    McdModelID stair[BALLMAN_STEPS];
-    MeMatrix4 stairTM[BALLMAN_STEPS];
-    MeReal stairSize[BALLMAN_STEPS][3];
-    McdModelID box[BALLMAN_BOXES];
-    MeReal boxSide;
-    McdModelID ground;
-    MeMatrix4 groundTM;
-    MstMaterialID dollMaterial, stairMaterial, boxMaterial;
-    MeBool highQuality;
-    int substeps;     /* world steps per frame (kBallmanSubsteps) */
-    int propelSteps;  /* substeps of push left */
+  MstUniverseID universe;
+  McdModelID part[BALLMAN_PARTS];
+  BallmanPartShape partShape[BALLMAN_PARTS];
+  MdtSkeletalID joint[BALLMAN_JOINTS];
+  McdModelID stair[BALLMAN_STEPS];
+  MeMatrix4 stairTM[BALLMAN_STEPS];
+  MeReal stairSize[BALLMAN_STEPS][3];
+  McdModelID box[BALLMAN_BOXES];
+  MeReal boxSide;
+  McdModelID ground;
+  MeMatrix4 groundTM;
+  MstMaterialID dollMaterial, stairMaterial, boxMaterial;
+  MeBool highQuality;
+  int substeps;    /* world steps per frame (kBallmanSubsteps) */
+  int propelSteps; /* substeps of push left */
 } Ballman;
 
 extern const MeReal kBallmanStep;       /* 1/60 s: one frame */

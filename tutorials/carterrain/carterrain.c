@@ -10,8 +10,8 @@ static CarTerrain *active_; /* the one car the callbacks serve */
 
 /* The triangle list's generator: the terrain's triangles under the sphere
  * (pos, radius) around the model that touches the terrain's box. */
-static int MEAPI TerrainTriangles(McdModelPair *pair, McdUserTriangle *triangles, MeVector3 pos,
-                                  MeReal radius, int maxTriangles) {
+static int MEAPI TerrainTriangles(McdModelPair *pair, McdUserTriangle *triangles, MeVector3 pos, MeReal radius,
+                                  int maxTriangles) {
   (void)pair;
   return HeightFieldTrianglesNear(&active_->terrain, pos, radius, triangles, maxTriangles);
 }
@@ -99,7 +99,7 @@ int CarTerrainCreate(CarTerrain *car, const char *terrainName) {
   /* Box friction: a fixed limit on the friction force, here a coefficient
    * times the static load on one wheel (a linear problem for the solver,
    * cheaper and steadier than the normal-force model). */
-  MdtContactParamsSetPrimaryFriction(p, CAR_GRIP_ALONG * CAR_WHEEL_LOAD);   /* traction, braking */
+  MdtContactParamsSetPrimaryFriction(p, CAR_GRIP_ALONG * CAR_WHEEL_LOAD);    /* traction, braking */
   MdtContactParamsSetSecondaryFriction(p, CAR_GRIP_ACROSS * CAR_WHEEL_LOAD); /* cornering */
   MdtContactParamsSetRestitution(p, 0);
   MstBridgeSetPerContactCB(bridge, car->wheelMaterial, car->groundMaterial, WheelContactCB);
@@ -178,8 +178,7 @@ static void ApplyControls(CarTerrain *car) {
     else if (i >= CAR_REAR_LEFT && car->throttle != 0)
       /* Rear-wheel drive. Rolling forward (+x) turns the wheel about -z,
        * so a forward speed v is a hinge rate of -v / r. */
-      MdtCarWheelSetHingeLimitedForceMotor(j, -car->throttle * CAR_TOP_SPEED / CAR_WHEEL_RADIUS,
-                                           CAR_DRIVE_TORQUE);
+      MdtCarWheelSetHingeLimitedForceMotor(j, -car->throttle * CAR_TOP_SPEED / CAR_WHEEL_RADIUS, CAR_DRIVE_TORQUE);
     else
       MdtCarWheelSetHingeLimitedForceMotor(j, 0, 0); /* free to roll */
     if (i < CAR_REAR_LEFT) {

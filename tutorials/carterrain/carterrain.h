@@ -29,26 +29,26 @@ extern "C" {
 
 /* The car's figures (metres, kilograms, seconds). */
 #define CAR_STEP ((MeReal)1 / 60)
-#define CAR_TERRAIN_SCALE ((MeReal)15)  /* height of grey level 255 */
+#define CAR_TERRAIN_SCALE ((MeReal)15)   /* height of grey level 255 */
 #define CAR_CHASSIS_LENGTH ((MeReal)3.2) /* along x */
 #define CAR_CHASSIS_HEIGHT ((MeReal)0.5)
 #define CAR_CHASSIS_WIDTH ((MeReal)1.6) /* along z */
 #define CAR_CHASSIS_MASS ((MeReal)800)
 #define CAR_WHEEL_RADIUS ((MeReal)0.4)
 #define CAR_WHEEL_MASS ((MeReal)25)
-#define CAR_WHEEL_X ((MeReal)1.25)  /* front (+) and rear (-) axle, from the chassis centre */
-#define CAR_WHEEL_Z ((MeReal)0.95)  /* left (-) and right (+) wheel */
-#define CAR_WHEEL_DROP ((MeReal)0.45) /* wheel centre below the chassis centre, unloaded */
-#define CAR_SPRING ((MeReal)40000)    /* suspension stiffness, N/m */
-#define CAR_DAMPER ((MeReal)3000)     /* suspension damping, N s/m */
-#define CAR_TRAVEL ((MeReal)0.2)      /* suspension travel each way from the reference */
-#define CAR_TOP_SPEED ((MeReal)12)    /* m/s at full throttle */
+#define CAR_WHEEL_X ((MeReal)1.25)     /* front (+) and rear (-) axle, from the chassis centre */
+#define CAR_WHEEL_Z ((MeReal)0.95)     /* left (-) and right (+) wheel */
+#define CAR_WHEEL_DROP ((MeReal)0.45)  /* wheel centre below the chassis centre, unloaded */
+#define CAR_SPRING ((MeReal)40000)     /* suspension stiffness, N/m */
+#define CAR_DAMPER ((MeReal)3000)      /* suspension damping, N s/m */
+#define CAR_TRAVEL ((MeReal)0.2)       /* suspension travel each way from the reference */
+#define CAR_TOP_SPEED ((MeReal)12)     /* m/s at full throttle */
 #define CAR_DRIVE_TORQUE ((MeReal)600) /* per driven wheel, N m */
 #define CAR_BRAKE_TORQUE ((MeReal)1500)
-#define CAR_MAX_STEER ((MeReal)0.5)    /* rad */
-#define CAR_EPSILON ((MeReal)0.001)    /* the world's constraint softness */
-#define CAR_GRIP_ALONG ((MeReal)1.2)   /* tyre friction coefficients along */
-#define CAR_GRIP_ACROSS ((MeReal)1.0)  /* and across the tyre */
+#define CAR_MAX_STEER ((MeReal)0.5)   /* rad */
+#define CAR_EPSILON ((MeReal)0.001)   /* the world's constraint softness */
+#define CAR_GRIP_ALONG ((MeReal)1.2)  /* tyre friction coefficients along */
+#define CAR_GRIP_ACROSS ((MeReal)1.0) /* and across the tyre */
 /* The static load on one wheel, N. */
 #define CAR_WHEEL_LOAD ((CAR_CHASSIS_MASS / 4 + CAR_WHEEL_MASS) * (MeReal)9.81)
 
@@ -68,9 +68,9 @@ typedef struct CarTerrain {
   int brake;
   long steps;
   /* Figures for tests and the caption. */
-  long wheelContacts;        /* per-contact callbacks so far */
-  MeReal worstDirectionDot;  /* largest |direction . normal| or |direction . hinge| seen */
-  MeReal distance;           /* path length of the chassis, m */
+  long wheelContacts;       /* per-contact callbacks so far */
+  MeReal worstDirectionDot; /* largest |direction . normal| or |direction . hinge| seen */
+  MeReal distance;          /* path length of the chassis, m */
 } CarTerrain;
 
 /* Loads the terrain (HeightFieldFromBMP(name, CAR_TERRAIN_SCALE)) and

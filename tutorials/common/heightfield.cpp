@@ -92,8 +92,8 @@ void CellTriangle(const HeightField *hf, int ix, int iz, int k, int v[3]) {
 
 extern "C" {
 
-int HeightFieldCreate(HeightField *hf, int countX, int countZ, MeReal spacing, MeReal originX,
-                      MeReal originZ, const MeReal *heights) {
+int HeightFieldCreate(HeightField *hf, int countX, int countZ, MeReal spacing, MeReal originX, MeReal originZ,
+                      const MeReal *heights) {
   if (!hf) return 0;
   *hf = HeightField{};
   if (countX < 2 || countZ < 2 || !(spacing > 0) || !heights) {
@@ -116,8 +116,7 @@ int HeightFieldCreate(HeightField *hf, int countX, int countZ, MeReal spacing, M
     for (int ix = 0; ix < countX; ++ix) {
       const int i = Index(hf, ix, iz);
       hf->heights[i] = heights[i];
-      MeVector3Set(hf->vertices[i], originX + (MeReal)ix * spacing, heights[i],
-                   originZ + (MeReal)iz * spacing);
+      MeVector3Set(hf->vertices[i], originX + (MeReal)ix * spacing, heights[i], originZ + (MeReal)iz * spacing);
     }
   for (int iz = 0; iz + 1 < countZ; ++iz)
     for (int ix = 0; ix + 1 < countX; ++ix)
@@ -141,8 +140,10 @@ int HeightFieldFromBMP(HeightField *hf, const char *name, MeReal heightScale) {
   if (file.size() < 4 || file.compare(file.size() - 4, 4, ".bmp") != 0) file += ".bmp";
   const std::string path = FindFile(file);
   if (path.empty()) {
-    std::fprintf(stderr, "HeightFieldFromBMP: %s not found (working directory, $KARMA_DATA_DIR, "
-                         "the program's directory, share/karma/)\n", file.c_str());
+    std::fprintf(stderr,
+                 "HeightFieldFromBMP: %s not found (working directory, $KARMA_DATA_DIR, "
+                 "the program's directory, share/karma/)\n",
+                 file.c_str());
     return 0;
   }
   int w = 0, h = 0, channels = 0;
@@ -160,8 +161,7 @@ int HeightFieldFromBMP(HeightField *hf, const char *name, MeReal heightScale) {
     }
   stbi_image_free(pixels);
   const MeReal s = HEIGHTFIELD_BMP_SPACING;
-  return HeightFieldCreate(hf, w, h, s, -(MeReal)(w - 1) * s / 2, -(MeReal)(h - 1) * s / 2,
-                           heights.data());
+  return HeightFieldCreate(hf, w, h, s, -(MeReal)(w - 1) * s / 2, -(MeReal)(h - 1) * s / 2, heights.data());
 }
 
 void HeightFieldDestroy(HeightField *hf) {
@@ -200,8 +200,8 @@ void HeightFieldGetBounds(const HeightField *hf, MeVector3 min, MeVector3 max) {
                hf->originZ + (MeReal)(hf->countZ - 1) * hf->spacing);
 }
 
-int HeightFieldTrianglesNear(const HeightField *hf, const MeVector3 pos, MeReal radius,
-                             McdUserTriangle *triangles, int maxTriangles) {
+int HeightFieldTrianglesNear(const HeightField *hf, const MeVector3 pos, MeReal radius, McdUserTriangle *triangles,
+                             int maxTriangles) {
   if (!hf || !hf->heights || !triangles || maxTriangles <= 0 || !(radius >= 0)) return 0;
   const MeReal s = hf->spacing;
   const int x0 = std::max(0, (int)std::floor((pos[0] - radius - hf->originX) / s));

@@ -47,8 +47,8 @@ typedef struct HeightField {
 int HeightFieldFromBMP(HeightField *hf, const char *name, MeReal heightScale);
 
 /* A field from given heights (copied), for tests and generated terrain. */
-int HeightFieldCreate(HeightField *hf, int countX, int countZ, MeReal spacing, MeReal originX,
-                      MeReal originZ, const MeReal *heights);
+int HeightFieldCreate(HeightField *hf, int countX, int countZ, MeReal spacing, MeReal originX, MeReal originZ,
+                      const MeReal *heights);
 
 /* Frees the arrays; *hf becomes empty. Accepts an empty field. */
 void HeightFieldDestroy(HeightField *hf);
@@ -65,8 +65,8 @@ void HeightFieldGetBounds(const HeightField *hf, MeVector3 min, MeVector3 max);
  * When more cells overlap than fit, the ones nearest pos come first. Meant
  * to be called from a triangle list generator (McdTriangleListFnPtr),
  * whose pos and radius it takes as they come. */
-int HeightFieldTrianglesNear(const HeightField *hf, const MeVector3 pos, MeReal radius,
-                             McdUserTriangle *triangles, int maxTriangles);
+int HeightFieldTrianglesNear(const HeightField *hf, const MeVector3 pos, MeReal radius, McdUserTriangle *triangles,
+                             int maxTriangles);
 
 #ifdef __cplusplus
 }

@@ -14,8 +14,8 @@ extern "C" {
  * collision, with smooth per-vertex normals and texture coordinates of one
  * repeat per `texelMetres`), in colour `color` (RGBA in [0, 1]), added to
  * rc's 3D render list. tm may be NULL (identity). */
-RGraphic *HeightFieldCreateGraphic(RRender *rc, const HeightField *hf, const float color[4],
-                                   MeReal texelMetres, MeMatrix4Ptr tm);
+RGraphic *HeightFieldCreateGraphic(RRender *rc, const HeightField *hf, const float color[4], MeReal texelMetres,
+                                   MeMatrix4Ptr tm);
 
 #ifdef __cplusplus
 }

@@ -33,8 +33,7 @@ static double Height(double x, double z) {
   const double pi = 3.14159265358979323846;
   const double r = sqrt(x * x + z * z);
   const double edge = fmax(fabs(x), fabs(z));
-  const double hills = 1.8 * sin(2 * pi * x / 64) * cos(2 * pi * z / 48) +
-                       0.6 * sin(2 * pi * (0.6 * x + 0.8 * z) / 22);
+  const double hills = 1.8 * sin(2 * pi * x / 64) * cos(2 * pi * z / 48) + 0.6 * sin(2 * pi * (0.6 * x + 0.8 * z) / 22);
   return 2.0 + Smooth(6, 20, r) * hills + 10.0 * Smooth(51, 63, edge);
 }
 

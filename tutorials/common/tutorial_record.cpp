@@ -83,8 +83,8 @@ void Finish() {
 
 extern "C" {
 
-TutorialRecord *TutorialRecordCreate(int argc, char **argv, const char *program, const char *step,
-                                     MeReal timeStep, int every) {
+TutorialRecord *TutorialRecordCreate(int argc, char **argv, const char *program, const char *step, MeReal timeStep,
+                                     int every) {
   if (active) {
     std::fprintf(stderr, "%s: a tutorial record already exists\n", program);
     return nullptr;
@@ -118,8 +118,8 @@ void TutorialRecordAddBody(TutorialRecord *rec, MdtBodyID body) {
 
 void TutorialRecordStart(TutorialRecord *rec) {
   if (!rec || rec->lastWritten >= 0) return;
-  KarmaTrajectoryInfo info = {rec->program, rec->step, "reference", rec->sampling, rec->timeStep,
-                              (int)rec->bodies.size()};
+  KarmaTrajectoryInfo info = {rec->program,  rec->step,     "reference",
+                              rec->sampling, rec->timeStep, (int)rec->bodies.size()};
   rec->writer = KarmaTrajectoryWriterCreate(rec->path, &info);
   if (rec->writer && KarmaTrajectoryWriterError(rec->writer))
     std::fprintf(stderr, "%s: trajectory: %s\n", rec->program, KarmaTrajectoryWriterError(rec->writer));

@@ -38,8 +38,8 @@ typedef struct TutorialRecord TutorialRecord;
 
 /* Reads the options; `every` >= 1. Returns NULL (after a message) only
  * when out of memory or when a record already exists. */
-TutorialRecord *TutorialRecordCreate(int argc, char **argv, const char *program, const char *step,
-                                     MeReal timeStep, int every);
+TutorialRecord *TutorialRecordCreate(int argc, char **argv, const char *program, const char *step, MeReal timeStep,
+                                     int every);
 /* Adds a body to the recorded set; only before TutorialRecordStart. */
 void TutorialRecordAddBody(TutorialRecord *rec, MdtBodyID body);
 /* Writes frame 0 (the state before the first step). */

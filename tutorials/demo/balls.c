@@ -15,10 +15,10 @@ void DemoWorldInit(DemoWorld *world) {
   world->restitution = (MeReal)0.7;
   world->friction = (MeReal)0.9;
   /* A slow high lob, a fast flat throw, and a small ball spinning about a tilted axis. */
-  InitBall(&world->balls[0], (MeReal)0.25, (MeReal)0.5, (MeReal)1.0, (MeReal)1.5, (MeReal)6.0, 0, 0, (MeReal)-4.0,
-           220, 60, 50);
-  InitBall(&world->balls[1], (MeReal)0.35, (MeReal)0.5, (MeReal)0.35, (MeReal)2.5, (MeReal)3.0, 0, 0, (MeReal)-7.0,
-           50, 110, 210);
+  InitBall(&world->balls[0], (MeReal)0.25, (MeReal)0.5, (MeReal)1.0, (MeReal)1.5, (MeReal)6.0, 0, 0, (MeReal)-4.0, 220,
+           60, 50);
+  InitBall(&world->balls[1], (MeReal)0.35, (MeReal)0.5, (MeReal)0.35, (MeReal)2.5, (MeReal)3.0, 0, 0, (MeReal)-7.0, 50,
+           110, 210);
   InitBall(&world->balls[2], (MeReal)0.2, (MeReal)1.0, (MeReal)2.0, (MeReal)0.8, (MeReal)7.0, (MeReal)3.0, 0,
            (MeReal)4.0, 240, 190, 40);
 }

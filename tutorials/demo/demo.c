@@ -32,12 +32,13 @@ typedef struct Options {
 } Options;
 
 static void Usage(FILE *f) {
-  fprintf(f, "usage: karma_demo [-frames N] [-trajectory FILE] [-out DIR] [-size WxH] [-platform reference] [-help]\n"
-             "  -frames N         frames to simulate (default 240; frame k is time k/60 s)\n"
-             "  -trajectory FILE  write the trajectory (every %dth frame and the last)\n"
-             "  -out DIR          write frames 0, N/2 and N-1 as DIR/frame_NNNNN.png\n"
-             "  -size WxH         image size (default 320x240)\n"
-             "  -platform NAME    only 'reference': the demo has no other backend\n",
+  fprintf(f,
+          "usage: karma_demo [-frames N] [-trajectory FILE] [-out DIR] [-size WxH] [-platform reference] [-help]\n"
+          "  -frames N         frames to simulate (default 240; frame k is time k/60 s)\n"
+          "  -trajectory FILE  write the trajectory (every %dth frame and the last)\n"
+          "  -out DIR          write frames 0, N/2 and N-1 as DIR/frame_NNNNN.png\n"
+          "  -size WxH         image size (default 320x240)\n"
+          "  -platform NAME    only 'reference': the demo has no other backend\n",
           SAMPLE_EVERY);
 }
 
@@ -114,9 +115,10 @@ int main(int argc, char **argv) {
   const int parsed = ParseOptions(argc, argv, &o);
   if (parsed) return parsed == 1 ? 0 : 2;
 
-  printf("karma_demo: %d balls launched under gravity, bouncing on the ground (restitution 0.7)\n"
-         "and spinning at constant rates; semi-implicit Euler, h = 1/60 s, %d frames, MeReal = %s.\n",
-         DEMO_BALL_COUNT, o.frames, KARMA_DOUBLE ? "double" : "float");
+  printf(
+      "karma_demo: %d balls launched under gravity, bouncing on the ground (restitution 0.7)\n"
+      "and spinning at constant rates; semi-implicit Euler, h = 1/60 s, %d frames, MeReal = %s.\n",
+      DEMO_BALL_COUNT, o.frames, KARMA_DOUBLE ? "double" : "float");
 
   if (o.outDir) {
     if (mkdir(o.outDir, 0777) != 0 && errno != EEXIST) {
@@ -173,9 +175,11 @@ int main(int argc, char **argv) {
            (double)b->linearVelocity[0], (double)b->linearVelocity[1]);
   }
   KarmaGoldenFormatHash(KarmaTrajectoryWriterHash(trajectory), hashText);
-  if (KarmaTrajectoryWriterError(trajectory)) fprintf(stderr, "karma_demo: %s\n", KarmaTrajectoryWriterError(trajectory));
+  if (KarmaTrajectoryWriterError(trajectory))
+    fprintf(stderr, "karma_demo: %s\n", KarmaTrajectoryWriterError(trajectory));
   if (!KarmaTrajectoryWriterDestroy(trajectory)) {
-    if (ok) fprintf(stderr, "karma_demo: could not finish the trajectory file %s\n", o.trajectory ? o.trajectory : "(none)");
+    if (ok)
+      fprintf(stderr, "karma_demo: could not finish the trajectory file %s\n", o.trajectory ? o.trajectory : "(none)");
     ok = 0;
   }
   DemoRendererDestroy(renderer);

@@ -89,8 +89,7 @@ MeReal QuadBikeTime(void) { return (MeReal)ticks * timeStep; }
 
 void tick(void) {
   if (runOptions.ride)
-    QuadBikeRideInputs(QuadBikeTime(), &quadBike.throttleInput, &quadBike.brakeInput,
-                       &quadBike.steeringInput);
+    QuadBikeRideInputs(QuadBikeTime(), &quadBike.throttleInput, &quadBike.brakeInput, &quadBike.steeringInput);
   if (quadBike.chassisBody) UpdateVehicleControls(&quadBike);
   if (rider.limbBody[0]) UpdateRiderControls(&rider);
 #if QUADBIKE_STEP >= 3

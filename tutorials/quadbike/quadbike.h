@@ -26,7 +26,7 @@
 #include "heightfield.h"
 
 #ifndef QUADBIKE_STEP
-#define QUADBIKE_STEP 19
+#  define QUADBIKE_STEP 19
 #endif
 
 /* 1: the terrain is the height field read from terrain2.bmp; 0: a flat
@@ -34,14 +34,14 @@
  * default, and the run-time options -flat / -terrain override it
  * (QuadBikeOptions.useTriList). */
 #ifndef USE_TRI_LIST
-#define USE_TRI_LIST 1
+#  define USE_TRI_LIST 1
 #endif
 
 #ifndef max
-#define max(a, b) ((a) > (b) ? (a) : (b))
+#  define max(a, b) ((a) > (b) ? (a) : (b))
 #endif
 #ifndef min
-#define min(a, b) ((a) < (b) ? (a) : (b))
+#  define min(a, b) ((a) < (b) ? (a) : (b))
 #endif
 
 #ifdef __cplusplus
@@ -66,11 +66,11 @@ void tick(void);
 /* ---- terrain.c ----------------------------------------------------------- */
 
 typedef struct Landscape {
-  HeightField heightField;   /* the terrain's grid (empty on the flat plane) */
-  McdGeometryID collGeom;    /* triangle list or plane */
+  HeightField heightField; /* the terrain's grid (empty on the flat plane) */
+  McdGeometryID collGeom;  /* triangle list or plane */
   McdModelID collModel;
-  MeMatrix4 transform;       /* the model's TM (it has no body) */
-  int useTriList;            /* which of the two this run uses */
+  MeMatrix4 transform; /* the model's TM (it has no body) */
+  int useTriList;      /* which of the two this run uses */
 } Landscape;
 
 extern Landscape landscape;
@@ -78,8 +78,8 @@ extern Landscape landscape;
 void InitialiseTerrain(void);
 /* Ground height under (x, z): the height field, or 0 on the flat plane. */
 MeReal TerrainHeightAt(MeReal x, MeReal z);
-int MEAPI TriListGeneratorCB(McdModelPair *modelPair, McdUserTriangle *triangles, MeVector3 pos,
-                             MeReal radius, int maxTriangles);
+int MEAPI TriListGeneratorCB(McdModelPair *modelPair, McdUserTriangle *triangles, MeVector3 pos, MeReal radius,
+                             int maxTriangles);
 
 /* ---- vehicle.c ----------------------------------------------------------- */
 
@@ -89,10 +89,10 @@ typedef struct VehicleData {
   MeReal chassisDims[3];      /* box: length (x), height (y), width (z) */
   MeReal chassisCOMOffset[3]; /* centre of mass relative to the box's centre */
   MeReal wheelRadius;
-  MeReal wheelWidth;          /* drawn only: collision uses a sphere */
-  MeVector3 wheelOffset[4];   /* wheel centres relative to the chassis */
-  MeVector3 hBarOffset;       /* handlebar pivot relative to the chassis */
-  MeReal hBarWidth;           /* grip to grip */
+  MeReal wheelWidth;        /* drawn only: collision uses a sphere */
+  MeVector3 wheelOffset[4]; /* wheel centres relative to the chassis */
+  MeVector3 hBarOffset;     /* handlebar pivot relative to the chassis */
+  MeReal hBarWidth;         /* grip to grip */
 } VehicleData;
 
 typedef struct Vehicle {
@@ -122,21 +122,19 @@ MeBool MEAPI WheelGroundCB(McdIntersectResult *result, McdContact *colC, MdtCont
 
 /* The limbs. The legs are one body per pair: the rider is not meant to
  * fall off. */
-enum { LOWER_LEGS, UPPER_LEGS, TORSO, HEAD, R_UPPER_ARM, R_LOWER_ARM, L_UPPER_ARM, L_LOWER_ARM,
-       NUM_LIMBS };
+enum { LOWER_LEGS, UPPER_LEGS, TORSO, HEAD, R_UPPER_ARM, R_LOWER_ARM, L_UPPER_ARM, L_LOWER_ARM, NUM_LIMBS };
 /* The joints. */
-enum { ANKLES, KNEES, HIPS, NECK, R_SHOULDER, R_ELBOW, R_WRIST, L_SHOULDER, L_ELBOW, L_WRIST,
-       NUM_JOINTS };
+enum { ANKLES, KNEES, HIPS, NECK, R_SHOULDER, R_ELBOW, R_WRIST, L_SHOULDER, L_ELBOW, L_WRIST, NUM_JOINTS };
 
 typedef struct RiderData {
-  MeVector3 limbPos[NUM_LIMBS];  /* centres relative to the bike's start position */
-  MeReal limbAng[NUM_LIMBS][3];  /* Euler angles (MeMatrix3FromEulerAngles) */
-  MeReal limbDim[NUM_LIMBS][3];  /* box sides: length (x), thickness (y), width (z) */
+  MeVector3 limbPos[NUM_LIMBS]; /* centres relative to the bike's start position */
+  MeReal limbAng[NUM_LIMBS][3]; /* Euler angles (MeMatrix3FromEulerAngles) */
+  MeReal limbDim[NUM_LIMBS][3]; /* box sides: length (x), thickness (y), width (z) */
   MeVector3 jointPos[NUM_JOINTS];
-  MeVector3 jointAxis[NUM_JOINTS];   /* hinges only */
-  int jointBodies[NUM_JOINTS][2];    /* limb, other limb (-1: the bike) */
-  unsigned isHinge;                  /* bit i: joint i is a hinge (else ball and socket) */
-  MeReal jointParam[NUM_JOINTS][2];  /* hinge limit stiffness, damping (0: no limit) */
+  MeVector3 jointAxis[NUM_JOINTS];  /* hinges only */
+  int jointBodies[NUM_JOINTS][2];   /* limb, other limb (-1: the bike) */
+  unsigned isHinge;                 /* bit i: joint i is a hinge (else ball and socket) */
+  MeReal jointParam[NUM_JOINTS][2]; /* hinge limit stiffness, damping (0: no limit) */
 } RiderData;
 
 typedef struct Rider {

@@ -15,20 +15,20 @@
 const RiderData riderData = {
     /* limbPos */
     {
-        {(MeReal)0.1, (MeReal)0.375, 0},                   /* LOWER_LEGS: A-K */
-        {(MeReal)-0.05, (MeReal)0.525, 0},                 /* UPPER_LEGS: K-H */
-        {(MeReal)-0.15, (MeReal)0.725, 0},                 /* TORSO: H to the shoulders */
-        {(MeReal)0.03, (MeReal)1.18, 0},                   /* HEAD */
-        {(MeReal)0.1875, (MeReal)0.96875, (MeReal)0.25},   /* R_UPPER_ARM: S-E */
-        {(MeReal)0.4625, (MeReal)0.74375, (MeReal)0.25},   /* R_LOWER_ARM: E-W */
-        {(MeReal)0.1875, (MeReal)0.96875, (MeReal)-0.25},  /* L_UPPER_ARM */
-        {(MeReal)0.4625, (MeReal)0.74375, (MeReal)-0.25},  /* L_LOWER_ARM */
+        {(MeReal)0.1, (MeReal)0.375, 0},                  /* LOWER_LEGS: A-K */
+        {(MeReal)-0.05, (MeReal)0.525, 0},                /* UPPER_LEGS: K-H */
+        {(MeReal)-0.15, (MeReal)0.725, 0},                /* TORSO: H to the shoulders */
+        {(MeReal)0.03, (MeReal)1.18, 0},                  /* HEAD */
+        {(MeReal)0.1875, (MeReal)0.96875, (MeReal)0.25},  /* R_UPPER_ARM: S-E */
+        {(MeReal)0.4625, (MeReal)0.74375, (MeReal)0.25},  /* R_LOWER_ARM: E-W */
+        {(MeReal)0.1875, (MeReal)0.96875, (MeReal)-0.25}, /* L_UPPER_ARM */
+        {(MeReal)0.4625, (MeReal)0.74375, (MeReal)-0.25}, /* L_LOWER_ARM */
     },
     /* limbAng: (psi, theta, phi); with theta = phi = 0 a turn by psi about z */
     {
-        {(MeReal)1.1526, 0, 0},  /* atan2(0.45, 0.2) */
-        {(MeReal)0.2915, 0, 0},  /* atan2(0.15, 0.5) */
-        {(MeReal)1.0714, 0, 0},  /* atan2(0.55, 0.3) */
+        {(MeReal)1.1526, 0, 0}, /* atan2(0.45, 0.2) */
+        {(MeReal)0.2915, 0, 0}, /* atan2(0.15, 0.5) */
+        {(MeReal)1.0714, 0, 0}, /* atan2(0.55, 0.3) */
         {0, 0, 0},
         {(MeReal)-0.1651, 0, 0}, /* atan2(-0.0625, 0.375) */
         {(MeReal)-1.1466, 0, 0}, /* atan2(-0.3875, 0.175) */
@@ -48,16 +48,16 @@ const RiderData riderData = {
     },
     /* jointPos */
     {
-        {0, (MeReal)0.15, 0},                            /* ANKLES */
-        {(MeReal)0.2, (MeReal)0.6, 0},                   /* KNEES */
-        {(MeReal)-0.3, (MeReal)0.45, 0},                 /* HIPS */
-        {0, (MeReal)1.04, 0},                            /* NECK */
-        {0, (MeReal)1.0, (MeReal)0.25},                  /* R_SHOULDER */
-        {(MeReal)0.375, (MeReal)0.9375, (MeReal)0.25},   /* R_ELBOW */
-        {(MeReal)0.55, (MeReal)0.55, (MeReal)0.25},      /* R_WRIST */
-        {0, (MeReal)1.0, (MeReal)-0.25},                 /* L_SHOULDER */
-        {(MeReal)0.375, (MeReal)0.9375, (MeReal)-0.25},  /* L_ELBOW */
-        {(MeReal)0.55, (MeReal)0.55, (MeReal)-0.25},     /* L_WRIST */
+        {0, (MeReal)0.15, 0},                           /* ANKLES */
+        {(MeReal)0.2, (MeReal)0.6, 0},                  /* KNEES */
+        {(MeReal)-0.3, (MeReal)0.45, 0},                /* HIPS */
+        {0, (MeReal)1.04, 0},                           /* NECK */
+        {0, (MeReal)1.0, (MeReal)0.25},                 /* R_SHOULDER */
+        {(MeReal)0.375, (MeReal)0.9375, (MeReal)0.25},  /* R_ELBOW */
+        {(MeReal)0.55, (MeReal)0.55, (MeReal)0.25},     /* R_WRIST */
+        {0, (MeReal)1.0, (MeReal)-0.25},                /* L_SHOULDER */
+        {(MeReal)0.375, (MeReal)0.9375, (MeReal)-0.25}, /* L_ELBOW */
+        {(MeReal)0.55, (MeReal)0.55, (MeReal)-0.25},    /* L_WRIST */
     },
     /* jointAxis: ankles, knees and neck bend about z; the hips' axis runs
      * front to back (the rider leans sideways); the shoulders' is z turned
@@ -109,27 +109,26 @@ void InitialiseRider(Rider *rider, const MeVector3 startPos) {
   MeVector3 pos;
   MeMatrix3 R;
   int i, j;
-#if QUADBIKE_STEP >= 17
+#  if QUADBIKE_STEP >= 17
   MdtBodyID body1, body2;
   MdtHingeID hinge;
   MdtBSJointID bsj;
-#endif
-#if QUADBIKE_STEP >= 18
+#  endif
+#  if QUADBIKE_STEP >= 18
   MdtLimitID limit;
-#endif
+#  endif
 
   /* PASTE_16 */
   for (i = 0; i < NUM_LIMBS; i++) {
     rider->limbBody[i] = MdtBodyCreate(world);
     MeVector3Add(pos, startPos, rider->data->limbPos[i]);
     MdtBodySetPosition(rider->limbBody[i], pos[0], pos[1], pos[2]);
-    MeMatrix3FromEulerAngles(R, rider->data->limbAng[i][0], rider->data->limbAng[i][1],
-                             rider->data->limbAng[i][2]);
+    MeMatrix3FromEulerAngles(R, rider->data->limbAng[i][0], rider->data->limbAng[i][1], rider->data->limbAng[i][2]);
     MdtBodySetOrientation(rider->limbBody[i], R);
     MdtBodyEnable(rider->limbBody[i]);
     /* Collision: a box per limb */
-    rider->limbGeom[i] = McdBoxCreate(framework, rider->data->limbDim[i][0],
-                                      rider->data->limbDim[i][1], rider->data->limbDim[i][2]);
+    rider->limbGeom[i] =
+        McdBoxCreate(framework, rider->data->limbDim[i][0], rider->data->limbDim[i][1], rider->data->limbDim[i][2]);
     rider->limbCM[i] = McdModelCreate(rider->limbGeom[i]);
     McdModelSetBody(rider->limbCM[i], rider->limbBody[i]);
     McdSpaceInsertModel(space, rider->limbCM[i]);
@@ -161,11 +160,10 @@ void InitialiseRider(Rider *rider, const MeVector3 startPos) {
       MdtHingeSetBodies(hinge, body1, body2);
       MeVector3Add(pos, startPos, rider->data->jointPos[i]);
       MdtHingeSetPosition(hinge, pos[0], pos[1], pos[2]);
-      MdtHingeSetAxis(hinge, rider->data->jointAxis[i][0], rider->data->jointAxis[i][1],
-                      rider->data->jointAxis[i][2]);
+      MdtHingeSetAxis(hinge, rider->data->jointAxis[i][0], rider->data->jointAxis[i][1], rider->data->jointAxis[i][2]);
       rider->joint[i] = MdtHingeQuaConstraint(hinge);
       /* Add hinge joint limit code here */
-#if QUADBIKE_STEP >= 18
+#  if QUADBIKE_STEP >= 18
       /* PASTE_18 */
       if (rider->data->jointParam[i][0]) {
         /* Both stops at 0, the present angle: a stiff, damped spring
@@ -177,7 +175,7 @@ void InitialiseRider(Rider *rider, const MeVector3 startPos) {
         MdtSingleLimitSetDamping(MdtLimitGetLowerLimit(limit), rider->data->jointParam[i][1]);
         MdtLimitActivateLimits(limit, 1);
       }
-#endif
+#  endif
     } else {
       bsj = MdtBSJointCreate(world);
       MdtBSJointSetBodies(bsj, body1, body2);

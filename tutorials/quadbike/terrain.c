@@ -19,31 +19,25 @@ void InitialiseTerrain(void) {
 #if QUADBIKE_STEP >= 5
   /* PASTE_05 */
   if (landscape.useTriList) { /* #if USE_TRI_LIST */
-#define TRI_LIST_SIZE 50
+#  define TRI_LIST_SIZE 50
     MeVector3 min = {-10000, -10000, -10000}, max = {10000, 10000, 10000};
-    MeALIGNDATA(MeMatrix4, tm, 16) = {
-        {1, 0, 0, 0},
-        {0, 1, 0, 0},
-        {0, 0, 1, 0},
-        {0, 0, 0, 1}};
+    MeALIGNDATA(MeMatrix4, tm, 16) = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
     /* The height field: 2 m between grid points, grey levels 0..255
      * become heights 0..15 m */
     if (!HeightFieldFromBMP(&landscape.heightField, "terrain2", 15))
       fprintf(stderr, "quadbike: no terrain2.bmp; the triangle list stays empty\n");
     /* One huge bounding box: the callback decides what is near */
-    landscape.collGeom = McdTriangleListCreate(framework, min, max, TRI_LIST_SIZE,
-                                               TriListGeneratorCB);
+    landscape.collGeom = McdTriangleListCreate(framework, min, max, TRI_LIST_SIZE, TriListGeneratorCB);
     ((McdTriangleList *)landscape.collGeom)->triangleMaxCount = TRILIST_SIZE;
     landscape.collModel = McdModelCreate(landscape.collGeom);
     MeMatrix4Copy(landscape.transform, tm);
-  } else { /* #else */
-    MeALIGNDATA(MeMatrix4, tm, 16) = {
-        /* A plane is the xy plane of its frame: turn it by pi/2 about x so
+  } else {                            /* #else */
+    MeALIGNDATA(MeMatrix4, tm, 16) = {/* A plane is the xy plane of its frame: turn it by pi/2 about x so
          * that it lies in xz with its normal up */
-        {1, 0, 0, 0},
-        {0, 0, -1, 0},
-        {0, 1, 0, 0},
-        {0, 0, 0, 1}};
+                                      {1, 0, 0, 0},
+                                      {0, 0, -1, 0},
+                                      {0, 1, 0, 0},
+                                      {0, 0, 0, 1}};
     landscape.collGeom = McdPlaneCreate(framework);
     landscape.collModel = McdModelCreate(landscape.collGeom);
     MeMatrix4Copy(landscape.transform, tm);
@@ -63,8 +57,8 @@ MeReal TerrainHeightAt(MeReal x, MeReal z) {
 
 /* The triangle list's generator: the triangles of the height field's cells
  * under the square of half-side `radius` around the querying model. */
-int MEAPI TriListGeneratorCB(McdModelPair *modelPair, McdUserTriangle *triangles, MeVector3 pos,
-                             MeReal radius, int maxTriangles) {
+int MEAPI TriListGeneratorCB(McdModelPair *modelPair, McdUserTriangle *triangles, MeVector3 pos, MeReal radius,
+                             int maxTriangles) {
   (void)modelPair;
   return HeightFieldTrianglesNear(&landscape.heightField, pos, radius, triangles, maxTriangles);
 }

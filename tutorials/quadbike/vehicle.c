@@ -33,9 +33,9 @@ void InitialiseVehicle(Vehicle *veh, const MeVector3 startPos) {
   MeMatrix4 comTM;
   MeVector3 pos;
   int i;
-#if QUADBIKE_STEP >= 7
+#  if QUADBIKE_STEP >= 7
   int j;
-#endif
+#  endif
   MeMatrix4TMMakeIdentity(comTM);
   MeMatrix4TMSetPosition(comTM, veh->data->chassisCOMOffset[0], veh->data->chassisCOMOffset[1],
                          veh->data->chassisCOMOffset[2]);
@@ -44,8 +44,8 @@ void InitialiseVehicle(Vehicle *veh, const MeVector3 startPos) {
   /* PASTE_06 */
   /* The chassis: a body and a box model */
   veh->chassisBody = MdtBodyCreate(world);
-  veh->chassisGeom = McdBoxCreate(framework, veh->data->chassisDims[0], veh->data->chassisDims[1],
-                                  veh->data->chassisDims[2]);
+  veh->chassisGeom =
+      McdBoxCreate(framework, veh->data->chassisDims[0], veh->data->chassisDims[1], veh->data->chassisDims[2]);
   veh->chassisCM = McdModelCreate(veh->chassisGeom);
   McdModelSetBody(veh->chassisCM, veh->chassisBody);
   McdModelSetMaterial(veh->chassisCM, chassisMat);
@@ -92,8 +92,7 @@ void InitialiseVehicle(Vehicle *veh, const MeVector3 startPos) {
                          veh->wheelBody[i]);
     MdtBodyGetPosition(veh->wheelBody[i], pos);
     MdtCarWheelSetPosition(veh->wheelJoint[i], pos[0], pos[1], pos[2]);
-    MdtCarWheelSetSteeringAndHingeAxes(veh->wheelJoint[i], 0, 1, 0 /* steering: y */, 0, 0,
-                                       1 /* hinge: z */);
+    MdtCarWheelSetSteeringAndHingeAxes(veh->wheelJoint[i], 0, 1, 0 /* steering: y */, 0, 0, 1 /* hinge: z */);
     if (i == BACK_LEFT || i == BACK_RIGHT) {
       /* Only the front wheels steer: lock the back ones */
       MdtCarWheelSetSteeringLock(veh->wheelJoint[i], 1);
@@ -129,8 +128,7 @@ void UpdateVehicleControls(Vehicle *veh) {
   MeVector3 haxis;
   MeReal torque, theta, desired_vel;
   int i;
-  (void)width, (void)pgap, (void)maxSpeed, (void)maxForce, (void)torque, (void)theta,
-      (void)desired_vel, (void)haxis;
+  (void)width, (void)pgap, (void)maxSpeed, (void)maxForce, (void)torque, (void)theta, (void)desired_vel, (void)haxis;
   if (!veh->wheelJoint[0]) return; /* before step 8 there is nothing to control */
 
   for (i = 0; i < 4; i++) {
@@ -144,11 +142,9 @@ void UpdateVehicleControls(Vehicle *veh) {
         /* PASTE_10 */
         torque = veh->throttleInput * -200;
         /* The engine's torque turns the wheel about its hinge axis */
-        MdtBodyAddTorque(veh->wheelBody[i], torque * haxis[0], torque * haxis[1],
-                         torque * haxis[2]);
+        MdtBodyAddTorque(veh->wheelBody[i], torque * haxis[0], torque * haxis[1], torque * haxis[2]);
         /* and turns the chassis the other way */
-        MdtBodyAddTorque(veh->chassisBody, -torque * haxis[0], -torque * haxis[1],
-                         -torque * haxis[2]);
+        MdtBodyAddTorque(veh->chassisBody, -torque * haxis[0], -torque * haxis[1], -torque * haxis[2]);
 #endif
       }
 #if QUADBIKE_STEP >= 11
@@ -167,8 +163,7 @@ void UpdateVehicleControls(Vehicle *veh) {
       theta = MdtCarWheelGetSteeringAngle(veh->wheelJoint[i]);
       desired_vel = veh->steeringInput * width + theta;
       desired_vel = max(-pgap, min(desired_vel, pgap));
-      MdtCarWheelSetSteeringLimitedForceMotor(veh->wheelJoint[i], maxSpeed * desired_vel,
-                                              maxForce);
+      MdtCarWheelSetSteeringLimitedForceMotor(veh->wheelJoint[i], maxSpeed * desired_vel, maxForce);
 #endif
       if (veh->brakeInput == 0) {
         /* Brakes off */
@@ -189,8 +184,7 @@ void UpdateVehicleControls(Vehicle *veh) {
   /* The handlebars follow the steering, through the hinge's limit
    * controller */
   if (veh->hBarJoint)
-    MdtLimitController(MdtHingeGetLimit(veh->hBarJoint), -veh->steeringInput * width, pgap,
-                       maxSpeed, maxForce);
+    MdtLimitController(MdtHingeGetLimit(veh->hBarJoint), -veh->steeringInput * width, pgap, maxSpeed, maxForce);
 #endif
 }
 

@@ -26,7 +26,7 @@
 
 /* "step05": the golden directory of this step (set by CMake) */
 #ifndef QUADBIKE_STEP_NAME
-#define QUADBIKE_STEP_NAME "step19"
+#  define QUADBIKE_STEP_NAME "step19"
 #endif
 
 static RRender *rc;
@@ -134,13 +134,11 @@ static void CreateVehicleGraphics(void) {
   for (i = 0; i < 4; ++i) {
     if (!quadBike.wheelBody[i]) continue;
     /* A cylinder about the wheel's z axis, its hinge axis */
-    g = RGraphicCylinderCreate(rc, d->wheelRadius, d->wheelWidth, black,
-                               MdtBodyGetTransformPtr(quadBike.wheelBody[i]));
+    g = RGraphicCylinderCreate(rc, d->wheelRadius, d->wheelWidth, black, MdtBodyGetTransformPtr(quadBike.wheelBody[i]));
     if (g) RGraphicSetTexture(rc, g, "checkerboard");
   }
   if (quadBike.hBarBody) {
-    RGraphicCylinderCreate(rc, (MeReal)0.025, d->hBarWidth, grey,
-                           MdtBodyGetTransformPtr(quadBike.hBarBody));
+    RGraphicCylinderCreate(rc, (MeReal)0.025, d->hBarWidth, grey, MdtBodyGetTransformPtr(quadBike.hBarBody));
     /* the stem down to the chassis, fixed to the handlebars */
     MeMatrix4TMMakeIdentity(hBarStemTM);
     RGraphicBoxCreate(rc, (MeReal)0.05, (MeReal)0.35, (MeReal)0.05, grey, hBarStemTM);
@@ -152,13 +150,13 @@ static void CreateRiderGraphics(void) {
   const float skin[4] = {0.95f, 0.75f, 0.6f, 1}, helmet[4] = {0.95f, 0.85f, 0.1f, 1};
   int i;
   for (i = 0; i < NUM_LIMBS; ++i) {
-    const float *colour = i == HEAD                          ? helmet
-                          : i == LOWER_LEGS || i == UPPER_LEGS ? trousers
+    const float *colour = i == HEAD                              ? helmet
+                          : i == LOWER_LEGS || i == UPPER_LEGS   ? trousers
                           : i == R_LOWER_ARM || i == L_LOWER_ARM ? skin
                                                                  : shirt;
     if (!rider.limbBody[i]) continue;
-    RGraphicBoxCreate(rc, riderData.limbDim[i][0], riderData.limbDim[i][1],
-                      riderData.limbDim[i][2], colour, MdtBodyGetTransformPtr(rider.limbBody[i]));
+    RGraphicBoxCreate(rc, riderData.limbDim[i][0], riderData.limbDim[i][1], riderData.limbDim[i][2], colour,
+                      MdtBodyGetTransformPtr(rider.limbBody[i]));
   }
 }
 
@@ -187,8 +185,8 @@ static void UpdateCaption(void) {
   snprintf(line, sizeof line, "QuadBike step %02d  %s", QUADBIKE_STEP, stepText[QUADBIKE_STEP]);
   caption[0] = RGraphicTextCreate(rc, line, 8, 8, white);
   snprintf(line, sizeof line, "t %4.1f s  speed %4.1f m/s  throttle %.1f  brake %.1f  steer %+.1f",
-           (double)QuadBikeTime(), (double)speed, (double)quadBike.throttleInput,
-           (double)quadBike.brakeInput, (double)quadBike.steeringInput);
+           (double)QuadBikeTime(), (double)speed, (double)quadBike.throttleInput, (double)quadBike.brakeInput,
+           (double)quadBike.steeringInput);
   caption[1] = RGraphicTextCreate(rc, line, 8, 26, white);
 }
 
@@ -245,14 +243,15 @@ int main(int argc, const char *argv[]) {
 
   for (i = 1; i < argc; ++i) {
     if (!strcmp(argv[i], "-help"))
-      printf("QuadBike step %d (tutorials/quadbike/README.md). Options of the program:\n"
-             "  -flat          the flat plane%s\n"
-             "  -terrain       the height field from terrain2.bmp%s\n"
-             "  -noride        no scripted ride: drive with the keys\n"
-             "  -trajectory F  write the golden trajectory to F\n"
-             "With -frames N and no -keys/-keyfile/-noride the scripted ride drives.\n"
-             "Keys: Up throttle, Down brake, Left/Right steer a notch, Space centre.\n\n",
-             QUADBIKE_STEP, USE_TRI_LIST ? "" : " (the default)", USE_TRI_LIST ? " (the default)" : "");
+      printf(
+          "QuadBike step %d (tutorials/quadbike/README.md). Options of the program:\n"
+          "  -flat          the flat plane%s\n"
+          "  -terrain       the height field from terrain2.bmp%s\n"
+          "  -noride        no scripted ride: drive with the keys\n"
+          "  -trajectory F  write the golden trajectory to F\n"
+          "With -frames N and no -keys/-keyfile/-noride the scripted ride drives.\n"
+          "Keys: Up throttle, Down brake, Left/Right steer a notch, Space centre.\n\n",
+          QUADBIKE_STEP, USE_TRI_LIST ? "" : " (the default)", USE_TRI_LIST ? " (the default)" : "");
     if (!strcmp(argv[i], "-frames")) headless = 1;
     if (!strcmp(argv[i], "-keys") || !strcmp(argv[i], "-keyfile")) scripted = 1;
   }

@@ -19,21 +19,21 @@ extern "C" {
 #define RC_NBALLS 10
 
 typedef struct RainbowChain {
-    MstUniverseID universe;
-    McdGeometryID ballGeometry;          /* the one sphere every ball uses */
-    McdModelID ball[RC_NBALLS];
-    /* joint[0] holds ball 0 to the world; joint[i] joins ball i-1 and ball i. */
-    MdtBSJointID joint[RC_NBALLS];
-    McdModelID ground;
-    MeMatrix4 groundTM;
-    MeVector3 endForce;                  /* applied to the last ball every step (the mouse) */
-    int substeps;                        /* world steps per frame (kChainSubsteps) */
+  MstUniverseID universe;
+  McdGeometryID ballGeometry; /* the one sphere every ball uses */
+  McdModelID ball[RC_NBALLS];
+  /* joint[0] holds ball 0 to the world; joint[i] joins ball i-1 and ball i. */
+  MdtBSJointID joint[RC_NBALLS];
+  McdModelID ground;
+  MeMatrix4 groundTM;
+  MeVector3 endForce; /* applied to the last ball every step (the mouse) */
+  int substeps;       /* world steps per frame (kChainSubsteps) */
 } RainbowChain;
 
-extern const MeReal kChainBallRadius;   /* 0.5 m */
-extern const MeReal kChainLink;         /* 1.1 m between neighbouring centres */
-extern const MeReal kChainStep;         /* 1/60 s: one frame */
-extern const int kChainSubsteps;        /* collision + dynamics runs per frame */
+extern const MeReal kChainBallRadius; /* 0.5 m */
+extern const MeReal kChainLink;       /* 1.1 m between neighbouring centres */
+extern const MeReal kChainStep;       /* 1/60 s: one frame */
+extern const int kChainSubsteps;      /* collision + dynamics runs per frame */
 
 /* Builds the universe, the ground and the chain in its starting pose.
  * Returns NULL if the universe cannot be made. */

@@ -64,8 +64,7 @@ static void PutVertex(RObjectVertex *v, const MeReal *p, const MeVector3 n) {
   v->m_U = 0, v->m_V = 0;
 }
 
-RGraphic *SampleConvexMeshGraphic(RRender *rc, McdConvexMeshID mesh, const float color[4],
-                                  MeMatrix4Ptr tm) {
+RGraphic *SampleConvexMeshGraphic(RRender *rc, McdConvexMeshID mesh, const float color[4], MeMatrix4Ptr tm) {
   const int faces = McdConvexMeshGetPolygonCount(mesh);
   int f, k, triangles = 0, n = 0;
   RGraphic *g;
@@ -81,8 +80,8 @@ RGraphic *SampleConvexMeshGraphic(RRender *rc, McdConvexMeshID mesh, const float
       PutVertex(&g->m_pVertices[n++], first, normal);
       PutVertex(&g->m_pVertices[n++], McdConvexMeshGetVertex(mesh, McdConvexMeshGetPolygonVertexIndex(mesh, f, k)),
                 normal);
-      PutVertex(&g->m_pVertices[n++],
-                McdConvexMeshGetVertex(mesh, McdConvexMeshGetPolygonVertexIndex(mesh, f, k + 1)), normal);
+      PutVertex(&g->m_pVertices[n++], McdConvexMeshGetVertex(mesh, McdConvexMeshGetPolygonVertexIndex(mesh, f, k + 1)),
+                normal);
     }
   }
   g->m_pObject->m_nNumVertices = n;
@@ -92,8 +91,7 @@ RGraphic *SampleConvexMeshGraphic(RRender *rc, McdConvexMeshID mesh, const float
   return g;
 }
 
-void SampleCamera(RRender *rc, MeReal x, MeReal y, MeReal z, MeReal distance, MeReal theta,
-                  MeReal phi) {
+void SampleCamera(RRender *rc, MeReal x, MeReal y, MeReal z, MeReal distance, MeReal theta, MeReal phi) {
   AcmeVector3 lookAt;
   lookAt[0] = x, lookAt[1] = y, lookAt[2] = z;
   RCameraSetLookAt(rc, lookAt);
@@ -124,8 +122,7 @@ static void MEAPI SampleTick(RRender *rc, void *userdata) {
   if (after_) after_();
 }
 
-void SampleRun(int argc, const char *argv[], const char *name, MeReal h, SampleHook beforeStep,
-               SampleHook afterStep) {
+void SampleRun(int argc, const char *argv[], const char *name, MeReal h, SampleHook beforeStep, SampleHook afterStep) {
   int i;
   step_ = h, before_ = beforeStep, after_ = afterStep;
   record_ = TutorialRecordCreate(argc, (char **)argv, "samples", name, h, SAMPLE_RECORD_EVERY);

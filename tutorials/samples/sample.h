@@ -43,13 +43,11 @@ MdtWorldID SampleWorld(int bodies, int constraints);
 /* A checkerboard ground of side `side` metres at height y (drawing only). */
 RGraphic *SampleGround(RRender *rc, MeReal side, MeReal y);
 /* The faces of a convex mesh as one graphic following tm. */
-RGraphic *SampleConvexMeshGraphic(RRender *rc, McdConvexMeshID mesh, const float color[4],
-                                  MeMatrix4Ptr tm);
+RGraphic *SampleConvexMeshGraphic(RRender *rc, McdConvexMeshID mesh, const float color[4], MeMatrix4Ptr tm);
 
 /* Camera looking at (x, y, z) from `distance`, turned theta about y from
  * +z and raised phi above the horizon (radians). */
-void SampleCamera(RRender *rc, MeReal x, MeReal y, MeReal z, MeReal distance, MeReal theta,
-                  MeReal phi);
+void SampleCamera(RRender *rc, MeReal x, MeReal y, MeReal z, MeReal distance, MeReal theta, MeReal phi);
 
 /* The inertia tensor of a solid box of mass m and full side lengths
  * size[0..2] about its centre: diag(m/12 (y^2 + z^2), m/12 (x^2 + z^2),
@@ -60,8 +58,7 @@ void SampleBoxInertia(MeReal m, const MeReal size[3], MeMatrix3 I);
 void SampleRecordBody(MdtBodyID body);
 
 /* Records and runs (see the top of this file); never returns. */
-void SampleRun(int argc, const char *argv[], const char *name, MeReal h, SampleHook beforeStep,
-               SampleHook afterStep);
+void SampleRun(int argc, const char *argv[], const char *name, MeReal h, SampleHook beforeStep, SampleHook afterStep);
 
 #ifdef __cplusplus
 }

@@ -96,8 +96,8 @@ int main(int argc, const char *argv[]) {
     McdModelSetMaterial(model, boxMaterial);
     colour_[i][0] = i % 2 ? 0.95f : 0.25f, colour_[i][1] = 0.3f + 0.03f * (float)i;
     colour_[i][2] = i % 2 ? 0.3f : 0.9f, colour_[i][3] = 1;
-    graphic_[i] = RGraphicBoxCreate(rc, box_side[0], box_side[1], box_side[2], colour_[i],
-                                    MdtBodyGetTransformPtr(box_[i]));
+    graphic_[i] =
+        RGraphicBoxCreate(rc, box_side[0], box_side[1], box_side[2], colour_[i], MdtBodyGetTransformPtr(box_[i]));
     SampleRecordBody(box_[i]);
   }
 

@@ -34,8 +34,8 @@ static void Stage(void) {
       "4: moving apart: a staying pair; the test finds no contact, the contact goes",
       "5: boxes apart again: a goodbye pair; the contact group is destroyed",
   };
-  static const float colour[6][4] = {{0, 0, 0, 1}, {0.2f, 0.9f, 0.2f, 1}, {1, 0.85f, 0.1f, 1},
-                                     {1, 0.15f, 0.1f, 1}, {1, 0.85f, 0.1f, 1}, {0.2f, 0.9f, 0.2f, 1}};
+  static const float colour[6][4] = {{0, 0, 0, 1},        {0.2f, 0.9f, 0.2f, 1}, {1, 0.85f, 0.1f, 1},
+                                     {1, 0.15f, 0.1f, 1}, {1, 0.85f, 0.1f, 1},   {0.2f, 0.9f, 0.2f, 1}};
   const int overlap = BoxesOverlap();
   const int touching = MdtBodyGetFirstContact(body_[0]) != NULL;
   int stage, i;

@@ -32,8 +32,7 @@ MEPUBLIC McdAggregateID MEAPI McdAggregateCreate(McdFrameworkID framework, int m
  * with a warning (full, NULL, a plane or triangle list, the aggregate itself
  * or one containing it, a closed aggregate, a relTM that is not a finite
  * rigid transform). */
-MEPUBLIC int MEAPI McdAggregateAddElement(McdAggregateID agg, McdGeometryID geom,
-                                          MeMatrix4Ptr relTM);
+MEPUBLIC int MEAPI McdAggregateAddElement(McdAggregateID agg, McdGeometryID geom, MeMatrix4Ptr relTM);
 MEPUBLIC int MEAPI McdAggregateGetElementCount(McdAggregateID agg);
 MEPUBLIC int MEAPI McdAggregateGetElementMaxCount(McdAggregateID agg);
 MEPUBLIC McdGeometryID MEAPI McdAggregateGetElementGeometry(McdAggregateID agg, int element);

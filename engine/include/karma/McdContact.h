@@ -32,19 +32,19 @@ struct McdModelPair;
 
 /* Which part of a model made a contact (a pointer or a small integer). */
 typedef union McdContactElement {
-    void *ptr;
-    int tag;
+  void *ptr;
+  int tag;
 } McdContactElement;
 
 typedef struct McdContact {
-    MeVector3 position;
-    MeVector3 normal;
-    MeReal separation;
-    MeI16 dims;
-    MeI16 spare;
-    McdContactElement element1;
-    McdContactElement element2;
-    MeU32 feature;
+  MeVector3 position;
+  MeVector3 normal;
+  MeReal separation;
+  MeI16 dims;
+  MeI16 spare;
+  McdContactElement element1;
+  McdContactElement element2;
+  MeU32 feature;
 } McdContact;
 
 /* Filled by McdIntersect. The caller provides `contacts` and
@@ -55,18 +55,18 @@ typedef struct McdContact {
  * representative unit normal of the contact set, same convention as the
  * contacts'; zero when not touching). `data` is free for the interaction. */
 typedef struct McdIntersectResult {
-    struct McdModelPair *pair;
-    struct McdModel *model1;
-    struct McdModel *model2;
-    McdContact *contacts;
-    union {
-        int contactMaxCount;
-        int maxContactCount;
-    };
-    int contactCount;
-    int touch;
-    MeVector3 normal;
-    void *data;
+  struct McdModelPair *pair;
+  struct McdModel *model1;
+  struct McdModel *model2;
+  McdContact *contacts;
+  union {
+    int contactMaxCount;
+    int maxContactCount;
+  };
+  int contactCount;
+  int touch;
+  MeVector3 normal;
+  void *data;
 } McdIntersectResult;
 typedef McdIntersectResult McdInteractionResult; /* the guide uses both names */
 

@@ -24,8 +24,7 @@ typedef McdGeometryID McdConvexMeshID;
 /* The hull of `count` points, or NULL with a warning when the points do not
  * span a volume (fewer than four points not all in one plane, relative to
  * the cloud's size), contain NaN or infinity, or fatness is negative. */
-MEPUBLIC McdConvexMeshID MEAPI McdConvexMeshCreateHull(McdFrameworkID framework,
-                                                       const MeVector3 vertices[], int count,
+MEPUBLIC McdConvexMeshID MEAPI McdConvexMeshCreateHull(McdFrameworkID framework, const MeVector3 vertices[], int count,
                                                        MeReal fatness);
 
 MEPUBLIC int MEAPI McdConvexMeshGetVertexCount(McdConvexMeshID mesh);
@@ -36,11 +35,9 @@ MEPUBLIC int MEAPI McdConvexMeshGetPolygonCount(McdConvexMeshID mesh);
  * from outside. */
 MEPUBLIC int MEAPI McdConvexMeshGetPolygonVertexCount(McdConvexMeshID mesh, int polygon);
 /* Vertex index of corner `corner` of face `polygon`, or -1. */
-MEPUBLIC int MEAPI McdConvexMeshGetPolygonVertexIndex(McdConvexMeshID mesh, int polygon,
-                                                      int corner);
+MEPUBLIC int MEAPI McdConvexMeshGetPolygonVertexIndex(McdConvexMeshID mesh, int polygon, int corner);
 /* Outward unit normal of face `polygon`. */
-MEPUBLIC void MEAPI McdConvexMeshGetPolygonNormal(McdConvexMeshID mesh, int polygon,
-                                                  MeVector3 normal);
+MEPUBLIC void MEAPI McdConvexMeshGetPolygonNormal(McdConvexMeshID mesh, int polygon, MeVector3 normal);
 MEPUBLIC MeReal MEAPI McdConvexMeshGetFatness(McdConvexMeshID mesh);
 
 ME_EXTERN_C_END

@@ -10,8 +10,7 @@ ME_EXTERN_C_BEGIN
 typedef McdGeometryID McdCylinderID;
 
 /* A cylinder (radius, height > 0 and finite), or NULL with a warning. */
-MEPUBLIC McdCylinderID MEAPI McdCylinderCreate(McdFrameworkID framework, MeReal radius,
-                                               MeReal height);
+MEPUBLIC McdCylinderID MEAPI McdCylinderCreate(McdFrameworkID framework, MeReal radius, MeReal height);
 MEPUBLIC MeReal MEAPI McdCylinderGetRadius(McdCylinderID cylinder);
 MEPUBLIC MeReal MEAPI McdCylinderGetHeight(McdCylinderID cylinder);
 /* Ignored with a warning for a bad value or a geometry of another type. */

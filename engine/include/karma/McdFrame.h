@@ -37,16 +37,16 @@ typedef McdFramework *McdFrameworkID;
 /* Ids of the built-in geometry types. User types (McdInit's geoTypeMaxCount)
  * take the ids kMcdGeometryBuiltInTypes, kMcdGeometryBuiltInTypes + 1, ... */
 typedef enum McdGeometryType {
-    kMcdGeometryTypeNull = -1,
-    kMcdGeometryTypeSphere = 0,
-    kMcdGeometryTypeBox = 1,
-    kMcdGeometryTypeCylinder = 2,
-    kMcdGeometryTypePlane = 3,
-    kMcdGeometryTypeSphyl = 4,
-    kMcdGeometryTypeTriangleList = 5,
-    kMcdGeometryTypeConvexMesh = 6,
-    kMcdGeometryTypeAggregate = 7,
-    kMcdGeometryBuiltInTypes = 8
+  kMcdGeometryTypeNull = -1,
+  kMcdGeometryTypeSphere = 0,
+  kMcdGeometryTypeBox = 1,
+  kMcdGeometryTypeCylinder = 2,
+  kMcdGeometryTypePlane = 3,
+  kMcdGeometryTypeSphyl = 4,
+  kMcdGeometryTypeTriangleList = 5,
+  kMcdGeometryTypeConvexMesh = 6,
+  kMcdGeometryTypeAggregate = 7,
+  kMcdGeometryBuiltInTypes = 8
 } McdGeometryType;
 
 /* Creates a framework.
@@ -59,8 +59,7 @@ typedef enum McdGeometryType {
  *   lengthScale      the size of a medium object; tolerances scale with it
  * Returns NULL with a warning on negative counts or a non-positive or
  * non-finite length scale. No geometry type is registered yet. */
-MEPUBLIC McdFrameworkID MEAPI McdInit(int geoTypeMaxCount, int modelCount, int instanceCount,
-                                      MeReal lengthScale);
+MEPUBLIC McdFrameworkID MEAPI McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, MeReal lengthScale);
 
 /* Destroys the framework and everything it still owns (models, geometries,
  * tables). Handles into it become invalid. NULL is ignored. */

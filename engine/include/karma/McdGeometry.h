@@ -30,12 +30,12 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct McdGeometry {
-    int m_type;                  /* McdGeometryType or a user type id */
-    int m_refCount;              /* models + aggregates using it */
-    McdFramework *m_framework;   /* owner */
-    struct McdGeometry *m_prev;  /* the framework's list of geometries */
-    struct McdGeometry *m_next;
-    void *m_userData;
+  int m_type;                 /* McdGeometryType or a user type id */
+  int m_refCount;             /* models + aggregates using it */
+  McdFramework *m_framework;  /* owner */
+  struct McdGeometry *m_prev; /* the framework's list of geometries */
+  struct McdGeometry *m_next;
+  void *m_userData;
 } McdGeometry;
 typedef McdGeometry *McdGeometryID;
 
@@ -68,16 +68,15 @@ MEPUBLIC void *MEAPI McdGeometryGetUserData(McdGeometryID geometry);
  * triangle list), a non-positive or non-finite density or NULL arguments it
  * warns, zeroes the outputs it was given and returns FALSE. Any output
  * pointer may be NULL except that at least the geometry must be valid. */
-MEPUBLIC MeBool MEAPI McdGeometryGetMassProperties(McdGeometryID geometry, MeReal density,
-                                                   MeReal *mass, MeMatrix3 inertia,
-                                                   MeVector3 centreOfMass);
+MEPUBLIC MeBool MEAPI McdGeometryGetMassProperties(McdGeometryID geometry, MeReal density, MeReal *mass,
+                                                   MeMatrix3 inertia, MeVector3 centreOfMass);
 /* The geometry's volume (0 for plane and triangle list). */
 MEPUBLIC MeReal MEAPI McdGeometryGetVolume(McdGeometryID geometry);
 
 /* The axis-aligned box bounding the geometry placed at transform `tm`.
  * Unbounded directions (a plane) give -MEINFINITY / +MEINFINITY. */
-MEPUBLIC void MEAPI McdGeometryGetAABB(McdGeometryID geometry, MECONSTMATRIX MeMatrix4 tm,
-                                       MeVector3 minCorner, MeVector3 maxCorner);
+MEPUBLIC void MEAPI McdGeometryGetAABB(McdGeometryID geometry, MECONSTMATRIX MeMatrix4 tm, MeVector3 minCorner,
+                                       MeVector3 maxCorner);
 
 /* Geometry instances. A model owns one (McdModelGetGeometryInstance); an
  * aggregate's instance has one child per element, in the order the elements
@@ -89,17 +88,15 @@ MEPUBLIC void MEAPI McdGeometryGetAABB(McdGeometryID geometry, MECONSTMATRIX MeM
 MEPUBLIC McdGeometryID MEAPI McdGeometryInstanceGetGeometry(McdGeometryInstanceID instance);
 MEPUBLIC int MEAPI McdGeometryInstanceGetChildCount(McdGeometryInstanceID instance);
 /* Child i (0 <= i < child count), or NULL with a warning. */
-MEPUBLIC McdGeometryInstanceID MEAPI McdGeometryInstanceGetChild(McdGeometryInstanceID instance,
-                                                                 int i);
-MEPUBLIC void MEAPI McdGeometryInstanceSetTransformPtr(McdGeometryInstanceID instance,
-                                                       MeMatrix4Ptr tm);
+MEPUBLIC McdGeometryInstanceID MEAPI McdGeometryInstanceGetChild(McdGeometryInstanceID instance, int i);
+MEPUBLIC void MEAPI McdGeometryInstanceSetTransformPtr(McdGeometryInstanceID instance, MeMatrix4Ptr tm);
 /* The transform the instance was last placed at: for a model's top instance
  * the model's TM pointer; for a child the pointer set above, else an
  * internal copy refreshed by McdModelUpdate (never NULL after an update). */
 MEPUBLIC MeMatrix4Ptr MEAPI McdGeometryInstanceGetTransformPtr(McdGeometryInstanceID instance);
 /* The world AABB cached at the last McdModelUpdate. */
-MEPUBLIC void MEAPI McdGeometryInstanceGetAABB(McdGeometryInstanceID instance,
-                                               MeVector3 minCorner, MeVector3 maxCorner);
+MEPUBLIC void MEAPI McdGeometryInstanceGetAABB(McdGeometryInstanceID instance, MeVector3 minCorner,
+                                               MeVector3 maxCorner);
 /* Materials are per instance (so each element of an aggregate may differ);
  * McdModelSetMaterial sets the top instance's. Default 0. */
 MEPUBLIC void MEAPI McdGeometryInstanceSetMaterial(McdGeometryInstanceID instance, int material);

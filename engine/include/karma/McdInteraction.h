@@ -46,17 +46,16 @@ struct McdSafeTimeResult;
 typedef void(MEAPI *McdHelloFnPtr)(McdModelPair *pair);
 typedef int(MEAPI *McdIntersectFnPtr)(McdModelPair *pair, McdIntersectResult *result);
 typedef void(MEAPI *McdGoodbyeFnPtr)(McdModelPair *pair);
-typedef MeBool(MEAPI *McdSafeTimeFnPtr)(McdModelPair *pair, MeReal maxTime,
-                                        struct McdSafeTimeResult *result);
+typedef MeBool(MEAPI *McdSafeTimeFnPtr)(McdModelPair *pair, MeReal maxTime, struct McdSafeTimeResult *result);
 
 typedef struct McdInteractions {
-    McdHelloFnPtr helloFn;
-    McdIntersectFnPtr intersectFn;
-    McdGoodbyeFnPtr goodbyeFn;
-    McdSafeTimeFnPtr safetimeFn;
-    /* Set by the table: 1 in the mirrored entry of a one-way registration
+  McdHelloFnPtr helloFn;
+  McdIntersectFnPtr intersectFn;
+  McdGoodbyeFnPtr goodbyeFn;
+  McdSafeTimeFnPtr safetimeFn;
+  /* Set by the table: 1 in the mirrored entry of a one-way registration
      * (the functions expect the models the other way round). */
-    int swap;
+  int swap;
 } McdInteractions;
 
 /* Registers `fns` (copied) for (type1, type2) and, unless registered on its
@@ -66,8 +65,7 @@ typedef struct McdInteractions {
 MEPUBLIC void MEAPI McdFrameworkSetInteraction(McdFrameworkID framework, int type1, int type2,
                                                const McdInteractions *fns);
 /* The entry for (type1, type2), or NULL when none is registered. */
-MEPUBLIC const McdInteractions *MEAPI McdFrameworkGetInteraction(McdFrameworkID framework,
-                                                                 int type1, int type2);
+MEPUBLIC const McdInteractions *MEAPI McdFrameworkGetInteraction(McdFrameworkID framework, int type1, int type2);
 
 /* Built-in interactions, one family per call. Each registers (A, B) for the
  * types named; nothing happens (no warning) when a type is not registered. */

@@ -24,10 +24,10 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct McdLineSegIntersectResult {
-    McdModelID model;   /* the model hit */
-    MeReal position[3]; /* entry point, world frame */
-    MeReal normal[3];   /* outward unit normal at the entry point (zero when inside) */
-    MeReal distance;    /* from inOrig to position */
+  McdModelID model;   /* the model hit */
+  MeReal position[3]; /* entry point, world frame */
+  MeReal normal[3];   /* outward unit normal at the entry point (zero when inside) */
+  MeReal distance;    /* from inOrig to position */
 } McdLineSegIntersectResult;
 
 /* Filter of McdSpaceGetLineSegFirstEnabledIntersection: the query tests
@@ -37,26 +37,22 @@ typedef int(MEAPI *McdLineSegIntersectEnableCallback)(McdModelID model, void *fi
 /* Intersects the segment with one model: 1 and *outOverlap filled when
  * the segment enters (or starts in) the model, else 0. NULL or non-finite
  * arguments: a warning and 0. */
-MEPUBLIC unsigned int MEAPI McdLineSegIntersect(const McdModelID cm, MeVector3Ptr inOrig,
-                                                MeVector3Ptr inDest,
+MEPUBLIC unsigned int MEAPI McdLineSegIntersect(const McdModelID cm, MeVector3Ptr inOrig, MeVector3Ptr inDest,
                                                 McdLineSegIntersectResult *outOverlap);
 
 /* Space-wide queries (valid only outside a change block: inside one they
  * warn and report nothing). The first hit over every model of the space; */
-MEPUBLIC int MEAPI McdSpaceGetLineSegFirstIntersection(McdSpaceID space, MeVector3Ptr inOrig,
-                                                       MeVector3Ptr inDest,
+MEPUBLIC int MEAPI McdSpaceGetLineSegFirstIntersection(McdSpaceID space, MeVector3Ptr inOrig, MeVector3Ptr inDest,
                                                        McdLineSegIntersectResult *outResult);
 /* every hit, one per model, nearest first, at most inMaxListSize; returns
  * how many were written; */
-MEPUBLIC int MEAPI McdSpaceGetLineSegIntersections(McdSpaceID space, MeVector3Ptr inOrig,
-                                                   MeVector3Ptr inDest,
-                                                   McdLineSegIntersectResult *outList,
-                                                   int inMaxListSize);
+MEPUBLIC int MEAPI McdSpaceGetLineSegIntersections(McdSpaceID space, MeVector3Ptr inOrig, MeVector3Ptr inDest,
+                                                   McdLineSegIntersectResult *outList, int inMaxListSize);
 /* the first hit among the models for which filterCB returns non-zero. */
-MEPUBLIC int MEAPI McdSpaceGetLineSegFirstEnabledIntersection(
-    McdSpaceID space, MeVector3Ptr inOrig, MeVector3Ptr inDest,
-    McdLineSegIntersectEnableCallback filterCB, void *filterData,
-    McdLineSegIntersectResult *outResult);
+MEPUBLIC int MEAPI McdSpaceGetLineSegFirstEnabledIntersection(McdSpaceID space, MeVector3Ptr inOrig,
+                                                              MeVector3Ptr inDest,
+                                                              McdLineSegIntersectEnableCallback filterCB,
+                                                              void *filterData, McdLineSegIntersectResult *outResult);
 
 ME_EXTERN_C_END
 #endif

@@ -65,8 +65,7 @@ MEPUBLIC MeMatrix4Ptr MEAPI McdModelGetTransformPtr(McdModelID model);
  * the transform pointer. All three are kept by pointer and must be distinct
  * and persistent. relTM NULL clears the relative transform (the transform
  * pointer stays globalTM). */
-MEPUBLIC void MEAPI McdModelSetRelativeTransformPtrs(McdModelID model, MeMatrix4Ptr relTM,
-                                                     MeMatrix4Ptr linkTM,
+MEPUBLIC void MEAPI McdModelSetRelativeTransformPtrs(McdModelID model, MeMatrix4Ptr relTM, MeMatrix4Ptr linkTM,
                                                      MeMatrix4Ptr globalTM);
 MEPUBLIC MeMatrix4Ptr MEAPI McdModelGetRelativeTransformPtr(McdModelID model);
 

@@ -26,23 +26,23 @@ struct McdInteractions;
  *                    fewer when the result's own contactMaxCount is lower;
  *                    0: no cap of its own (the result's cap alone). */
 typedef struct McdRequest {
-    int contactMaxCount;
+  int contactMaxCount;
 } McdRequest;
 
 typedef struct McdModelPair {
-    McdModelID model1;
-    McdModelID model2;
-    void *userData;
-    void *responseData;
-    /* private: the framework's */
-    const struct McdInteractions *m_interaction; /* cached by McdHello */
-    void *m_cachedData;                          /* the interaction's own */
-    int m_helloed;                               /* 1 between hello and goodbye */
-    /* private: the space's */
-    void *m_spaceData;
-    int m_spaceIndex;
-    /* private: McdModelPairSetRequestPtr's */
-    McdRequest *m_request;
+  McdModelID model1;
+  McdModelID model2;
+  void *userData;
+  void *responseData;
+  /* private: the framework's */
+  const struct McdInteractions *m_interaction; /* cached by McdHello */
+  void *m_cachedData;                          /* the interaction's own */
+  int m_helloed;                               /* 1 between hello and goodbye */
+  /* private: the space's */
+  void *m_spaceData;
+  int m_spaceIndex;
+  /* private: McdModelPairSetRequestPtr's */
+  McdRequest *m_request;
 } McdModelPair;
 typedef McdModelPair *McdModelPairID;
 
@@ -83,14 +83,14 @@ MEPUBLIC void *MEAPI McdModelPairGetUserData(McdModelPairID pair);
  * stayingFirst = stayingEnd = (size + 1) / 2. A space may move the split
  * while filling as long as the order above holds. */
 typedef struct McdModelPairContainer {
-    McdModelPair **array;
-    int size;
-    int goodbyeFirst;
-    int goodbyeEnd;
-    int helloFirst;
-    int helloEnd;
-    int stayingFirst;
-    int stayingEnd;
+  McdModelPair **array;
+  int size;
+  int goodbyeFirst;
+  int goodbyeEnd;
+  int helloFirst;
+  int helloEnd;
+  int stayingFirst;
+  int stayingEnd;
 } McdModelPairContainer;
 
 /* A container of `size` (> 0) slots, reset; NULL with a warning. */

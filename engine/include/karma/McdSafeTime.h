@@ -24,8 +24,8 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct McdSafeTimeResult {
-    McdModelPair *pair;
-    MeReal time; /* in [0, maxTime] */
+  McdModelPair *pair;
+  MeReal time; /* in [0, maxTime] */
 } McdSafeTimeResult;
 
 MEPUBLIC MeBool MEAPI McdSafeTime(McdModelPair *pair, MeReal maxTime, McdSafeTimeResult *result);

@@ -54,26 +54,24 @@ enum { McdXAxis = 1, McdYAxis = 2, McdZAxis = 4, McdAllAxes = 7 };
 
 /* Position in the current pair events (from McdSpacePairIteratorBegin). */
 typedef struct McdSpacePairIterator {
-    unsigned long long generation;
-    int nextGoodbye, nextHello, nextStaying;
+  unsigned long long generation;
+  int nextGoodbye, nextHello, nextStaying;
 } McdSpacePairIterator;
 
 /* Position in the space's models (from McdSpaceModelIteratorBegin). */
 typedef struct McdSpaceModelIterator {
-    int cursor;
+  int cursor;
 } McdSpaceModelIterator;
 
 /* A symmetric table of "do not pair" flags (opaque). */
 typedef struct McdCullingTable McdCullingTable;
 
 /* Computes a model's world AABB for the space (after McdModelUpdate). */
-typedef void(MEAPI *McdSpaceAABBFnPtr)(McdModelID model, MeVector3 minCorner,
-                                       MeVector3 maxCorner);
+typedef void(MEAPI *McdSpaceAABBFnPtr)(McdModelID model, MeVector3 minCorner, MeVector3 maxCorner);
 
 /* A space of at most objectCount models and pairCount reported pairs
  * (both >= 1), inside a change block. NULL with a warning on bad input. */
-MEPUBLIC McdSpaceID MEAPI McdSpaceAxisSortCreate(McdFrameworkID framework, int axes,
-                                                 int objectCount, int pairCount);
+MEPUBLIC McdSpaceID MEAPI McdSpaceAxisSortCreate(McdFrameworkID framework, int axes, int objectCount, int pairCount);
 /* Destroys the space; its models leave it (not destroyed, no goodbyes). */
 MEPUBLIC void MEAPI McdSpaceDestroy(McdSpaceID space);
 MEPUBLIC McdFrameworkID MEAPI McdSpaceGetFramework(McdSpaceID space);
@@ -86,9 +84,8 @@ MEPUBLIC int MEAPI McdSpaceIsChanging(McdSpaceID space);
  * McdModelUpdate (a model never updated is updated here if it has a
  * transform). A model can be in one space only. 1 on success. */
 MEPUBLIC MeBool MEAPI McdSpaceInsertModel(McdSpaceID space, McdModelID model);
-MEPUBLIC MeBool MEAPI McdSpaceInsertModelWithCulling(McdSpaceID space, McdModelID model,
-                                                     McdCullingTable *table, int cullingIndex,
-                                                     int cullingID);
+MEPUBLIC MeBool MEAPI McdSpaceInsertModelWithCulling(McdSpaceID space, McdModelID model, McdCullingTable *table,
+                                                     int cullingIndex, int cullingID);
 /* Its hello and staying pairs become goodbyes at the next EndChanges. */
 MEPUBLIC MeBool MEAPI McdSpaceRemoveModel(McdModelID model);
 /* McdModelUpdate, then the model's AABB in the space (not on a frozen model). */
@@ -112,12 +109,10 @@ MEPUBLIC MeBool MEAPI McdSpaceDisablePair(McdModelID model1, McdModelID model2);
 MEPUBLIC MeBool MEAPI McdSpacePairIsEnabled(McdModelID model1, McdModelID model2);
 
 MEPUBLIC McdCullingTable *MEAPI McdCullingTableCreate(int size);
-MEPUBLIC McdCullingTable *MEAPI McdCullingTableSet(McdCullingTable *const table, MeU32 a,
-                                                   MeU32 b, MeBool flag);
+MEPUBLIC McdCullingTable *MEAPI McdCullingTableSet(McdCullingTable *const table, MeU32 a, MeU32 b, MeBool flag);
 MEPUBLIC void MEAPI McdCullingTableDestroy(McdCullingTable *table);
 /* table NULL clears the model's culling parameters. */
-MEPUBLIC void MEAPI McdSpaceSetModelCullingParameters(McdSpaceID space, McdModelID model,
-                                                      McdCullingTable *table,
+MEPUBLIC void MEAPI McdSpaceSetModelCullingParameters(McdSpaceID space, McdModelID model, McdCullingTable *table,
                                                       int cullingIndex, int cullingID);
 
 /* Brings the sorted axes up to date now (EndChanges does it anyway). */
@@ -128,16 +123,13 @@ MEPUBLIC void MEAPI McdSpaceBuild(McdSpaceID space);
  * iterator" (overflow). Goodbyes come first. GetTransitions leaves out
  * the staying pairs. */
 MEPUBLIC void MEAPI McdSpacePairIteratorBegin(McdSpaceID space, McdSpacePairIterator *iter);
-MEPUBLIC int MEAPI McdSpaceGetPairs(McdSpaceID space, McdSpacePairIterator *iter,
-                                    McdModelPairContainer *pairs);
-MEPUBLIC int MEAPI McdSpaceGetTransitions(McdSpaceID space, McdSpacePairIterator *iter,
-                                          McdModelPairContainer *pairs);
+MEPUBLIC int MEAPI McdSpaceGetPairs(McdSpaceID space, McdSpacePairIterator *iter, McdModelPairContainer *pairs);
+MEPUBLIC int MEAPI McdSpaceGetTransitions(McdSpaceID space, McdSpacePairIterator *iter, McdModelPairContainer *pairs);
 
 MEPUBLIC int MEAPI McdSpaceGetModelCount(McdSpaceID space);
 MEPUBLIC void MEAPI McdSpaceModelIteratorBegin(McdSpaceID space, McdSpaceModelIterator *iter);
 /* The next model in *model; 0 (model NULL) at the end. */
-MEPUBLIC MeBool MEAPI McdSpaceGetModel(McdSpaceID space, McdSpaceModelIterator *iter,
-                                       McdModelID *model);
+MEPUBLIC MeBool MEAPI McdSpaceGetModel(McdSpaceID space, McdSpaceModelIterator *iter, McdModelID *model);
 
 MEPUBLIC void MEAPI McdSpaceSetUserData(McdSpaceID space, void *data);
 MEPUBLIC void *MEAPI McdSpaceGetUserData(McdSpaceID space);

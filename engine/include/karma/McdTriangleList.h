@@ -32,61 +32,57 @@ ME_EXTERN_C_BEGIN
 struct McdModelPair;
 
 typedef enum McdTriangleFlags {
-    /* Use the normal of least penetration (the direction that separates
+  /* Use the normal of least penetration (the direction that separates
      * the object from the triangle with the shortest move); when clear, the
      * triangle's face normal. */
-    kMcdTriangleUseSmallestPenetration = 1,
-    /* Two-sided triangle. When clear, a contact normal pointing against the
+  kMcdTriangleUseSmallestPenetration = 1,
+  /* Two-sided triangle. When clear, a contact normal pointing against the
      * face normal is reversed. */
-    kMcdTriangleTwoSided = 2,
-    /* Sharp edges: contacts are made where the object meets the edge
+  kMcdTriangleTwoSided = 2,
+  /* Sharp edges: contacts are made where the object meets the edge
      * v1-v0 / v2-v1 / v0-v2. Clear them for edges inside a smooth surface. */
-    kMcdTriangleUseEdge0 = 4,
-    kMcdTriangleUseEdge1 = 8,
-    kMcdTriangleUseEdge2 = 16,
-    kMcdTriangleUseEdges = 28,
-    /* All of the above (Karma 1.0 behaviour). */
-    kMcdTriangleStandard = 31
+  kMcdTriangleUseEdge0 = 4,
+  kMcdTriangleUseEdge1 = 8,
+  kMcdTriangleUseEdge2 = 16,
+  kMcdTriangleUseEdges = 28,
+  /* All of the above (Karma 1.0 behaviour). */
+  kMcdTriangleStandard = 31
 } McdTriangleFlags;
 
 typedef struct McdUserTriangle {
-    MeVector3 *vertices[3];
-    MeVector3 *normal;
-    union {
-        void *ptr;
-        int tag;
-    } triangleData;
-    int flags; /* McdTriangleFlags */
+  MeVector3 *vertices[3];
+  MeVector3 *normal;
+  union {
+    void *ptr;
+    int tag;
+  } triangleData;
+  int flags; /* McdTriangleFlags */
 } McdUserTriangle;
 
-typedef int(MEAPI *McdTriangleListFnPtr)(struct McdModelPair *modelTriListPair,
-                                         McdUserTriangle *triangles, MeVector3 pos,
-                                         MeReal radius, int maxTriangles);
+typedef int(MEAPI *McdTriangleListFnPtr)(struct McdModelPair *modelTriListPair, McdUserTriangle *triangles,
+                                         MeVector3 pos, MeReal radius, int maxTriangles);
 
 typedef struct McdTriangleList {
-    McdGeometry m_g;              /* private */
-    MeVector3 boxMin;             /* bounding box, triangle list's frame */
-    MeVector3 boxMax;
-    int triangleMaxCount;         /* most triangles one callback may return */
-    void *userData;               /* user geometry representation */
-    McdTriangleListFnPtr triangleListGenerator;
-    McdUserTriangle *list;        /* private scratch of m_listCapacity */
-    int m_listCapacity;
+  McdGeometry m_g;  /* private */
+  MeVector3 boxMin; /* bounding box, triangle list's frame */
+  MeVector3 boxMax;
+  int triangleMaxCount; /* most triangles one callback may return */
+  void *userData;       /* user geometry representation */
+  McdTriangleListFnPtr triangleListGenerator;
+  McdUserTriangle *list; /* private scratch of m_listCapacity */
+  int m_listCapacity;
 } McdTriangleList;
 typedef McdGeometryID McdTriangleListID;
 
 /* A triangle list bounded by [min, max] (min <= max componentwise, finite)
  * with room for triangleMaxCount (> 0) triangles per query and the
  * generator f (not NULL); NULL with a warning on bad input. */
-MEPUBLIC McdTriangleListID MEAPI McdTriangleListCreate(McdFrameworkID framework, MeVector3 min,
-                                                       MeVector3 max, int triangleMaxCount,
-                                                       McdTriangleListFnPtr f);
+MEPUBLIC McdTriangleListID MEAPI McdTriangleListCreate(McdFrameworkID framework, MeVector3 min, MeVector3 max,
+                                                       int triangleMaxCount, McdTriangleListFnPtr f);
 MEPUBLIC void MEAPI McdTriangleListSetMaxTriangles(McdTriangleListID g, int max);
 MEPUBLIC int MEAPI McdTriangleListGetMaxTriangles(McdTriangleListID g);
-MEPUBLIC void MEAPI McdTriangleListSetBoundingBox(McdTriangleListID g, MeVector3 min,
-                                                  MeVector3 max);
-MEPUBLIC void MEAPI McdTriangleListGetBoundingBox(McdTriangleListID g, MeVector3 min,
-                                                  MeVector3 max);
+MEPUBLIC void MEAPI McdTriangleListSetBoundingBox(McdTriangleListID g, MeVector3 min, MeVector3 max);
+MEPUBLIC void MEAPI McdTriangleListGetBoundingBox(McdTriangleListID g, MeVector3 min, MeVector3 max);
 MEPUBLIC void MEAPI McdTriangleListSetGenerator(McdTriangleListID g, McdTriangleListFnPtr f);
 MEPUBLIC McdTriangleListFnPtr MEAPI McdTriangleListGetGenerator(McdTriangleListID g);
 MEPUBLIC void MEAPI McdTriangleListSetUserData(McdTriangleListID g, void *data);
@@ -98,9 +94,8 @@ MEPUBLIC void *MEAPI McdTriangleListGetUserData(McdTriangleListID g);
  * triangles (clamped to [0, triangleMaxCount], with a warning when the
  * callback broke the limit) and sets *triangles to the list. This is what
  * every nearfield test against a triangle list calls. */
-MEPUBLIC int MEAPI McdTriangleListGetTriangles(McdTriangleListID g, struct McdModelPair *pair,
-                                               MeVector3 pos, MeReal radius,
-                                               McdUserTriangle **triangles);
+MEPUBLIC int MEAPI McdTriangleListGetTriangles(McdTriangleListID g, struct McdModelPair *pair, MeVector3 pos,
+                                               MeReal radius, McdUserTriangle **triangles);
 
 ME_EXTERN_C_END
 #endif /* KARMA_MCDTRIANGLELIST_H */

@@ -30,8 +30,7 @@ MEPUBLIC MeBool MEAPI MdtAngular3RotationIsEnabled(const MdtAngular3ID j);
 /* The axis of the free rotation, world coordinates (normalised; zero or
  * non-finite rejected). It matters only while rotation is enabled; the
  * present relative orientation is what the joint holds. */
-MEPUBLIC void MEAPI MdtAngular3SetAxis(const MdtAngular3ID j, const MeReal x, const MeReal y,
-                                       const MeReal z);
+MEPUBLIC void MEAPI MdtAngular3SetAxis(const MdtAngular3ID j, const MeReal x, const MeReal y, const MeReal z);
 MEPUBLIC void MEAPI MdtAngular3GetAxis(const MdtAngular3ID j, MeVector3 axis);
 /* Spring stiffness (torque per radian) and damping (torque per rad/s) of the
  * held axes; >= 0, MEINFINITY allowed; negative rejected. */

@@ -40,12 +40,11 @@ MEPUBLIC MdtWorldID MEAPI MdtBodyGetWorld(const MdtBodyID body);
 
 /* ---- kinematic state ---------------------------------------------------- */
 
-MEPUBLIC void MEAPI MdtBodySetPosition(const MdtBodyID body, const MeReal x, const MeReal y,
-                                       const MeReal z);
+MEPUBLIC void MEAPI MdtBodySetPosition(const MdtBodyID body, const MeReal x, const MeReal y, const MeReal z);
 MEPUBLIC void MEAPI MdtBodyGetPosition(const MdtBodyID body, MeVector3 position);
 /* Normalised on the way in; a zero or non-finite quaternion is rejected. */
-MEPUBLIC void MEAPI MdtBodySetQuaternion(const MdtBodyID body, const MeReal qw, const MeReal qx,
-                                         const MeReal qy, const MeReal qz);
+MEPUBLIC void MEAPI MdtBodySetQuaternion(const MdtBodyID body, const MeReal qw, const MeReal qx, const MeReal qy,
+                                         const MeReal qz);
 MEPUBLIC void MEAPI MdtBodyGetQuaternion(const MdtBodyID body, MeVector4 q);
 /* R: rows are the body axes in world coordinates. It is converted to a
  * quaternion (so a slightly non-orthonormal R is cleaned up); a matrix that
@@ -58,12 +57,10 @@ MEPUBLIC void MEAPI MdtBodyGetTransform(const MdtBodyID body, MeMatrix4 tm);
  * date by every step and every change of position or orientation. Read only. */
 MEPUBLIC MeMatrix4Ptr MEAPI MdtBodyGetTransformPtr(const MdtBodyID body);
 
-MEPUBLIC void MEAPI MdtBodySetLinearVelocity(const MdtBodyID body, const MeReal dx,
-                                             const MeReal dy, const MeReal dz);
+MEPUBLIC void MEAPI MdtBodySetLinearVelocity(const MdtBodyID body, const MeReal dx, const MeReal dy, const MeReal dz);
 MEPUBLIC void MEAPI MdtBodyGetLinearVelocity(const MdtBodyID body, MeVector3 v);
 /* World coordinates (rad/s). */
-MEPUBLIC void MEAPI MdtBodySetAngularVelocity(const MdtBodyID body, const MeReal wx,
-                                              const MeReal wy, const MeReal wz);
+MEPUBLIC void MEAPI MdtBodySetAngularVelocity(const MdtBodyID body, const MeReal wx, const MeReal wy, const MeReal wz);
 MEPUBLIC void MEAPI MdtBodyGetAngularVelocity(const MdtBodyID body, MeVector3 w);
 /* Change of velocity over the last step divided by its length (zero before
  * the first step the body takes part in). */
@@ -88,11 +85,9 @@ MEPUBLIC void MEAPI MdtBodyGetInertiaTensor(const MdtBodyID body, MeMatrix3 I);
  * this transform. Linear velocity is the centre of mass's; MdtBodyAddForce
  * acts through the centre of mass, and lever arms (AtPosition, joints,
  * contacts) are measured from it. */
-MEPUBLIC void MEAPI MdtBodySetCenterOfMassRelativeTransform(const MdtBodyID body,
-                                                          MECONSTMATRIX MeMatrix4 tm);
+MEPUBLIC void MEAPI MdtBodySetCenterOfMassRelativeTransform(const MdtBodyID body, MECONSTMATRIX MeMatrix4 tm);
 MEPUBLIC void MEAPI MdtBodyGetCenterOfMassRelativeTransform(const MdtBodyID body, MeMatrix4 tm);
-MEPUBLIC void MEAPI MdtBodySetCenterOfMassRelativePosition(const MdtBodyID body,
-                                                         const MeVector3 pos);
+MEPUBLIC void MEAPI MdtBodySetCenterOfMassRelativePosition(const MdtBodyID body, const MeVector3 pos);
 MEPUBLIC void MEAPI MdtBodyGetCenterOfMassRelativePosition(const MdtBodyID body, MeVector3 pos);
 /* World position of the centre of mass. */
 MEPUBLIC void MEAPI MdtBodyGetCenterOfMassPosition(const MdtBodyID body, MeVector3 pos);
@@ -108,8 +103,7 @@ MEPUBLIC MeReal MEAPI MdtBodyGetAngularVelocityDamping(const MdtBodyID body);
  * turns the body separately about this axis and about the rest of its
  * angular velocity, which keeps small off-axis turns of fast spinners (car
  * wheels) accurate. Setting an axis puts it in use; a zero axis is rejected. */
-MEPUBLIC void MEAPI MdtBodySetFastSpinAxis(const MdtBodyID body, const MeReal x, const MeReal y,
-                                           const MeReal z);
+MEPUBLIC void MEAPI MdtBodySetFastSpinAxis(const MdtBodyID body, const MeReal x, const MeReal y, const MeReal z);
 MEPUBLIC void MEAPI MdtBodyGetFastSpinAxis(const MdtBodyID body, MeVector3 axis);
 MEPUBLIC void MEAPI MdtBodyDisableFastSpinAxis(const MdtBodyID body);
 MEPUBLIC MeBool MEAPI MdtBodyIsFastSpinAxisEnabled(const MdtBodyID body);
@@ -124,21 +118,15 @@ MEPUBLIC MeI32 MEAPI MdtBodyGetSortKey(const MdtBodyID body);
 
 /* ---- forces, torques, impulses (world coordinates) ----------------------- */
 
-MEPUBLIC void MEAPI MdtBodyAddForce(const MdtBodyID body, const MeReal fx, const MeReal fy,
-                                    const MeReal fz);
-MEPUBLIC void MEAPI MdtBodyAddTorque(const MdtBodyID body, const MeReal tx, const MeReal ty,
-                                     const MeReal tz);
+MEPUBLIC void MEAPI MdtBodyAddForce(const MdtBodyID body, const MeReal fx, const MeReal fy, const MeReal fz);
+MEPUBLIC void MEAPI MdtBodyAddTorque(const MdtBodyID body, const MeReal tx, const MeReal ty, const MeReal tz);
 /* Force applied at world point p: adds F and the torque (p - position) x F. */
-MEPUBLIC void MEAPI MdtBodyAddForceAtPosition(const MdtBodyID body, const MeReal fx,
-                                              const MeReal fy, const MeReal fz, const MeReal px,
-                                              const MeReal py, const MeReal pz);
-MEPUBLIC void MEAPI MdtBodyAddImpulse(const MdtBodyID body, const MeReal jx, const MeReal jy,
-                                      const MeReal jz);
+MEPUBLIC void MEAPI MdtBodyAddForceAtPosition(const MdtBodyID body, const MeReal fx, const MeReal fy, const MeReal fz,
+                                              const MeReal px, const MeReal py, const MeReal pz);
+MEPUBLIC void MEAPI MdtBodyAddImpulse(const MdtBodyID body, const MeReal jx, const MeReal jy, const MeReal jz);
 /* Impulse at world point p: adds J and the angular impulse (p - position) x J. */
-MEPUBLIC void MEAPI MdtBodyAddImpulseAtPosition(const MdtBodyID body, const MeReal jx,
-                                                const MeReal jy, const MeReal jz,
-                                                const MeReal px, const MeReal py,
-                                                const MeReal pz);
+MEPUBLIC void MEAPI MdtBodyAddImpulseAtPosition(const MdtBodyID body, const MeReal jx, const MeReal jy, const MeReal jz,
+                                                const MeReal px, const MeReal py, const MeReal pz);
 /* The accumulated force / torque / linear impulse / angular impulse. */
 MEPUBLIC void MEAPI MdtBodyGetForce(const MdtBodyID body, MeVector3 f);
 MEPUBLIC void MEAPI MdtBodyGetTorque(const MdtBodyID body, MeVector3 t);

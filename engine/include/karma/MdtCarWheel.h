@@ -57,9 +57,8 @@ MDT_CONSTRAINT_POSITION_API(CarWheel, MdtCarWheelID)
 
 /* Both axes in world coordinates; they must be perpendicular (cosine below
  * 1e-3) and non-zero. The present steering turn becomes angle 0. */
-MEPUBLIC void MEAPI MdtCarWheelSetSteeringAndHingeAxes(const MdtCarWheelID joint,
-                                                       const MeReal xSteer, const MeReal ySteer,
-                                                       const MeReal zSteer, const MeReal xHinge,
+MEPUBLIC void MEAPI MdtCarWheelSetSteeringAndHingeAxes(const MdtCarWheelID joint, const MeReal xSteer,
+                                                       const MeReal ySteer, const MeReal zSteer, const MeReal xHinge,
                                                        const MeReal yHinge, const MeReal zHinge);
 /* World coordinates, as they are now (steering: the chassis's; hinge: the
  * wheel's). */
@@ -72,13 +71,11 @@ MEPUBLIC MeReal MEAPI MdtCarWheelGetSteeringAngle(const MdtCarWheelID joint);
 MEPUBLIC MeReal MEAPI MdtCarWheelGetSteeringAngleRate(const MdtCarWheelID joint);
 
 /* forceLimit >= 0 and finite; 0 switches the motor off. */
-MEPUBLIC void MEAPI MdtCarWheelSetHingeLimitedForceMotor(const MdtCarWheelID joint,
-                                                         const MeReal desiredVelocity,
+MEPUBLIC void MEAPI MdtCarWheelSetHingeLimitedForceMotor(const MdtCarWheelID joint, const MeReal desiredVelocity,
                                                          const MeReal forceLimit);
 MEPUBLIC MeReal MEAPI MdtCarWheelGetHingeMotorDesiredVelocity(const MdtCarWheelID joint);
 MEPUBLIC MeReal MEAPI MdtCarWheelGetHingeMotorMaxForce(const MdtCarWheelID joint);
-MEPUBLIC void MEAPI MdtCarWheelSetSteeringLimitedForceMotor(const MdtCarWheelID joint,
-                                                            const MeReal desiredVelocity,
+MEPUBLIC void MEAPI MdtCarWheelSetSteeringLimitedForceMotor(const MdtCarWheelID joint, const MeReal desiredVelocity,
                                                             const MeReal forceLimit);
 MEPUBLIC MeReal MEAPI MdtCarWheelGetSteeringMotorDesiredVelocity(const MdtCarWheelID joint);
 MEPUBLIC MeReal MEAPI MdtCarWheelGetSteeringMotorMaxForce(const MdtCarWheelID joint);
@@ -89,9 +86,8 @@ MEPUBLIC MeBool MEAPI MdtCarWheelIsSteeringLocked(const MdtCarWheelID joint);
 
 /* Kp, Kd, limit_softness >= 0 and finite; lolimit <= hilimit (they are
  * swapped otherwise); all finite. Rejected as a whole on bad input. */
-MEPUBLIC void MEAPI MdtCarWheelSetSuspension(const MdtCarWheelID joint, const MeReal Kp,
-                                             const MeReal Kd, const MeReal limit_softness,
-                                             const MeReal lolimit, const MeReal hilimit,
+MEPUBLIC void MEAPI MdtCarWheelSetSuspension(const MdtCarWheelID joint, const MeReal Kp, const MeReal Kd,
+                                             const MeReal limit_softness, const MeReal lolimit, const MeReal hilimit,
                                              const MeReal reference);
 MEPUBLIC MeReal MEAPI MdtCarWheelGetSuspensionHeight(const MdtCarWheelID joint);
 MEPUBLIC MeReal MEAPI MdtCarWheelGetSuspensionKp(const MdtCarWheelID joint);

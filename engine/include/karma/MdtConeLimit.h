@@ -34,14 +34,11 @@ MEPUBLIC void MEAPI MdtConeLimitSetDamping(const MdtConeLimitID j, const MeReal 
 MEPUBLIC MeReal MEAPI MdtConeLimitGetDamping(const MdtConeLimitID j);
 /* The cone axis in world coordinates for both bodies (normalised; zero or
  * non-finite rejected), or for one body only. */
-MEPUBLIC void MEAPI MdtConeLimitSetAxis(const MdtConeLimitID j, const MeReal x, const MeReal y,
-                                        const MeReal z);
-MEPUBLIC void MEAPI MdtConeLimitBodySetAxis(const MdtConeLimitID j,
-                                            const unsigned int bodyindex, const MeReal x,
+MEPUBLIC void MEAPI MdtConeLimitSetAxis(const MdtConeLimitID j, const MeReal x, const MeReal y, const MeReal z);
+MEPUBLIC void MEAPI MdtConeLimitBodySetAxis(const MdtConeLimitID j, const unsigned int bodyindex, const MeReal x,
                                             const MeReal y, const MeReal z);
 /* Body `bodyindex`'s cone axis, world coordinates. */
-MEPUBLIC void MEAPI MdtConeLimitGetAxis(const MdtConeLimitID j, const unsigned int bodyindex,
-                                        MeVector3 axis);
+MEPUBLIC void MEAPI MdtConeLimitGetAxis(const MdtConeLimitID j, const unsigned int bodyindex, MeVector3 axis);
 /* The present angle between the two axes (rad, in [0, pi]). */
 MEPUBLIC MeReal MEAPI MdtConeLimitGetAngle(const MdtConeLimitID j);
 ME_EXTERN_C_END

@@ -36,23 +36,23 @@ typedef struct MdtConstraint *MdtConstraintID;
 
 /* Every kind of constraint. */
 typedef enum MdtConstraintType {
-    MdtConstraintTypeBSJoint,
-    MdtConstraintTypeHinge,
-    MdtConstraintTypePrismatic,
-    MdtConstraintTypeUniversal,
-    MdtConstraintTypeAngular3,
-    MdtConstraintTypeCarWheel,
-    MdtConstraintTypeLinear1,
-    MdtConstraintTypeLinear2,
-    MdtConstraintTypeFixedPath,
-    MdtConstraintTypeRPROJoint,
-    MdtConstraintTypeSkeletal,
-    MdtConstraintTypeSpring6,
-    MdtConstraintTypeSpring,
-    MdtConstraintTypeConeLimit,
-    MdtConstraintTypeContact,
-    MdtConstraintTypeContactGroup,
-    MdtConstraintTypeCount
+  MdtConstraintTypeBSJoint,
+  MdtConstraintTypeHinge,
+  MdtConstraintTypePrismatic,
+  MdtConstraintTypeUniversal,
+  MdtConstraintTypeAngular3,
+  MdtConstraintTypeCarWheel,
+  MdtConstraintTypeLinear1,
+  MdtConstraintTypeLinear2,
+  MdtConstraintTypeFixedPath,
+  MdtConstraintTypeRPROJoint,
+  MdtConstraintTypeSkeletal,
+  MdtConstraintTypeSpring6,
+  MdtConstraintTypeSpring,
+  MdtConstraintTypeConeLimit,
+  MdtConstraintTypeContact,
+  MdtConstraintTypeContactGroup,
+  MdtConstraintTypeCount
 } MdtConstraintType;
 
 MEPUBLIC MdtConstraintType MEAPI MdtConstraintGetType(const MdtConstraintID c);
@@ -68,60 +68,45 @@ MEPUBLIC MeBool MEAPI MdtConstraintIsEnabled(const MdtConstraintID c);
 /* body0 must not be NULL; body1 NULL means the world. The constraint must be
  * disabled. The attachment frames are reset to the bodies' origins and the
  * type's default axes. */
-MEPUBLIC void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0,
-                                           const MdtBodyID body1);
-MEPUBLIC MdtBodyID MEAPI MdtConstraintGetBody(const MdtConstraintID c,
-                                              const unsigned int bodyindex);
+MEPUBLIC void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0, const MdtBodyID body1);
+MEPUBLIC MdtBodyID MEAPI MdtConstraintGetBody(const MdtConstraintID c, const unsigned int bodyindex);
 
 /* The attachment point, in world coordinates, for both bodies at once / for
  * one body. GetPosition reports body 0's point. */
-MEPUBLIC void MEAPI MdtConstraintSetPosition(const MdtConstraintID c, const MeReal x,
-                                             const MeReal y, const MeReal z);
+MEPUBLIC void MEAPI MdtConstraintSetPosition(const MdtConstraintID c, const MeReal x, const MeReal y, const MeReal z);
 MEPUBLIC void MEAPI MdtConstraintGetPosition(const MdtConstraintID c, MeVector3 position);
-MEPUBLIC void MEAPI MdtConstraintBodySetPosition(const MdtConstraintID c,
-                                                 const unsigned int bodyindex, const MeReal x,
+MEPUBLIC void MEAPI MdtConstraintBodySetPosition(const MdtConstraintID c, const unsigned int bodyindex, const MeReal x,
                                                  const MeReal y, const MeReal z);
-MEPUBLIC void MEAPI MdtConstraintBodyGetPosition(const MdtConstraintID c,
-                                                 const unsigned int bodyindex,
+MEPUBLIC void MEAPI MdtConstraintBodyGetPosition(const MdtConstraintID c, const unsigned int bodyindex,
                                                  MeVector3 position);
 
 /* The primary axis (the secondary is made orthogonal to it), or both axes
  * (normalised; they must be orthogonal), in world coordinates, for both
  * bodies. Get* report body 0's axes in world coordinates. */
-MEPUBLIC void MEAPI MdtConstraintSetAxis(const MdtConstraintID c, const MeReal px,
-                                         const MeReal py, const MeReal pz);
-MEPUBLIC void MEAPI MdtConstraintSetAxes(const MdtConstraintID c, const MeReal px,
-                                         const MeReal py, const MeReal pz, const MeReal ox,
-                                         const MeReal oy, const MeReal oz);
+MEPUBLIC void MEAPI MdtConstraintSetAxis(const MdtConstraintID c, const MeReal px, const MeReal py, const MeReal pz);
+MEPUBLIC void MEAPI MdtConstraintSetAxes(const MdtConstraintID c, const MeReal px, const MeReal py, const MeReal pz,
+                                         const MeReal ox, const MeReal oy, const MeReal oz);
 MEPUBLIC void MEAPI MdtConstraintGetAxis(const MdtConstraintID c, MeVector3 axis);
-MEPUBLIC void MEAPI MdtConstraintGetAxes(const MdtConstraintID c, MeVector3 primary,
-                                         MeVector3 ortho);
-MEPUBLIC void MEAPI MdtConstraintBodySetAxes(const MdtConstraintID c,
-                                             const unsigned int bodyindex, const MeReal px,
-                                             const MeReal py, const MeReal pz, const MeReal ox,
-                                             const MeReal oy, const MeReal oz);
-MEPUBLIC void MEAPI MdtConstraintBodyGetAxes(const MdtConstraintID c,
-                                             const unsigned int bodyindex, MeVector3 primary,
+MEPUBLIC void MEAPI MdtConstraintGetAxes(const MdtConstraintID c, MeVector3 primary, MeVector3 ortho);
+MEPUBLIC void MEAPI MdtConstraintBodySetAxes(const MdtConstraintID c, const unsigned int bodyindex, const MeReal px,
+                                             const MeReal py, const MeReal pz, const MeReal ox, const MeReal oy,
+                                             const MeReal oz);
+MEPUBLIC void MEAPI MdtConstraintBodyGetAxes(const MdtConstraintID c, const unsigned int bodyindex, MeVector3 primary,
                                              MeVector3 ortho);
 /* The guide's older, deprecated names of the three functions above (the
  * same functions): MdtConstraintSetBothAxis (sic) is MdtConstraintSetAxes,
  * MdtConstraintGetBothAxes is MdtConstraintGetAxes, MdtConstraintBodyGetBothAxes
  * is MdtConstraintBodyGetAxes. */
-MEPUBLIC void MEAPI MdtConstraintSetBothAxis(const MdtConstraintID c, const MeReal px,
-                                             const MeReal py, const MeReal pz, const MeReal ox,
-                                             const MeReal oy, const MeReal oz);
-MEPUBLIC void MEAPI MdtConstraintGetBothAxes(const MdtConstraintID c, MeVector3 primary,
-                                             MeVector3 ortho);
-MEPUBLIC void MEAPI MdtConstraintBodyGetBothAxes(const MdtConstraintID c,
-                                                 const unsigned int bodyindex,
+MEPUBLIC void MEAPI MdtConstraintSetBothAxis(const MdtConstraintID c, const MeReal px, const MeReal py, const MeReal pz,
+                                             const MeReal ox, const MeReal oy, const MeReal oz);
+MEPUBLIC void MEAPI MdtConstraintGetBothAxes(const MdtConstraintID c, MeVector3 primary, MeVector3 ortho);
+MEPUBLIC void MEAPI MdtConstraintBodyGetBothAxes(const MdtConstraintID c, const unsigned int bodyindex,
                                                  MeVector3 primary, MeVector3 ortho);
 
 /* Force and torque this constraint applied to body `bodyindex` over the last
  * step, world frame (zero before its first step). */
-MEPUBLIC void MEAPI MdtConstraintGetForce(const MdtConstraintID c, const unsigned int bodyindex,
-                                          MeVector3 force);
-MEPUBLIC void MEAPI MdtConstraintGetTorque(const MdtConstraintID c,
-                                           const unsigned int bodyindex, MeVector3 torque);
+MEPUBLIC void MEAPI MdtConstraintGetForce(const MdtConstraintID c, const unsigned int bodyindex, MeVector3 force);
+MEPUBLIC void MEAPI MdtConstraintGetTorque(const MdtConstraintID c, const unsigned int bodyindex, MeVector3 torque);
 
 MEPUBLIC MdtWorldID MEAPI MdtConstraintGetWorld(const MdtConstraintID c);
 MEPUBLIC void MEAPI MdtConstraintSetUserData(const MdtConstraintID c, void *data);
@@ -141,66 +126,51 @@ ME_EXTERN_C_END
  * GetTorque, GetWorld, Set/GetUserData, Set/GetSortKey. Each type's header
  * also declares Mdt<Prefix>Create, Reset, QuaConstraint and
  * MdtConstraintDCast<Prefix> as real functions. */
-#define MDT_CONSTRAINT_COMMON_API(P, ID)                                                     \
-    static inline void Mdt##P##Destroy(const ID j) {                                         \
-        MdtConstraintDestroy(Mdt##P##QuaConstraint(j));                                      \
-    }                                                                                        \
-    static inline void Mdt##P##Enable(const ID j) {                                          \
-        MdtConstraintEnable(Mdt##P##QuaConstraint(j));                                       \
-    }                                                                                        \
-    static inline void Mdt##P##Disable(const ID j) {                                         \
-        MdtConstraintDisable(Mdt##P##QuaConstraint(j));                                      \
-    }                                                                                        \
-    static inline MeBool Mdt##P##IsEnabled(const ID j) {                                     \
-        return MdtConstraintIsEnabled(Mdt##P##QuaConstraint(j));                             \
-    }                                                                                        \
-    static inline void Mdt##P##SetBodies(const ID j, const MdtBodyID b0, const MdtBodyID b1) { \
-        MdtConstraintSetBodies(Mdt##P##QuaConstraint(j), b0, b1);                            \
-    }                                                                                        \
-    static inline MdtBodyID Mdt##P##GetBody(const ID j, const unsigned int i) {              \
-        return MdtConstraintGetBody(Mdt##P##QuaConstraint(j), i);                            \
-    }                                                                                        \
-    static inline void Mdt##P##GetForce(const ID j, const unsigned int i, MeVector3 f) {     \
-        MdtConstraintGetForce(Mdt##P##QuaConstraint(j), i, f);                               \
-    }                                                                                        \
-    static inline void Mdt##P##GetTorque(const ID j, const unsigned int i, MeVector3 t) {    \
-        MdtConstraintGetTorque(Mdt##P##QuaConstraint(j), i, t);                              \
-    }                                                                                        \
-    static inline MdtWorldID Mdt##P##GetWorld(const ID j) {                                  \
-        return MdtConstraintGetWorld(Mdt##P##QuaConstraint(j));                              \
-    }                                                                                        \
-    static inline void Mdt##P##SetUserData(const ID j, void *d) {                            \
-        MdtConstraintSetUserData(Mdt##P##QuaConstraint(j), d);                               \
-    }                                                                                        \
-    static inline void *Mdt##P##GetUserData(const ID j) {                                    \
-        return MdtConstraintGetUserData(Mdt##P##QuaConstraint(j));                           \
-    }                                                                                        \
-    static inline void Mdt##P##SetSortKey(const ID j, const MeI32 k) {                       \
-        MdtConstraintSetSortKey(Mdt##P##QuaConstraint(j), k);                                \
-    }                                                                                        \
-    static inline MeI32 Mdt##P##GetSortKey(const ID j) {                                     \
-        return MdtConstraintGetSortKey(Mdt##P##QuaConstraint(j));                            \
-    }
+#define MDT_CONSTRAINT_COMMON_API(P, ID)                                                                             \
+  static inline void Mdt##P##Destroy(const ID j) { MdtConstraintDestroy(Mdt##P##QuaConstraint(j)); }                 \
+  static inline void Mdt##P##Enable(const ID j) { MdtConstraintEnable(Mdt##P##QuaConstraint(j)); }                   \
+  static inline void Mdt##P##Disable(const ID j) { MdtConstraintDisable(Mdt##P##QuaConstraint(j)); }                 \
+  static inline MeBool Mdt##P##IsEnabled(const ID j) { return MdtConstraintIsEnabled(Mdt##P##QuaConstraint(j)); }    \
+  static inline void Mdt##P##SetBodies(const ID j, const MdtBodyID b0, const MdtBodyID b1) {                         \
+    MdtConstraintSetBodies(Mdt##P##QuaConstraint(j), b0, b1);                                                        \
+  }                                                                                                                  \
+  static inline MdtBodyID Mdt##P##GetBody(const ID j, const unsigned int i) {                                        \
+    return MdtConstraintGetBody(Mdt##P##QuaConstraint(j), i);                                                        \
+  }                                                                                                                  \
+  static inline void Mdt##P##GetForce(const ID j, const unsigned int i, MeVector3 f) {                               \
+    MdtConstraintGetForce(Mdt##P##QuaConstraint(j), i, f);                                                           \
+  }                                                                                                                  \
+  static inline void Mdt##P##GetTorque(const ID j, const unsigned int i, MeVector3 t) {                              \
+    MdtConstraintGetTorque(Mdt##P##QuaConstraint(j), i, t);                                                          \
+  }                                                                                                                  \
+  static inline MdtWorldID Mdt##P##GetWorld(const ID j) { return MdtConstraintGetWorld(Mdt##P##QuaConstraint(j)); }  \
+  static inline void Mdt##P##SetUserData(const ID j, void *d) {                                                      \
+    MdtConstraintSetUserData(Mdt##P##QuaConstraint(j), d);                                                           \
+  }                                                                                                                  \
+  static inline void *Mdt##P##GetUserData(const ID j) { return MdtConstraintGetUserData(Mdt##P##QuaConstraint(j)); } \
+  static inline void Mdt##P##SetSortKey(const ID j, const MeI32 k) {                                                 \
+    MdtConstraintSetSortKey(Mdt##P##QuaConstraint(j), k);                                                            \
+  }                                                                                                                  \
+  static inline MeI32 Mdt##P##GetSortKey(const ID j) { return MdtConstraintGetSortKey(Mdt##P##QuaConstraint(j)); }
 
 /* MDT_CONSTRAINT_POSITION_API(Prefix, IDType): Set/GetPosition for the types
  * with one joint position (all but Prismatic, Angular3, Spring, FixedPath,
  * RPRO). */
-#define MDT_CONSTRAINT_POSITION_API(P, ID)                                                   \
-    static inline void Mdt##P##SetPosition(const ID j, const MeReal x, const MeReal y,        \
-                                           const MeReal z) {                                 \
-        MdtConstraintSetPosition(Mdt##P##QuaConstraint(j), x, y, z);                         \
-    }                                                                                        \
-    static inline void Mdt##P##GetPosition(const ID j, MeVector3 p) {                        \
-        MdtConstraintGetPosition(Mdt##P##QuaConstraint(j), p);                               \
-    }
+#define MDT_CONSTRAINT_POSITION_API(P, ID)                                                             \
+  static inline void Mdt##P##SetPosition(const ID j, const MeReal x, const MeReal y, const MeReal z) { \
+    MdtConstraintSetPosition(Mdt##P##QuaConstraint(j), x, y, z);                                       \
+  }                                                                                                    \
+  static inline void Mdt##P##GetPosition(const ID j, MeVector3 p) {                                    \
+    MdtConstraintGetPosition(Mdt##P##QuaConstraint(j), p);                                             \
+  }
 
 /* MDT_CONSTRAINT_TYPE_DECL(Prefix, IDType): the opaque ID and the four real
  * functions of each type. */
-#define MDT_CONSTRAINT_TYPE_DECL(P, ID)                                                      \
-    typedef struct Mdt##P *ID;                                                               \
-    MEPUBLIC ID MEAPI Mdt##P##Create(const MdtWorldID world);                                \
-    MEPUBLIC void MEAPI Mdt##P##Reset(const ID j);                                           \
-    MEPUBLIC MdtConstraintID MEAPI Mdt##P##QuaConstraint(const ID j);                        \
-    MEPUBLIC ID MEAPI MdtConstraintDCast##P(const MdtConstraintID c);
+#define MDT_CONSTRAINT_TYPE_DECL(P, ID)                             \
+  typedef struct Mdt##P *ID;                                        \
+  MEPUBLIC ID MEAPI Mdt##P##Create(const MdtWorldID world);         \
+  MEPUBLIC void MEAPI Mdt##P##Reset(const ID j);                    \
+  MEPUBLIC MdtConstraintID MEAPI Mdt##P##QuaConstraint(const ID j); \
+  MEPUBLIC ID MEAPI MdtConstraintDCast##P(const MdtConstraintID c);
 
 #endif /* KARMA_MDTCONSTRAINT_H */

@@ -34,82 +34,70 @@
 ME_EXTERN_C_BEGIN
 
 typedef enum MdtContactType {
-    MdtContactTypeFrictionZero = 0,
-    MdtContactTypeFriction1D = 1,
-    MdtContactTypeFriction2D = 2
+  MdtContactTypeFrictionZero = 0,
+  MdtContactTypeFriction1D = 1,
+  MdtContactTypeFriction2D = 2
 } MdtContactType;
 
-typedef enum MdtFrictionModel {
-    MdtFrictionModelBox = 0,
-    MdtFrictionModelNormalForce = 1
-} MdtFrictionModel;
+typedef enum MdtFrictionModel { MdtFrictionModelBox = 0, MdtFrictionModelNormalForce = 1 } MdtFrictionModel;
 
 typedef enum MdtContactOption {
-    MdtContactOptionBounce = 1,
-    MdtContactOptionSoft = 2,
-    MdtContactOptionAdhesive = 4,
-    MdtContactOptionSlip1 = 8,
-    MdtContactOptionSlip2 = 16,
-    MdtContactOptionSlide1 = 32,
-    MdtContactOptionSlide2 = 64
+  MdtContactOptionBounce = 1,
+  MdtContactOptionSoft = 2,
+  MdtContactOptionAdhesive = 4,
+  MdtContactOptionSlip1 = 8,
+  MdtContactOptionSlip2 = 16,
+  MdtContactOptionSlide1 = 32,
+  MdtContactOptionSlide2 = 64
 } MdtContactOption;
 
 typedef struct MdtContactParams {
-    MdtContactType type;
-    MdtFrictionModel model1;
-    MdtFrictionModel model2;
-    int options;
-    MeReal frictionCoefficient1;
-    MeReal frictionCoefficient2;
-    MeReal restitution;
-    MeReal velThreshold;
-    MeReal softness;
-    MeReal max_adhesive_force;
-    MeReal friction1;
-    MeReal friction2;
-    MeReal slip1;
-    MeReal slip2;
-    MeReal slide1;
-    MeReal slide2;
+  MdtContactType type;
+  MdtFrictionModel model1;
+  MdtFrictionModel model2;
+  int options;
+  MeReal frictionCoefficient1;
+  MeReal frictionCoefficient2;
+  MeReal restitution;
+  MeReal velThreshold;
+  MeReal softness;
+  MeReal max_adhesive_force;
+  MeReal friction1;
+  MeReal friction2;
+  MeReal slip1;
+  MeReal slip2;
+  MeReal slide1;
+  MeReal slide2;
 } MdtContactParams;
 typedef MdtContactParams *MdtContactParamsID;
 
 MEPUBLIC void MEAPI MdtContactParamsReset(const MdtContactParamsID p);
 MEPUBLIC void MEAPI MdtContactParamsSetType(const MdtContactParamsID p, const MdtContactType t);
 MEPUBLIC MdtContactType MEAPI MdtContactParamsGetType(const MdtContactParamsID p);
-MEPUBLIC void MEAPI MdtContactParamsSetPrimaryFrictionModel(const MdtContactParamsID p,
-                                                            const MdtFrictionModel m);
-MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFrictionModel(const MdtContactParamsID p,
-                                                              const MdtFrictionModel m);
+MEPUBLIC void MEAPI MdtContactParamsSetPrimaryFrictionModel(const MdtContactParamsID p, const MdtFrictionModel m);
+MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFrictionModel(const MdtContactParamsID p, const MdtFrictionModel m);
 MEPUBLIC MdtFrictionModel MEAPI MdtContactParamsGetPrimaryFrictionModel(const MdtContactParamsID p);
-MEPUBLIC MdtFrictionModel MEAPI MdtContactParamsGetSecondaryFrictionModel(
-    const MdtContactParamsID p);
+MEPUBLIC MdtFrictionModel MEAPI MdtContactParamsGetSecondaryFrictionModel(const MdtContactParamsID p);
 /* Box friction limits (>= 0), both / primary / secondary. */
 MEPUBLIC void MEAPI MdtContactParamsSetFriction(const MdtContactParamsID p, const MeReal f);
 MEPUBLIC void MEAPI MdtContactParamsSetPrimaryFriction(const MdtContactParamsID p, const MeReal f);
-MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFriction(const MdtContactParamsID p,
-                                                         const MeReal f);
+MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFriction(const MdtContactParamsID p, const MeReal f);
 MEPUBLIC MeReal MEAPI MdtContactParamsGetPrimaryFriction(const MdtContactParamsID p);
 MEPUBLIC MeReal MEAPI MdtContactParamsGetSecondaryFriction(const MdtContactParamsID p);
 /* Normal-force friction coefficients (>= 0), both / primary / secondary. */
-MEPUBLIC void MEAPI MdtContactParamsSetFrictionCoefficient(const MdtContactParamsID p,
-                                                          const MeReal mu);
-MEPUBLIC void MEAPI MdtContactParamsSetPrimaryFrictionCoefficient(const MdtContactParamsID p,
-                                                                 const MeReal mu);
-MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFrictionCoefficient(const MdtContactParamsID p,
-                                                                   const MeReal mu);
+MEPUBLIC void MEAPI MdtContactParamsSetFrictionCoefficient(const MdtContactParamsID p, const MeReal mu);
+MEPUBLIC void MEAPI MdtContactParamsSetPrimaryFrictionCoefficient(const MdtContactParamsID p, const MeReal mu);
+MEPUBLIC void MEAPI MdtContactParamsSetSecondaryFrictionCoefficient(const MdtContactParamsID p, const MeReal mu);
 MEPUBLIC MeReal MEAPI MdtContactParamsGetPrimaryFrictionCoefficient(const MdtContactParamsID p);
 MEPUBLIC MeReal MEAPI MdtContactParamsGetSecondaryFrictionCoefficient(const MdtContactParamsID p);
 /* Restitution in [0, 1]; its velocity threshold >= 0. */
 MEPUBLIC void MEAPI MdtContactParamsSetRestitution(const MdtContactParamsID p, const MeReal e);
 MEPUBLIC MeReal MEAPI MdtContactParamsGetRestitution(const MdtContactParamsID p);
-MEPUBLIC void MEAPI MdtContactParamsSetRestitutionThreshold(const MdtContactParamsID p,
-                                                           const MeReal v);
+MEPUBLIC void MEAPI MdtContactParamsSetRestitutionThreshold(const MdtContactParamsID p, const MeReal v);
 MEPUBLIC MeReal MEAPI MdtContactParamsGetRestitutionThreshold(const MdtContactParamsID p);
 MEPUBLIC void MEAPI MdtContactParamsSetSoftness(const MdtContactParamsID p, const MeReal s);
 MEPUBLIC MeReal MEAPI MdtContactParamsGetSoftness(const MdtContactParamsID p);
-MEPUBLIC void MEAPI MdtContactParamsSetMaxAdhesiveForce(const MdtContactParamsID p,
-                                                       const MeReal f);
+MEPUBLIC void MEAPI MdtContactParamsSetMaxAdhesiveForce(const MdtContactParamsID p, const MeReal f);
 MEPUBLIC MeReal MEAPI MdtContactParamsGetMaxAdhesiveForce(const MdtContactParamsID p);
 /* Slip (>= 0), both / primary / secondary. */
 MEPUBLIC void MEAPI MdtContactParamsSetSlip(const MdtContactParamsID p, const MeReal s);
@@ -138,12 +126,10 @@ MDT_CONSTRAINT_POSITION_API(Contact, MdtContactID)
 #define MdtContactInvalidID ((MdtContactID)0)
 
 /* Normalised; a zero or non-finite normal is rejected. */
-MEPUBLIC void MEAPI MdtContactSetNormal(const MdtContactID c, const MeReal x, const MeReal y,
-                                        const MeReal z);
+MEPUBLIC void MEAPI MdtContactSetNormal(const MdtContactID c, const MeReal x, const MeReal y, const MeReal z);
 MEPUBLIC void MEAPI MdtContactGetNormal(const MdtContactID c, MeVector3 normal);
 /* The primary friction direction, made orthogonal to the normal. */
-MEPUBLIC void MEAPI MdtContactSetDirection(const MdtContactID c, const MeReal x, const MeReal y,
-                                           const MeReal z);
+MEPUBLIC void MEAPI MdtContactSetDirection(const MdtContactID c, const MeReal x, const MeReal y, const MeReal z);
 /* The primary direction in use: the one set, or the automatic one. */
 MEPUBLIC void MEAPI MdtContactGetDirection(const MdtContactID c, MeVector3 direction);
 MEPUBLIC void MEAPI MdtContactSetPenetration(const MdtContactID c, const MeReal penetration);
@@ -195,8 +181,7 @@ MEPUBLIC void MEAPI MdtContactGroupAppendContact(const MdtContactGroupID g, cons
  * disabled stand-alone contact). */
 MEPUBLIC void MEAPI MdtContactGroupRemoveContact(const MdtContactGroupID g, const MdtContactID c);
 MEPUBLIC MdtContactID MEAPI MdtContactGroupGetFirstContact(const MdtContactGroupID g);
-MEPUBLIC MdtContactID MEAPI MdtContactGroupGetNextContact(const MdtContactGroupID g,
-                                                          const MdtContactID c);
+MEPUBLIC MdtContactID MEAPI MdtContactGroupGetNextContact(const MdtContactGroupID g, const MdtContactID c);
 MEPUBLIC int MEAPI MdtContactGroupGetCount(const MdtContactGroupID g);
 /* The guide's spelling. */
 #define MdtContactGrouptGetCount MdtContactGroupGetCount

@@ -21,18 +21,14 @@ MDT_CONSTRAINT_TYPE_DECL(FixedPath, MdtFixedPathID)
 MDT_CONSTRAINT_COMMON_API(FixedPath, MdtFixedPathID)
 
 /* Body `bodyindex`'s attachment point, in world coordinates. */
-MEPUBLIC void MEAPI MdtFixedPathSetPosition(const MdtFixedPathID j,
-                                            const unsigned int bodyindex, const MeReal x,
+MEPUBLIC void MEAPI MdtFixedPathSetPosition(const MdtFixedPathID j, const unsigned int bodyindex, const MeReal x,
                                             const MeReal y, const MeReal z);
-MEPUBLIC void MEAPI MdtFixedPathGetPosition(const MdtFixedPathID j,
-                                            const unsigned int bodyindex, MeVector3 position);
+MEPUBLIC void MEAPI MdtFixedPathGetPosition(const MdtFixedPathID j, const unsigned int bodyindex, MeVector3 position);
 /* Velocity of body `bodyindex`'s attachment point relative to that body, in
  * that body's frame (the world frame for the world). */
-MEPUBLIC void MEAPI MdtFixedPathSetVelocity(const MdtFixedPathID j,
-                                            const unsigned int bodyindex, const MeReal x,
+MEPUBLIC void MEAPI MdtFixedPathSetVelocity(const MdtFixedPathID j, const unsigned int bodyindex, const MeReal x,
                                             const MeReal y, const MeReal z);
-MEPUBLIC void MEAPI MdtFixedPathGetVelocity(const MdtFixedPathID j,
-                                            const unsigned int bodyindex, MeVector3 velocity);
+MEPUBLIC void MEAPI MdtFixedPathGetVelocity(const MdtFixedPathID j, const unsigned int bodyindex, MeVector3 velocity);
 ME_EXTERN_C_END
 
 #endif

@@ -16,8 +16,7 @@ MDT_CONSTRAINT_COMMON_API(Hinge, MdtHingeID)
 MDT_CONSTRAINT_POSITION_API(Hinge, MdtHingeID)
 
 /* The axis in world coordinates (normalised; zero is rejected). */
-MEPUBLIC void MEAPI MdtHingeSetAxis(const MdtHingeID j, const MeReal x, const MeReal y,
-                                    const MeReal z);
+MEPUBLIC void MEAPI MdtHingeSetAxis(const MdtHingeID j, const MeReal x, const MeReal y, const MeReal z);
 MEPUBLIC void MEAPI MdtHingeGetAxis(const MdtHingeID j, MeVector3 axis);
 /* The hinge's limit and motor; the pointer stays valid for the joint's life. */
 MEPUBLIC MdtLimitID MEAPI MdtHingeGetLimit(const MdtHingeID j);

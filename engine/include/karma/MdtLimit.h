@@ -32,28 +32,28 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct MdtSingleLimit {
-    MeReal stop;        /* lower (limit[0]) or upper (limit[1]) bound of position */
-    MeReal stiffness;   /* >= 0; spring constant of a soft stop */
-    MeReal damping;     /* >= 0; damping of a soft stop */
-    MeReal restitution; /* in [0, 1]; rebound ratio of a hard stop */
+  MeReal stop;        /* lower (limit[0]) or upper (limit[1]) bound of position */
+  MeReal stiffness;   /* >= 0; spring constant of a soft stop */
+  MeReal damping;     /* >= 0; damping of a soft stop */
+  MeReal restitution; /* in [0, 1]; rebound ratio of a hard stop */
 } MdtSingleLimit;
 typedef MdtSingleLimit *MdtSingleLimitID;
 
 typedef struct MdtLimit {
-    MdtSingleLimit limit[2];      /* [0] lower, [1] upper */
-    MeReal stiffnessThreshold;    /* stiffness above this: hard stop */
-    MeReal motorDesiredVelocity;
-    MeReal motorMaxForce;         /* >= 0 */
-    MeBool limited;               /* stops active */
-    MeBool motorized;             /* motor active */
-    MeBool calculatePosition;     /* keep `position` and `velocity` up to date */
-    MeReal offset;                /* user position = measured + offset */
-    MeReal position;              /* last computed position (user coordinates) */
-    MeReal velocity;              /* last computed rate */
-    /* Bookkeeping for multi-turn angles; not for users. */
-    MeReal rawPrevious;
-    MeReal turns;
-    MeBool rawValid;
+  MdtSingleLimit limit[2];   /* [0] lower, [1] upper */
+  MeReal stiffnessThreshold; /* stiffness above this: hard stop */
+  MeReal motorDesiredVelocity;
+  MeReal motorMaxForce;     /* >= 0 */
+  MeBool limited;           /* stops active */
+  MeBool motorized;         /* motor active */
+  MeBool calculatePosition; /* keep `position` and `velocity` up to date */
+  MeReal offset;            /* user position = measured + offset */
+  MeReal position;          /* last computed position (user coordinates) */
+  MeReal velocity;          /* last computed rate */
+  /* Bookkeeping for multi-turn angles; not for users. */
+  MeReal rawPrevious;
+  MeReal turns;
+  MeBool rawValid;
 } MdtLimit;
 typedef MdtLimit *MdtLimitID;
 
@@ -88,8 +88,7 @@ MEPUBLIC MeReal MEAPI MdtLimitGetStiffnessThreshold(const MdtLimitID limit);
 MEPUBLIC void MEAPI MdtLimitSetStiffnessThreshold(const MdtLimitID limit, const MeReal t);
 
 /* forceLimit >= 0; zero switches the motor off, positive switches it on. */
-MEPUBLIC void MEAPI MdtLimitSetLimitedForceMotor(const MdtLimitID limit,
-                                                 const MeReal desiredVelocity,
+MEPUBLIC void MEAPI MdtLimitSetLimitedForceMotor(const MdtLimitID limit, const MeReal desiredVelocity,
                                                  const MeReal forceLimit);
 MEPUBLIC MeReal MEAPI MdtLimitGetMotorDesiredVelocity(const MdtLimitID limit);
 MEPUBLIC MeReal MEAPI MdtLimitGetMotorMaxForce(const MdtLimitID limit);
@@ -108,9 +107,8 @@ MEPUBLIC MeBool MEAPI MdtLimitPositionIsCalculated(const MdtLimitID limit);
  * motor's desired velocity to maxSpeed * e / gap, clamped to +-maxSpeed
  * (full speed further than `gap` away, slowing down linearly inside it),
  * and its force limit to maxForce. gap > 0. Call it every step. */
-MEPUBLIC void MEAPI MdtLimitController(const MdtLimitID limit, const MeReal desiredPosition,
-                                       const MeReal gap, const MeReal maxSpeed,
-                                       const MeReal maxForce);
+MEPUBLIC void MEAPI MdtLimitController(const MdtLimitID limit, const MeReal desiredPosition, const MeReal gap,
+                                       const MeReal maxSpeed, const MeReal maxForce);
 
 ME_EXTERN_C_END
 

@@ -20,8 +20,7 @@ MDT_CONSTRAINT_POSITION_API(Linear1, MdtLinear1ID)
 
 /* The plane normal in world coordinates (normalised; zero or non-finite
  * rejected). */
-MEPUBLIC void MEAPI MdtLinear1SetAxis(const MdtLinear1ID j, const MeReal x, const MeReal y,
-                                      const MeReal z);
+MEPUBLIC void MEAPI MdtLinear1SetAxis(const MdtLinear1ID j, const MeReal x, const MeReal y, const MeReal z);
 /* The plane normal (fixed in body 1), world coordinates. */
 MEPUBLIC void MEAPI MdtLinear1GetAxis(const MdtLinear1ID j, MeVector3 axis);
 ME_EXTERN_C_END

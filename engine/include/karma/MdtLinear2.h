@@ -19,8 +19,7 @@ MDT_CONSTRAINT_POSITION_API(Linear2, MdtLinear2ID)
 
 /* The line's direction in world coordinates (normalised; zero or non-finite
  * rejected). */
-MEPUBLIC void MEAPI MdtLinear2SetDirection(const MdtLinear2ID j, const MeReal x, const MeReal y,
-                                           const MeReal z);
+MEPUBLIC void MEAPI MdtLinear2SetDirection(const MdtLinear2ID j, const MeReal x, const MeReal y, const MeReal z);
 /* The line's direction (fixed in body 1), world coordinates. */
 MEPUBLIC void MEAPI MdtLinear2GetDirection(const MdtLinear2ID j, MeVector3 direction);
 ME_EXTERN_C_END

@@ -25,8 +25,7 @@ MDT_CONSTRAINT_COMMON_API(Prismatic, MdtPrismaticID)
 
 /* The slide axis in world coordinates (normalised; zero or non-finite is
  * rejected). Also makes the present configuration slide position zero. */
-MEPUBLIC void MEAPI MdtPrismaticSetAxis(const MdtPrismaticID j, const MeReal x, const MeReal y,
-                                        const MeReal z);
+MEPUBLIC void MEAPI MdtPrismaticSetAxis(const MdtPrismaticID j, const MeReal x, const MeReal y, const MeReal z);
 /* The slide axis (body 0's, world coordinates). */
 MEPUBLIC void MEAPI MdtPrismaticGetAxis(const MdtPrismaticID j, MeVector3 axis);
 /* The joint's limit and motor; the pointer stays valid for the joint's life.

@@ -29,37 +29,28 @@ MDT_CONSTRAINT_TYPE_DECL(RPROJoint, MdtRPROJointID)
 MDT_CONSTRAINT_COMMON_API(RPROJoint, MdtRPROJointID)
 
 /* The attachment point of body `bodyindex`, world coordinates. */
-MEPUBLIC void MEAPI MdtRPROJointGetPosition(const MdtRPROJointID joint,
-                                            const unsigned int bodyindex, MeVector3 position);
+MEPUBLIC void MEAPI MdtRPROJointGetPosition(const MdtRPROJointID joint, const unsigned int bodyindex,
+                                            MeVector3 position);
 /* Unit quaternions (w, x, y, z); they are normalised, zero or non-finite is
  * rejected. */
-MEPUBLIC void MEAPI MdtRPROJointSetRelativeQuaternion(const MdtRPROJointID joint,
-                                                      const MeVector4 quaternion);
-MEPUBLIC void MEAPI MdtRPROJointGetRelativeQuaternion(const MdtRPROJointID joint,
-                                                      MeVector4 quaternion);
-MEPUBLIC void MEAPI MdtRPROJointSetRelativeAngularVelocity(MdtRPROJointID joint,
-                                                           MeVector3 velocity);
-MEPUBLIC void MEAPI MdtRPROJointGetRelativeAngularVelocity(const MdtRPROJointID joint,
-                                                           MeVector3 velocity);
+MEPUBLIC void MEAPI MdtRPROJointSetRelativeQuaternion(const MdtRPROJointID joint, const MeVector4 quaternion);
+MEPUBLIC void MEAPI MdtRPROJointGetRelativeQuaternion(const MdtRPROJointID joint, MeVector4 quaternion);
+MEPUBLIC void MEAPI MdtRPROJointSetRelativeAngularVelocity(MdtRPROJointID joint, MeVector3 velocity);
+MEPUBLIC void MEAPI MdtRPROJointGetRelativeAngularVelocity(const MdtRPROJointID joint, MeVector3 velocity);
 /* Attachment frame of body `bodyindex`, in that body's frame. */
-MEPUBLIC void MEAPI MdtRPROJointSetAttachmentPosition(const MdtRPROJointID joint, const MeReal x,
-                                                      const MeReal y, const MeReal z,
-                                                      const unsigned int bodyindex);
-MEPUBLIC void MEAPI MdtRPROJointGetAttachmentPosition(const MdtRPROJointID joint,
-                                                      const unsigned int bodyindex,
+MEPUBLIC void MEAPI MdtRPROJointSetAttachmentPosition(const MdtRPROJointID joint, const MeReal x, const MeReal y,
+                                                      const MeReal z, const unsigned int bodyindex);
+MEPUBLIC void MEAPI MdtRPROJointGetAttachmentPosition(const MdtRPROJointID joint, const unsigned int bodyindex,
                                                       MeVector3 position);
-MEPUBLIC void MEAPI MdtRPROJointSetAttachmentQuaternion(const MdtRPROJointID joint,
-                                                        const MeReal q0, const MeReal q1,
-                                                        const MeReal q2, const MeReal q3,
-                                                        const unsigned int bodyindex);
-MEPUBLIC void MEAPI MdtRPROJointGetAttachmentOrientation(const MdtRPROJointID joint,
-                                                         const unsigned int bodyindex,
+MEPUBLIC void MEAPI MdtRPROJointSetAttachmentQuaternion(const MdtRPROJointID joint, const MeReal q0, const MeReal q1,
+                                                        const MeReal q2, const MeReal q3, const unsigned int bodyindex);
+MEPUBLIC void MEAPI MdtRPROJointGetAttachmentOrientation(const MdtRPROJointID joint, const unsigned int bodyindex,
                                                          MeVector4 quaternion);
 /* Most torque (force) per axis of F0; > 0, MEINFINITY for unbreakable. */
-MEPUBLIC void MEAPI MdtRPROJointSetAngularStrength(const MdtRPROJointID joint, const MeReal sX,
-                                                   const MeReal sY, const MeReal sZ);
-MEPUBLIC void MEAPI MdtRPROJointSetLinearStrength(const MdtRPROJointID joint, const MeReal sX,
-                                                  const MeReal sY, const MeReal sZ);
+MEPUBLIC void MEAPI MdtRPROJointSetAngularStrength(const MdtRPROJointID joint, const MeReal sX, const MeReal sY,
+                                                   const MeReal sZ);
+MEPUBLIC void MEAPI MdtRPROJointSetLinearStrength(const MdtRPROJointID joint, const MeReal sX, const MeReal sY,
+                                                  const MeReal sZ);
 MEPUBLIC void MEAPI MdtRPROJointGetAngularStrength(const MdtRPROJointID joint, MeVector3 s);
 MEPUBLIC void MEAPI MdtRPROJointGetLinearStrength(const MdtRPROJointID joint, MeVector3 s);
 ME_EXTERN_C_END

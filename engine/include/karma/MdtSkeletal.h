@@ -34,17 +34,13 @@ MDT_CONSTRAINT_POSITION_API(Skeletal, MdtSkeletalID)
 /* The cone axis (primary) and the secondary axis, world coordinates, for both
  * bodies: the present relative orientation becomes the reference. They must
  * be non-zero and orthogonal. GetAxes reports body 0's. */
-MEPUBLIC void MEAPI MdtSkeletalSetAxes(const MdtSkeletalID j, const MeReal px, const MeReal py,
-                                       const MeReal pz, const MeReal ox, const MeReal oy,
-                                       const MeReal oz);
-MEPUBLIC void MEAPI MdtSkeletalGetAxes(const MdtSkeletalID j, MeVector3 primary,
-                                       MeVector3 secondary);
+MEPUBLIC void MEAPI MdtSkeletalSetAxes(const MdtSkeletalID j, const MeReal px, const MeReal py, const MeReal pz,
+                                       const MeReal ox, const MeReal oy, const MeReal oz);
+MEPUBLIC void MEAPI MdtSkeletalGetAxes(const MdtSkeletalID j, MeVector3 primary, MeVector3 secondary);
 
 /* Angles in (0, pi] (the twist limit in [0, pi]). */
-MEPUBLIC void MEAPI MdtSkeletalSetConePrimaryLimitAngle(const MdtSkeletalID j,
-                                                        const MeReal theta);
-MEPUBLIC void MEAPI MdtSkeletalSetConeSecondaryLimitAngle(const MdtSkeletalID j,
-                                                          const MeReal theta);
+MEPUBLIC void MEAPI MdtSkeletalSetConePrimaryLimitAngle(const MdtSkeletalID j, const MeReal theta);
+MEPUBLIC void MEAPI MdtSkeletalSetConeSecondaryLimitAngle(const MdtSkeletalID j, const MeReal theta);
 MEPUBLIC void MEAPI MdtSkeletalSetTwistLimitAngle(const MdtSkeletalID j, const MeReal theta);
 MEPUBLIC MeReal MEAPI MdtSkeletalGetConePrimaryLimitAngle(const MdtSkeletalID j);
 MEPUBLIC MeReal MEAPI MdtSkeletalGetConeSecondaryLimitAngle(const MdtSkeletalID j);

@@ -33,10 +33,9 @@ MDT_CONSTRAINT_TYPE_DECL(Spring, MdtSpringID)
 MDT_CONSTRAINT_COMMON_API(Spring, MdtSpringID)
 
 /* The attachment point on body `bodyindex` (0 or 1), world coordinates. */
-MEPUBLIC void MEAPI MdtSpringSetPosition(const MdtSpringID joint, const unsigned int bodyindex,
-                                         const MeReal x, const MeReal y, const MeReal z);
-MEPUBLIC void MEAPI MdtSpringGetPosition(const MdtSpringID joint, MeVector3 position,
-                                         const unsigned int bodyindex);
+MEPUBLIC void MEAPI MdtSpringSetPosition(const MdtSpringID joint, const unsigned int bodyindex, const MeReal x,
+                                         const MeReal y, const MeReal z);
+MEPUBLIC void MEAPI MdtSpringGetPosition(const MdtSpringID joint, MeVector3 position, const unsigned int bodyindex);
 /* The spring's limit; the pointer stays valid for the joint's life.
  * MdtLimitGetPosition reads the length (plus offset) after a step. */
 MEPUBLIC MdtLimitID MEAPI MdtSpringGetLimit(const MdtSpringID joint);

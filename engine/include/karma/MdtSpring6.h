@@ -33,22 +33,16 @@ MDT_CONSTRAINT_COMMON_API(Spring6, MdtSpring6ID)
 MDT_CONSTRAINT_POSITION_API(Spring6, MdtSpring6ID)
 
 /* Both frames' axes in world coordinates (non-zero, orthogonal). */
-MEPUBLIC void MEAPI MdtSpring6SetAxes(const MdtSpring6ID j, const MeReal px, const MeReal py,
-                                      const MeReal pz, const MeReal ox, const MeReal oy,
-                                      const MeReal oz);
+MEPUBLIC void MEAPI MdtSpring6SetAxes(const MdtSpring6ID j, const MeReal px, const MeReal py, const MeReal pz,
+                                      const MeReal ox, const MeReal oy, const MeReal oz);
 /* Body 0's axes, world coordinates. */
-MEPUBLIC void MEAPI MdtSpring6GetAxes(const MdtSpring6ID j, MeVector3 primary,
-                                      MeVector3 secondary);
+MEPUBLIC void MEAPI MdtSpring6GetAxes(const MdtSpring6ID j, MeVector3 primary, MeVector3 secondary);
 /* axis: 0 (primary), 1 (secondary), 2 (their cross product). Stiffness and
  * damping >= 0, MEINFINITY allowed; NaN or negative is rejected. */
-MEPUBLIC void MEAPI MdtSpring6SetLinearStiffness(const MdtSpring6ID j, const unsigned int axis,
-                                                 const MeReal k);
-MEPUBLIC void MEAPI MdtSpring6SetLinearDamping(const MdtSpring6ID j, const unsigned int axis,
-                                               const MeReal c);
-MEPUBLIC void MEAPI MdtSpring6SetAngularStiffness(const MdtSpring6ID j, const unsigned int axis,
-                                                  const MeReal k);
-MEPUBLIC void MEAPI MdtSpring6SetAngularDamping(const MdtSpring6ID j, const unsigned int axis,
-                                                const MeReal c);
+MEPUBLIC void MEAPI MdtSpring6SetLinearStiffness(const MdtSpring6ID j, const unsigned int axis, const MeReal k);
+MEPUBLIC void MEAPI MdtSpring6SetLinearDamping(const MdtSpring6ID j, const unsigned int axis, const MeReal c);
+MEPUBLIC void MEAPI MdtSpring6SetAngularStiffness(const MdtSpring6ID j, const unsigned int axis, const MeReal k);
+MEPUBLIC void MEAPI MdtSpring6SetAngularDamping(const MdtSpring6ID j, const unsigned int axis, const MeReal c);
 MEPUBLIC MeReal MEAPI MdtSpring6GetLinearStiffness(const MdtSpring6ID j, const unsigned int axis);
 MEPUBLIC MeReal MEAPI MdtSpring6GetLinearDamping(const MdtSpring6ID j, const unsigned int axis);
 MEPUBLIC MeReal MEAPI MdtSpring6GetAngularStiffness(const MdtSpring6ID j, const unsigned int axis);

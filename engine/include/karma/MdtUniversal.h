@@ -26,19 +26,18 @@ MDT_CONSTRAINT_POSITION_API(Universal, MdtUniversalID)
  * (normalised; zero or non-finite is rejected). The other axis of that
  * body's frame is adjusted to stay orthogonal. This is the call of the
  * guide's cone-limited universal example. */
-MEPUBLIC void MEAPI MdtUniversalSetAxis(const MdtUniversalID j, const unsigned int bodyindex,
-                                        const MeReal x, const MeReal y, const MeReal z);
+MEPUBLIC void MEAPI MdtUniversalSetAxis(const MdtUniversalID j, const unsigned int bodyindex, const MeReal x,
+                                        const MeReal y, const MeReal z);
 /* The joint axis fixed in body `bodyindex`, world coordinates. */
-MEPUBLIC void MEAPI MdtUniversalGetAxis(const MdtUniversalID j, const unsigned int bodyindex,
-                                        MeVector3 axis);
+MEPUBLIC void MEAPI MdtUniversalGetAxis(const MdtUniversalID j, const unsigned int bodyindex, MeVector3 axis);
 /* Body `bodyindex`'s whole attachment frame, world coordinates: primary and
  * secondary axes, which must be orthogonal. Body 0's joint axis is its
  * primary, body 1's its secondary. */
-MEPUBLIC void MEAPI MdtUniversalSetAxes(const MdtUniversalID j, const unsigned int bodyindex,
-                                        const MeReal px, const MeReal py, const MeReal pz,
-                                        const MeReal ox, const MeReal oy, const MeReal oz);
-MEPUBLIC void MEAPI MdtUniversalGetAxes(const MdtUniversalID j, const unsigned int bodyindex,
-                                        MeVector3 primary, MeVector3 ortho);
+MEPUBLIC void MEAPI MdtUniversalSetAxes(const MdtUniversalID j, const unsigned int bodyindex, const MeReal px,
+                                        const MeReal py, const MeReal pz, const MeReal ox, const MeReal oy,
+                                        const MeReal oz);
+MEPUBLIC void MEAPI MdtUniversalGetAxes(const MdtUniversalID j, const unsigned int bodyindex, MeVector3 primary,
+                                        MeVector3 ortho);
 ME_EXTERN_C_END
 
 #endif

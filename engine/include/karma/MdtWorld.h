@@ -45,62 +45,61 @@ typedef struct MdtBody *MdtBodyID;
  * acceleration below which a body counts as resting; a partition whose
  * bodies have all rested for aliveWindow seconds is disabled. */
 typedef enum MdtKeaMethod {
-    MdtKeaMethodActiveSet, /* exact: Cholesky factorisation, candidate active sets */
-    MdtKeaMethodPGS        /* projected Gauss-Seidel, keaMaxIterations sweeps */
+  MdtKeaMethodActiveSet, /* exact: Cholesky factorisation, candidate active sets */
+  MdtKeaMethodPGS        /* projected Gauss-Seidel, keaMaxIterations sweeps */
 } MdtKeaMethod;
 
 typedef struct MdtWorldParams {
-    MeVector3 gravity;
-    MeReal epsilon;
-    MeReal gamma;
-    MeBool autoDisable;
-    MeReal velocityThreshold;
-    MeReal angularVelocityThreshold;
-    MeReal accelerationThreshold;
-    MeReal angularAccelerationThreshold;
-    MeReal aliveWindow;
-    MeReal minSafeTime;
-    int maxMatrixSize;
-    MdtKeaMethod keaMethod;
-    int keaMaxIterations;
-    MeReal keaTolerance;
-    MeReal geometricStiffness;
-    int keaIterativeRows;     /* see MdtWorldSetKeaIterativeRows; 0 = never */
+  MeVector3 gravity;
+  MeReal epsilon;
+  MeReal gamma;
+  MeBool autoDisable;
+  MeReal velocityThreshold;
+  MeReal angularVelocityThreshold;
+  MeReal accelerationThreshold;
+  MeReal angularAccelerationThreshold;
+  MeReal aliveWindow;
+  MeReal minSafeTime;
+  int maxMatrixSize;
+  MdtKeaMethod keaMethod;
+  int keaMaxIterations;
+  MeReal keaTolerance;
+  MeReal geometricStiffness;
+  int keaIterativeRows; /* see MdtWorldSetKeaIterativeRows; 0 = never */
 } MdtWorldParams;
 
 /* What the last MdtWorldStep did. */
 typedef struct MdtWorldStepStats {
-    int partitions;       /* partitions solved */
-    int sleeping;         /* of those, put to sleep at the end of the step */
-    int bodies;           /* enabled bodies stepped */
-    int constraints;      /* constraints simulated */
-    int rows;             /* constraint rows solved (after capping) */
-    int rowsRemoved;      /* rows removed by matrix capping */
-    int keaIterations;    /* Kea iterations summed over partitions */
-    int keaUnsolved;      /* partitions Kea did not solve to tolerance */
-    MeReal keaResidual;   /* largest Kea residual (impulse units) */
-    int keaSolved;        /* partitions solved to tolerance */
-    int keaFactorizations;/* factorisations of a free block (exact solver) */
-    int keaStaleSolves;   /* linear solves preconditioned by last step's factor */
-    int keaFrictionRounds;/* friction fixed-point rounds beyond the first */
-    int keaCycles;        /* partitions stopped by a detected cycle */
-    int iterativePartitions; /* partitions solved by the iterative solver */
+  int partitions;          /* partitions solved */
+  int sleeping;            /* of those, put to sleep at the end of the step */
+  int bodies;              /* enabled bodies stepped */
+  int constraints;         /* constraints simulated */
+  int rows;                /* constraint rows solved (after capping) */
+  int rowsRemoved;         /* rows removed by matrix capping */
+  int keaIterations;       /* Kea iterations summed over partitions */
+  int keaUnsolved;         /* partitions Kea did not solve to tolerance */
+  MeReal keaResidual;      /* largest Kea residual (impulse units) */
+  int keaSolved;           /* partitions solved to tolerance */
+  int keaFactorizations;   /* factorisations of a free block (exact solver) */
+  int keaStaleSolves;      /* linear solves preconditioned by last step's factor */
+  int keaFrictionRounds;   /* friction fixed-point rounds beyond the first */
+  int keaCycles;           /* partitions stopped by a detected cycle */
+  int iterativePartitions; /* partitions solved by the iterative solver */
 } MdtWorldStepStats;
 
 /* The world's private state (body pool, step order, counters). */
 struct MdtWorldPrivate;
 
 struct MdtWorld {
-    MdtWorldParams params;          /* public, see above */
-    struct MdtWorldPrivate *priv;   /* opaque */
+  MdtWorldParams params;        /* public, see above */
+  struct MdtWorldPrivate *priv; /* opaque */
 };
 
 /* Creates a world that can hold up to maxBodies bodies and maxConstraints
  * constraints. lengthScale and massScale must be positive and finite; they
  * scale the defaults. Returns NULL with a warning on bad arguments or when
  * memory runs out. */
-MEPUBLIC MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies,
-                                         const unsigned int maxConstraints,
+MEPUBLIC MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int maxConstraints,
                                          const MeReal lengthScale, const MeReal massScale);
 /* Destroys the world and every body still in it. NULL is ignored. */
 MEPUBLIC void MEAPI MdtWorldDestroy(const MdtWorldID world);
@@ -111,8 +110,7 @@ MEPUBLIC void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize);
  * the collision bridge sizes its speculative contacts with it). */
 MEPUBLIC MeReal MEAPI MdtWorldGetLastStepSize(const MdtWorldID world);
 
-MEPUBLIC void MEAPI MdtWorldSetGravity(const MdtWorldID world, const MeReal gx, const MeReal gy,
-                                       const MeReal gz);
+MEPUBLIC void MEAPI MdtWorldSetGravity(const MdtWorldID world, const MeReal gx, const MeReal gy, const MeReal gz);
 MEPUBLIC void MEAPI MdtWorldGetGravity(const MdtWorldID world, MeVector3 g);
 /* Epsilon must be >= 0, gamma >= 0.
  * Gamma is the fraction of each constraint's error corrected per step (the
@@ -133,22 +131,17 @@ MEPUBLIC void MEAPI MdtWorldGetStepStats(const MdtWorldID world, MdtWorldStepSta
  * order from the first body in (sort key, creation) order. */
 MEPUBLIC int MEAPI MdtWorldGetPartitionCount(const MdtWorldID world);
 MEPUBLIC int MEAPI MdtWorldGetPartitionBodyCount(const MdtWorldID world, const int partition);
-MEPUBLIC MdtBodyID MEAPI MdtWorldGetPartitionBody(const MdtWorldID world, const int partition,
-                                                  const int i);
+MEPUBLIC MdtBodyID MEAPI MdtWorldGetPartitionBody(const MdtWorldID world, const int partition, const int i);
 MEPUBLIC int MEAPI MdtWorldGetPartitionRowCount(const MdtWorldID world, const int partition);
 
 /* Auto-disable on or off (on by default). */
 MEPUBLIC void MEAPI MdtWorldSetAutoDisable(const MdtWorldID world, const MeBool on);
 MEPUBLIC MeBool MEAPI MdtWorldGetAutoDisable(const MdtWorldID world);
 /* The four thresholds (>= 0) and the alive window (>= 0, seconds). */
-MEPUBLIC void MEAPI MdtWorldSetAutoDisableVelocityThreshold(const MdtWorldID world,
-                                                            const MeReal v);
-MEPUBLIC void MEAPI MdtWorldSetAutoDisableAngularVelocityThreshold(const MdtWorldID world,
-                                                                   const MeReal w);
-MEPUBLIC void MEAPI MdtWorldSetAutoDisableAccelerationThreshold(const MdtWorldID world,
-                                                                const MeReal a);
-MEPUBLIC void MEAPI MdtWorldSetAutoDisableAngularAccelerationThreshold(const MdtWorldID world,
-                                                                       const MeReal a);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableVelocityThreshold(const MdtWorldID world, const MeReal v);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAngularVelocityThreshold(const MdtWorldID world, const MeReal w);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAccelerationThreshold(const MdtWorldID world, const MeReal a);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAngularAccelerationThreshold(const MdtWorldID world, const MeReal a);
 MEPUBLIC void MEAPI MdtWorldSetAutoDisableAliveWindow(const MdtWorldID world, const MeReal t);
 
 /* Waking by force (the guide's "Automatic Enabling and Disabling of Bodies"):
@@ -195,12 +188,11 @@ MEPUBLIC void MEAPI MdtWorldSetWakeByForce(const MdtWorldID world, const MeBool 
 MEPUBLIC MeBool MEAPI MdtWorldGetWakeByForce(const MdtWorldID world);
 
 typedef enum MdtAliveWindowMode {
-    MdtAliveWindowIdleSeconds,
-    MdtAliveWindowAwakeSeconds,
-    MdtAliveWindowAwakeSteps
+  MdtAliveWindowIdleSeconds,
+  MdtAliveWindowAwakeSeconds,
+  MdtAliveWindowAwakeSteps
 } MdtAliveWindowMode;
-MEPUBLIC void MEAPI MdtWorldSetAutoDisableAliveWindowMode(const MdtWorldID world,
-                                                          const MdtAliveWindowMode mode);
+MEPUBLIC void MEAPI MdtWorldSetAutoDisableAliveWindowMode(const MdtWorldID world, const MdtAliveWindowMode mode);
 MEPUBLIC MdtAliveWindowMode MEAPI MdtWorldGetAutoDisableAliveWindowMode(const MdtWorldID world);
 
 /* Appendix A's DebugDrawOptions (default 0): a bit set the application keeps
@@ -219,8 +211,7 @@ MEPUBLIC void MEAPI MdtWorldSetMaxMatrixSize(const MdtWorldID world, const int s
  * the penetration depth order. */
 struct MdtContact;
 typedef MeReal(MEAPI *MdtContactImportanceCBPtr)(struct MdtContact *contact);
-MEPUBLIC void MEAPI MdtWorldSetContactImportanceCB(const MdtWorldID world,
-                                                   MdtContactImportanceCBPtr cb);
+MEPUBLIC void MEAPI MdtWorldSetContactImportanceCB(const MdtWorldID world, MdtContactImportanceCBPtr cb);
 
 /* Called whenever a body of the world changes between enabled and disabled:
  * MdtBodyEnable / MdtBodyDisable by the program, waking by a constraint in
@@ -228,11 +219,9 @@ MEPUBLIC void MEAPI MdtWorldSetContactImportanceCB(const MdtWorldID world,
  * (MstSetWorldHandlers) uses it to unfreeze and freeze the body's collision
  * model. One callback per world; NULL removes it. */
 typedef void(MEAPI *MdtBodyEnableCallbackPtr)(MdtBodyID body, MeBool enabled, void *data);
-MEPUBLIC void MEAPI MdtWorldSetBodyEnableCallback(const MdtWorldID world,
-                                                  MdtBodyEnableCallbackPtr cb, void *data);
+MEPUBLIC void MEAPI MdtWorldSetBodyEnableCallback(const MdtWorldID world, MdtBodyEnableCallbackPtr cb, void *data);
 /* The callback set (NULL if none) and, when data is not NULL, its data. */
-MEPUBLIC MdtBodyEnableCallbackPtr MEAPI MdtWorldGetBodyEnableCallback(const MdtWorldID world,
-                                                                      void **data);
+MEPUBLIC MdtBodyEnableCallbackPtr MEAPI MdtWorldGetBodyEnableCallback(const MdtWorldID world, void **data);
 
 /* Stabilisation of light bodies between large constraint forces (a light
  * link holding a heavy load): the constraint response sees each body's

@@ -52,21 +52,21 @@
 #endif
 
 /* Always-on forms. */
-#define ME_REQUIRE_ARG(cond, fn, ...)                                                           \
-    do {                                                                                        \
-        if (!(cond)) {                                                                          \
-            MeArgumentWarning((fn), __VA_ARGS__);                                               \
-            return;                                                                             \
-        }                                                                                       \
-    } while (0)
+#define ME_REQUIRE_ARG(cond, fn, ...)       \
+  do {                                      \
+    if (!(cond)) {                          \
+      MeArgumentWarning((fn), __VA_ARGS__); \
+      return;                               \
+    }                                       \
+  } while (0)
 
-#define ME_REQUIRE_ARG_RET(cond, ret, fn, ...)                                                  \
-    do {                                                                                        \
-        if (!(cond)) {                                                                          \
-            MeArgumentWarning((fn), __VA_ARGS__);                                               \
-            return (ret);                                                                       \
-        }                                                                                       \
-    } while (0)
+#define ME_REQUIRE_ARG_RET(cond, ret, fn, ...) \
+  do {                                         \
+    if (!(cond)) {                             \
+      MeArgumentWarning((fn), __VA_ARGS__);    \
+      return (ret);                            \
+    }                                          \
+  } while (0)
 
 /* Not-evaluated reference to a condition (see the header comment). */
 #define ME_CHECK_UNEVALUATED_(cond) ((void)sizeof(!(cond)))
@@ -75,16 +75,14 @@
 
 #  define ME_CHECK_ARG(cond, fn, ...) ME_REQUIRE_ARG(cond, fn, __VA_ARGS__)
 #  define ME_CHECK_ARG_RET(cond, ret, fn, ...) ME_REQUIRE_ARG_RET(cond, ret, fn, __VA_ARGS__)
-#  define ME_CHECK_WARN(cond, fn, ...)                                                          \
-      do {                                                                                      \
-          if (!(cond))                                                                          \
-              MeArgumentWarning((fn), __VA_ARGS__);                                             \
-      } while (0)
-#  define MEASSERT(cond)                                                                        \
-      do {                                                                                      \
-          if (!(cond))                                                                          \
-              MeFatalError(0, "assertion failed: %s (%s:%d)", #cond, __FILE__, __LINE__);       \
-      } while (0)
+#  define ME_CHECK_WARN(cond, fn, ...)                   \
+    do {                                                 \
+      if (!(cond)) MeArgumentWarning((fn), __VA_ARGS__); \
+    } while (0)
+#  define MEASSERT(cond)                                                                       \
+    do {                                                                                       \
+      if (!(cond)) MeFatalError(0, "assertion failed: %s (%s:%d)", #cond, __FILE__, __LINE__); \
+    } while (0)
 
 #else
 

@@ -37,14 +37,14 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct MeChunk {
-    void *buffer;     /* from MeMemoryAPI.createAligned, or NULL (not yet allocated) */
-    size_t size;      /* bytes the chunk provides without growing; buffer, when
+  void *buffer;          /* from MeMemoryAPI.createAligned, or NULL (not yet allocated) */
+  size_t size;           /* bytes the chunk provides without growing; buffer, when
                          not NULL, holds exactly this many bytes; 0 only in a
                          zero-filled chunk (then treated as the default) */
-    size_t largestRequest; /* largest GetMem request seen, for tuning SetAuto */
-    int alignment;    /* power of two; buffer is a multiple of it */
-    int growCount;    /* how many times size was doubled by GetMem */
-    MeBool inUse;     /* TRUE between GetMem and PutMem */
+  size_t largestRequest; /* largest GetMem request seen, for tuning SetAuto */
+  int alignment;         /* power of two; buffer is a multiple of it */
+  int growCount;         /* how many times size was doubled by GetMem */
+  MeBool inUse;          /* TRUE between GetMem and PutMem */
 } MeChunk;
 
 /* Prepares an empty chunk of the default size whose memory will be aligned

@@ -36,8 +36,8 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct MeCommandLineOptions {
-    int m_argc;          /* arguments left, program name included (>= 1) */
-    const char **m_argv; /* m_argv[0..m_argc-1], then NULL; read-only */
+  int m_argc;          /* arguments left, program name included (>= 1) */
+  const char **m_argv; /* m_argv[0..m_argc-1], then NULL; read-only */
 } MeCommandLineOptions;
 
 /* Copies argc arguments (argv[0] is the program name). NULL argv or argc < 0
@@ -57,30 +57,27 @@ MEPUBLIC MeCommandLineOptions *MEAPI MeCommandLineOptionsCreateFromString(const 
 MEPUBLIC void MEAPI MeCommandLineOptionsDestroy(MeCommandLineOptions *options);
 
 /* TRUE if `name` is present. */
-MEPUBLIC MeBool MEAPI MeCommandLineOptionsCheckFor(MeCommandLineOptions *options, const char *name,
-                                                   MeBool eat);
+MEPUBLIC MeBool MEAPI MeCommandLineOptionsCheckFor(MeCommandLineOptions *options, const char *name, MeBool eat);
 
 /* Of the `count` names listed, returns the index (into `names`) of the one
  * that appears earliest on the command line, or -1 if none does. Eating
  * removes just that occurrence. */
-MEPUBLIC int MEAPI MeCommandLineOptionsCheckForList(MeCommandLineOptions *options,
-                                                    const char *const *names, int count,
+MEPUBLIC int MEAPI MeCommandLineOptionsCheckForList(MeCommandLineOptions *options, const char *const *names, int count,
                                                     MeBool eat);
 
 /* The argument after `name`, or NULL if `name` is absent or is the last
  * argument (that case warns, and eating removes the lone flag). */
-MEPUBLIC const char *MEAPI MeCommandLineOptionsGetString(MeCommandLineOptions *options,
-                                                         const char *name, MeBool eat);
+MEPUBLIC const char *MEAPI MeCommandLineOptionsGetString(MeCommandLineOptions *options, const char *name, MeBool eat);
 
 /* Reads the value after `name` as a number into *value. Returns TRUE on
  * success. Returns FALSE leaving *value untouched when the option is absent
  * (silently) or its value is missing, does not parse completely ("12x"),
  * is out of range, or (for floats) is not finite (each with a warning
  * naming the option and the text). */
-MEPUBLIC MeBool MEAPI MeCommandLineOptionsGetFloat(MeCommandLineOptions *options, const char *name,
-                                                   MeReal *value, MeBool eat);
-MEPUBLIC MeBool MEAPI MeCommandLineOptionsGetInt(MeCommandLineOptions *options, const char *name,
-                                                 int *value, MeBool eat);
+MEPUBLIC MeBool MEAPI MeCommandLineOptionsGetFloat(MeCommandLineOptions *options, const char *name, MeReal *value,
+                                                   MeBool eat);
+MEPUBLIC MeBool MEAPI MeCommandLineOptionsGetInt(MeCommandLineOptions *options, const char *name, int *value,
+                                                 MeBool eat);
 
 /* Number of arguments left, program name included (0 for NULL options). */
 MEPUBLIC int MEAPI MeCommandLineOptionsGetCount(const MeCommandLineOptions *options);

@@ -100,8 +100,7 @@ MEPUBLIC void MEAPI MeMatrix3MakeIdentity(MeMatrix3 m);
 /* out = in */
 MEPUBLIC void MEAPI MeMatrix3Copy(MeMatrix3 out, MECONSTMATRIX MeMatrix3 in);
 /* out = a * b (out[i][j] = sum_k a[i][k] b[k][j]); for rotations: apply a, then b */
-MEPUBLIC void MEAPI MeMatrix3Multiply(MeMatrix3 out, MECONSTMATRIX MeMatrix3 a,
-                                      MECONSTMATRIX MeMatrix3 b);
+MEPUBLIC void MEAPI MeMatrix3Multiply(MeMatrix3 out, MECONSTMATRIX MeMatrix3 a, MECONSTMATRIX MeMatrix3 b);
 /* out = m^T */
 MEPUBLIC void MEAPI MeMatrix3Transpose(MeMatrix3 out, MECONSTMATRIX MeMatrix3 m);
 /* returns det m = m[0] . (m[1] x m[2]) */
@@ -112,12 +111,10 @@ MEPUBLIC MeReal MEAPI MeMatrix3Determinant(MECONSTMATRIX MeMatrix3 m);
 MEPUBLIC MeBool MEAPI MeMatrix3Inverse(MeMatrix3 out, MECONSTMATRIX MeMatrix3 m);
 /* out = m * v with v a column: out[i] = sum_j m[i][j] v[j].
  * For a rotation R this takes a WORLD vector into BODY coordinates. */
-MEPUBLIC void MEAPI MeMatrix3MultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m,
-                                            const MeVector3 v);
+MEPUBLIC void MEAPI MeMatrix3MultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m, const MeVector3 v);
 /* out = m^T * v = v * m with v a row: out[j] = sum_i v[i] m[i][j].
  * For a rotation R this takes a BODY vector into WORLD coordinates. */
-MEPUBLIC void MEAPI MeMatrix3TransposeMultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m,
-                                                     const MeVector3 v);
+MEPUBLIC void MEAPI MeMatrix3TransposeMultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m, const MeVector3 v);
 /* R = turn by angle about x: rows (1,0,0), (0,c,s), (0,-s,c) */
 MEPUBLIC void MEAPI MeMatrix3MakeRotationX(MeMatrix3 R, MeReal angle);
 /* R = turn by angle about y: rows (c,0,-s), (0,1,0), (s,0,c) */
@@ -144,8 +141,7 @@ MEPUBLIC void MEAPI MeMatrix4MakeIdentity(MeMatrix4 m);
 /* out = in */
 MEPUBLIC void MEAPI MeMatrix4Copy(MeMatrix4 out, MECONSTMATRIX MeMatrix4 in);
 /* out = a * b (out[i][j] = sum_k a[i][k] b[k][j]); for TMs: apply a, then b */
-MEPUBLIC void MEAPI MeMatrix4Multiply(MeMatrix4 out, MECONSTMATRIX MeMatrix4 a,
-                                      MECONSTMATRIX MeMatrix4 b);
+MEPUBLIC void MEAPI MeMatrix4Multiply(MeMatrix4 out, MECONSTMATRIX MeMatrix4 a, MECONSTMATRIX MeMatrix4 b);
 /* out = m^T */
 MEPUBLIC void MEAPI MeMatrix4Transpose(MeMatrix4 out, MECONSTMATRIX MeMatrix4 m);
 
@@ -154,8 +150,8 @@ MEPUBLIC void MEAPI MeMatrix4Transpose(MeMatrix4 out, MECONSTMATRIX MeMatrix4 m)
 /* tm = I: no rotation, no translation */
 MEPUBLIC void MEAPI MeMatrix4TMMakeIdentity(MeMatrix4 tm);
 /* tm = [R 0; (x, y, z) 1] */
-MEPUBLIC void MEAPI MeMatrix4TMMakeFromRotationAndPosition(MeMatrix4 tm, MECONSTMATRIX MeMatrix3 R,
-                                                           MeReal x, MeReal y, MeReal z);
+MEPUBLIC void MEAPI MeMatrix4TMMakeFromRotationAndPosition(MeMatrix4 tm, MECONSTMATRIX MeMatrix3 R, MeReal x, MeReal y,
+                                                           MeReal z);
 /* t = (x, y, z); the rotation rows are untouched */
 MEPUBLIC void MEAPI MeMatrix4TMSetPosition(MeMatrix4 tm, MeReal x, MeReal y, MeReal z);
 /* t = p */
@@ -169,21 +165,17 @@ MEPUBLIC void MEAPI MeMatrix4TMGetRotation(MeMatrix3 R, MECONSTMATRIX MeMatrix4 
 /* out = a * b, i.e. apply a, then b: R = Ra Rb, t = ta Rb + tb. With a the
  * child's TM relative to its parent and b the parent's world TM, out is the
  * child's world TM. Column 3 of out is exactly (0, 0, 0, 1). */
-MEPUBLIC void MEAPI MeMatrix4TMCompose(MeMatrix4 out, MECONSTMATRIX MeMatrix4 a,
-                                       MECONSTMATRIX MeMatrix4 b);
+MEPUBLIC void MEAPI MeMatrix4TMCompose(MeMatrix4 out, MECONSTMATRIX MeMatrix4 a, MECONSTMATRIX MeMatrix4 b);
 /* out = tm^-1 for a rigid tm: R' = R^T, t' = -t R^T */
 MEPUBLIC void MEAPI MeMatrix4TMInverse(MeMatrix4 out, MECONSTMATRIX MeMatrix4 tm);
 /* out = p R + t: a body-frame point into world coordinates */
-MEPUBLIC void MEAPI MeMatrix4TMTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm,
-                                         const MeVector3 p);
+MEPUBLIC void MEAPI MeMatrix4TMTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p);
 /* out = v R: a body-frame direction into world coordinates (no translation) */
 MEPUBLIC void MEAPI MeMatrix4TMRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 v);
 /* out = (p - t) R^T: a world point into body coordinates */
-MEPUBLIC void MEAPI MeMatrix4TMInverseTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm,
-                                                const MeVector3 p);
+MEPUBLIC void MEAPI MeMatrix4TMInverseTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p);
 /* out = v R^T: a world direction into body coordinates */
-MEPUBLIC void MEAPI MeMatrix4TMInverseRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm,
-                                             const MeVector3 v);
+MEPUBLIC void MEAPI MeMatrix4TMInverseRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 v);
 /* TRUE when rows 0..2 form a proper rotation within tol and column 3 is
  * (0, 0, 0, 1) within tol */
 MEPUBLIC MeBool MEAPI MeMatrix4IsTM(MECONSTMATRIX MeMatrix4 tm, MeReal tol);
@@ -218,8 +210,7 @@ MEPUBLIC MeBool MEAPI MeQuaternionInvert(MeVector4 out, const MeVector4 q);
 /* out = v R(q): a body vector into world coordinates (q unit) */
 MEPUBLIC void MEAPI MeQuaternionRotateVector(MeVector3 out, const MeVector4 q, const MeVector3 v);
 /* out = v R(q)^T: a world vector into body coordinates (q unit) */
-MEPUBLIC void MEAPI MeQuaternionInverseRotateVector(MeVector3 out, const MeVector4 q,
-                                                    const MeVector3 v);
+MEPUBLIC void MEAPI MeQuaternionInverseRotateVector(MeVector3 out, const MeVector4 q, const MeVector3 v);
 /* TRUE when | |q|^2 - 1 | <= tol */
 MEPUBLIC MeBool MEAPI MeQuaternionIsUnit(const MeVector4 q, MeReal tol);
 /* q = q, then the turn exp(h omega / 2): the orientation after time h of a

@@ -33,33 +33,33 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct MeMemoryAPIStruct {
-    /* Returns a block of at least `bytes` bytes (a zero-byte request still
+  /* Returns a block of at least `bytes` bytes (a zero-byte request still
      * yields a distinct block), suitably aligned for any standard type, or
      * NULL on failure. Default: malloc. */
-    void *(MEAPI *create)(size_t bytes);
+  void *(MEAPI *create)(size_t bytes);
 
-    /* Releases a block from create / createZeroed / resize; NULL is ignored.
+  /* Releases a block from create / createZeroed / resize; NULL is ignored.
      * Default: free. */
-    void(MEAPI *destroy)(void *block);
+  void(MEAPI *destroy)(void *block);
 
-    /* Changes a block's size keeping its contents up to the smaller size.
+  /* Changes a block's size keeping its contents up to the smaller size.
      * resize(NULL, n) acts as create(n). On failure returns NULL and leaves
      * the old block untouched. Default: realloc. */
-    void *(MEAPI *resize)(void *block, size_t bytes);
+  void *(MEAPI *resize)(void *block, size_t bytes);
 
-    /* As create, with every byte zero. Default: MeMemoryAPI.create + memset. */
-    void *(MEAPI *createZeroed)(size_t bytes);
+  /* As create, with every byte zero. Default: MeMemoryAPI.create + memset. */
+  void *(MEAPI *createZeroed)(size_t bytes);
 
-    /* Returns a block whose address is a multiple of `alignment`, which must
+  /* Returns a block whose address is a multiple of `alignment`, which must
      * be a power of two (otherwise MeWarning and NULL). Release it with
      * destroyAligned, never destroy. Default: over-allocates through
      * MeMemoryAPI.create and hides the original address just below the
      * aligned one. */
-    void *(MEAPI *createAligned)(size_t bytes, unsigned int alignment);
+  void *(MEAPI *createAligned)(size_t bytes, unsigned int alignment);
 
-    /* Releases a block from createAligned; NULL is ignored. Default: recovers
+  /* Releases a block from createAligned; NULL is ignored. Default: recovers
      * the original address and passes it to MeMemoryAPI.destroy. */
-    void(MEAPI *destroyAligned)(void *block);
+  void(MEAPI *destroyAligned)(void *block);
 } MeMemoryAPIStruct;
 
 /* The allocator table every Karma module uses. */

@@ -61,8 +61,7 @@ MEPUBLIC void MEAPI MeWarning(int level, const char *format, ...) ME_PRINTF_FORM
  * wants to regain control can throw an exception from its handler; Karma's
  * library code lets it pass (only C frames compiled without unwind tables
  * would stop it). */
-MEPUBLIC void MEAPI MeFatalError(int level, const char *format, ...) ME_PRINTF_FORMAT(2, 3)
-    ME_NORETURN;
+MEPUBLIC void MEAPI MeFatalError(int level, const char *format, ...) ME_PRINTF_FORMAT(2, 3) ME_NORETURN;
 
 /* Developer tracing: delivered to the debug handler only when
  * level <= MeGetDebugLevel(). Levels below 1 count as 1, and the debug level
@@ -87,8 +86,7 @@ MEPUBLIC MeMessageHandler MEAPI MeSetDebugHandler(MeMessageHandler handler);
 /* Emits the warning "<function>: <formatted text>" (level 0). This is what
  * the ME_CHECK_* / ME_REQUIRE_* macros of MeAssert.h call; it is public so
  * those macros work in every Karma library and in user code. */
-MEPUBLIC void MEAPI MeArgumentWarning(const char *function, const char *format, ...)
-    ME_PRINTF_FORMAT(2, 3);
+MEPUBLIC void MEAPI MeArgumentWarning(const char *function, const char *format, ...) ME_PRINTF_FORMAT(2, 3);
 
 ME_EXTERN_C_END
 

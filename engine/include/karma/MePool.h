@@ -33,24 +33,24 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct MePool {
-    /* Start of the single block from MeMemoryAPI.createAligned (NULL when
+  /* Start of the single block from MeMemoryAPI.createAligned (NULL when
      * the pool is not initialised or has capacity 0). The structs come
      * first: struct i lives at memory + i * stride. */
-    void *memory;
-    /* Stack of free struct indices; the top, freeStack[freeCount - 1], is
+  void *memory;
+  /* Stack of free struct indices; the top, freeStack[freeCount - 1], is
      * the next struct handed out. Lives inside `memory`. */
-    int *freeStack;
-    /* inUse[i] is 1 while struct i is handed out, 0 while it is free.
+  int *freeStack;
+  /* inUse[i] is 1 while struct i is handed out, 0 while it is free.
      * Lives inside `memory`. */
-    unsigned char *inUse;
-    int maxCount;   /* capacity, >= 0 */
-    int structSize; /* bytes requested per struct, > 0 once initialised */
-    int stride;     /* structSize rounded up to a multiple of alignment */
-    int alignment;  /* power of two; every struct address is a multiple */
-    int freeCount;  /* structs free; usedCount + freeCount == maxCount */
-    int usedCount;  /* structs handed out */
-    MeBool warnedFull; /* exhaustion already reported since the last Put */
-    const char *name;  /* for messages (not copied); NULL means "unnamed" */
+  unsigned char *inUse;
+  int maxCount;      /* capacity, >= 0 */
+  int structSize;    /* bytes requested per struct, > 0 once initialised */
+  int stride;        /* structSize rounded up to a multiple of alignment */
+  int alignment;     /* power of two; every struct address is a multiple */
+  int freeCount;     /* structs free; usedCount + freeCount == maxCount */
+  int usedCount;     /* structs handed out */
+  MeBool warnedFull; /* exhaustion already reported since the last Put */
+  const char *name;  /* for messages (not copied); NULL means "unnamed" */
 } MePool;
 
 /* Prepares `pool` to hold up to maxCount structs of structSize bytes, each

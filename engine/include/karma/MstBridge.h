@@ -50,8 +50,7 @@ typedef MstBridge *MstBridgeID;
 typedef int MstMaterialID;
 
 typedef MeBool(MEAPI *MstIntersectCBPtr)(McdIntersectResult *result);
-typedef MeBool(MEAPI *MstPerContactCBPtr)(McdIntersectResult *result, McdContact *colC,
-                                          MdtContactID dynC);
+typedef MeBool(MEAPI *MstPerContactCBPtr)(McdIntersectResult *result, McdContact *colC, MdtContactID dynC);
 typedef MeBool(MEAPI *MstPerPairCBPtr)(McdIntersectResult *result, MdtContactGroupID contacts);
 
 /* The default material, 0. */
@@ -67,29 +66,23 @@ MEPUBLIC MstMaterialID MEAPI MstBridgeGetNewMaterial(MstBridgeID bridge);
 MEPUBLIC int MEAPI MstBridgeGetMaterialCount(MstBridgeID bridge);
 /* The parameters of a pair of materials (either order: the same entry);
  * NULL with a warning for a material not in use. */
-MEPUBLIC MdtContactParamsID MEAPI MstBridgeGetContactParams(MstBridgeID bridge,
-                                                            MstMaterialID m1, MstMaterialID m2);
+MEPUBLIC MdtContactParamsID MEAPI MstBridgeGetContactParams(MstBridgeID bridge, MstMaterialID m1, MstMaterialID m2);
 
-MEPUBLIC void MEAPI MstBridgeSetIntersectCB(MstBridgeID bridge, MstMaterialID m1,
-                                            MstMaterialID m2, MstIntersectCBPtr cb);
-MEPUBLIC MstIntersectCBPtr MEAPI MstBridgeGetIntersectCB(MstBridgeID bridge, MstMaterialID m1,
-                                                         MstMaterialID m2);
-MEPUBLIC void MEAPI MstBridgeSetPerContactCB(MstBridgeID bridge, MstMaterialID m1,
-                                             MstMaterialID m2, MstPerContactCBPtr cb);
-MEPUBLIC MstPerContactCBPtr MEAPI MstBridgeGetPerContactCB(MstBridgeID bridge, MstMaterialID m1,
-                                                           MstMaterialID m2);
-MEPUBLIC void MEAPI MstBridgeSetPerPairCB(MstBridgeID bridge, MstMaterialID m1,
-                                          MstMaterialID m2, MstPerPairCBPtr cb);
-MEPUBLIC MstPerPairCBPtr MEAPI MstBridgeGetPerPairCB(MstBridgeID bridge, MstMaterialID m1,
-                                                     MstMaterialID m2);
+MEPUBLIC void MEAPI MstBridgeSetIntersectCB(MstBridgeID bridge, MstMaterialID m1, MstMaterialID m2,
+                                            MstIntersectCBPtr cb);
+MEPUBLIC MstIntersectCBPtr MEAPI MstBridgeGetIntersectCB(MstBridgeID bridge, MstMaterialID m1, MstMaterialID m2);
+MEPUBLIC void MEAPI MstBridgeSetPerContactCB(MstBridgeID bridge, MstMaterialID m1, MstMaterialID m2,
+                                             MstPerContactCBPtr cb);
+MEPUBLIC MstPerContactCBPtr MEAPI MstBridgeGetPerContactCB(MstBridgeID bridge, MstMaterialID m1, MstMaterialID m2);
+MEPUBLIC void MEAPI MstBridgeSetPerPairCB(MstBridgeID bridge, MstMaterialID m1, MstMaterialID m2, MstPerPairCBPtr cb);
+MEPUBLIC MstPerPairCBPtr MEAPI MstBridgeGetPerPairCB(MstBridgeID bridge, MstMaterialID m1, MstMaterialID m2);
 
 /* The loop at the top of this file (the space must be inside a change
  * block, as McdSpaceAxisSortCreate and the previous call leave it). */
-MEPUBLIC void MEAPI MstBridgeUpdateContacts(MstBridgeID bridge, McdSpaceID space,
-                                            MdtWorldID world);
+MEPUBLIC void MEAPI MstBridgeUpdateContacts(MstBridgeID bridge, McdSpaceID space, MdtWorldID world);
 MEPUBLIC void MEAPI MstHandleTransitions(McdModelPairContainer *pairs);
-MEPUBLIC void MEAPI MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space,
-                                        MdtWorldID world, MstBridgeID bridge);
+MEPUBLIC void MEAPI MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world,
+                                        MstBridgeID bridge);
 
 /* Makes the world freeze the collision model of a body it disables (after
  * one last McdSpaceUpdateModel when the space is in a change block) and

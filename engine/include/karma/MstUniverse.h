@@ -23,26 +23,26 @@
 ME_EXTERN_C_BEGIN
 
 typedef struct MstUniverseSizes {
-    int dynamicBodiesMaxCount;
-    int dynamicConstraintsMaxCount;
-    int collisionUserGeometryTypesMaxCount;
-    int collisionModelsMaxCount;
-    int collisionPairsMaxCount;
-    int collisionGeometryInstancesMaxCount;
-    int materialsMaxCount;
-    MeReal lengthScale;
-    MeReal massScale;
+  int dynamicBodiesMaxCount;
+  int dynamicConstraintsMaxCount;
+  int collisionUserGeometryTypesMaxCount;
+  int collisionModelsMaxCount;
+  int collisionPairsMaxCount;
+  int collisionGeometryInstancesMaxCount;
+  int materialsMaxCount;
+  MeReal lengthScale;
+  MeReal massScale;
 } MstUniverseSizes;
 
 /* Appendix A: 100, 500, 0, 100, 500, 100, 10, 1, 1 (in the order above). */
 MEPUBLIC extern const MstUniverseSizes MstUniverseDefaultSizes;
 
 typedef struct MstUniverse {
-    MdtWorldID world;
-    McdFrameworkID frame;
-    McdSpaceID space;
-    MstBridgeID bridge;
-    MstUniverseSizes sizes;
+  MdtWorldID world;
+  McdFrameworkID frame;
+  McdSpaceID space;
+  MstBridgeID bridge;
+  MstUniverseSizes sizes;
 } MstUniverse;
 typedef MstUniverse *MstUniverseID;
 
@@ -60,23 +60,20 @@ MEPUBLIC McdFrameworkID MEAPI MstUniverseGetFramework(MstUniverseID universe);
 /* A model of `geometry` with a new enabled body whose mass properties come
  * from the geometry at `density` (MstAutoSetMassProperties), joined by
  * McdModelSetBody and inserted into the universe's space. */
-MEPUBLIC McdModelID MEAPI MstModelAndBodyCreate(MstUniverseID universe, McdGeometryID geometry,
-                                                MeReal density);
+MEPUBLIC McdModelID MEAPI MstModelAndBodyCreate(MstUniverseID universe, McdGeometryID geometry, MeReal density);
 /* Removes the model from its space (its contact groups go at once), then
  * destroys body and model (not the geometry). */
 MEPUBLIC void MEAPI MstModelAndBodyDestroy(McdModelID model);
 /* A model with no body at *tm (the pointer is kept, not copied), inserted,
  * updated and frozen. */
-MEPUBLIC McdModelID MEAPI MstFixedModelCreate(MstUniverseID universe, McdGeometryID geometry,
-                                              MeMatrix4Ptr tm);
+MEPUBLIC McdModelID MEAPI MstFixedModelCreate(MstUniverseID universe, McdGeometryID geometry, MeMatrix4Ptr tm);
 MEPUBLIC void MEAPI MstFixedModelDestroy(McdModelID model);
 
 /* Mass, inertia tensor (about the centre of mass) and centre-of-mass offset
  * of the body from the geometry at `density` (McdGeometryGetMassProperties).
  * A geometry without volume (plane, triangle list) warns and leaves the
  * body unchanged. */
-MEPUBLIC void MEAPI MstAutoSetMassProperties(MdtBodyID body, McdGeometryID geometry,
-                                             MeReal density);
+MEPUBLIC void MEAPI MstAutoSetMassProperties(MdtBodyID body, McdGeometryID geometry, MeReal density);
 
 /* A model with a body: the body back at the origin, identity orientation,
  * at rest. */

@@ -19,22 +19,20 @@ struct ConvexMesh;  // geometry/convex_internal.h
 namespace karma::mcd::convex {
 
 struct V {
-    double x = 0, y = 0, z = 0;
-    double &operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
-    double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  double x = 0, y = 0, z = 0;
+  double &operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+  double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };
 inline V operator+(V a, V b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline V operator-(V a, V b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline V operator-(V a) { return {-a.x, -a.y, -a.z}; }
 inline V operator*(double s, V a) { return {s * a.x, s * a.y, s * a.z}; }
 inline double Dot(V a, V b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline V Cross(V a, V b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+inline V Cross(V a, V b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 inline double Len(V a) { return std::sqrt(Dot(a, a)); }
 inline V Unit(V a) {
-    const double l = Len(a);
-    return l > 0 ? (1 / l) * a : V{0, 0, 1};
+  const double l = Len(a);
+  return l > 0 ? (1 / l) * a : V{0, 0, 1};
 }
 inline bool Finite(V a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
 inline V FromMe(const MeReal *p) { return {(double)p[0], (double)p[1], (double)p[2]}; }
@@ -43,19 +41,19 @@ inline void ToMe(MeReal *p, V a) { p[0] = (MeReal)a.x, p[1] = (MeReal)a.y, p[2] 
 enum class Kind { Sphere, Box, Cylinder, Sphyl, Hull, Triangle };
 
 struct Shape {
-    Kind kind = Kind::Sphere;
-    V axis[3];        // local axes in world (TM rows 0-2)
-    V t;              // world position of the local origin
-    V half;           // box half extents
-    double r = 0;     // cylinder radius
-    double hh = 0;    // cylinder / sphyl half height
-    double margin = 0;
-    double scale = 1; // a size for relative tolerances
-    const ConvexMesh *mesh = nullptr;
-    V tri[3];         // triangle corners (world)
-    V triN;           // triangle unit normal (world)
-    V Local(V d) const { return {Dot(d, axis[0]), Dot(d, axis[1]), Dot(d, axis[2])}; }
-    V World(V p) const { return t + p.x * axis[0] + p.y * axis[1] + p.z * axis[2]; }
+  Kind kind = Kind::Sphere;
+  V axis[3];      // local axes in world (TM rows 0-2)
+  V t;            // world position of the local origin
+  V half;         // box half extents
+  double r = 0;   // cylinder radius
+  double hh = 0;  // cylinder / sphyl half height
+  double margin = 0;
+  double scale = 1;  // a size for relative tolerances
+  const ConvexMesh *mesh = nullptr;
+  V tri[3];  // triangle corners (world)
+  V triN;    // triangle unit normal (world)
+  V Local(V d) const { return {Dot(d, axis[0]), Dot(d, axis[1]), Dot(d, axis[2])}; }
+  V World(V p) const { return t + p.x * axis[0] + p.y * axis[1] + p.z * axis[2]; }
 };
 
 // The shape of a geometry placed at tm; false for types that are not convex
@@ -89,9 +87,7 @@ int FaceCount(const Shape &s);
 
 // Separation of A above B along unit n (n from B towards A): the gap
 // between the lowest point of A and the highest of B, negative in overlap.
-inline double SeparationAlong(const Shape &a, const Shape &b, V n) {
-    return -SupportValue(a, -n) - SupportValue(b, n);
-}
+inline double SeparationAlong(const Shape &a, const Shape &b, V n) { return -SupportValue(a, -n) - SupportValue(b, n); }
 
 // The least-penetration (or, when apart, separating) normal from B towards
 // A and the separation along it; false when the shapes are farther apart
@@ -100,10 +96,10 @@ inline double SeparationAlong(const Shape &a, const Shape &b, V n) {
 bool Penetration(const Shape &a, const Shape &b, double tol, V *n, double *sep);
 
 struct ManifoldPoint {
-    V position;
-    double separation;
-    int dims1, dims2;
-    MeU32 feature;  // Mix of A's and B's feature ids and the point's clip key
+  V position;
+  double separation;
+  int dims1, dims2;
+  MeU32 feature;  // Mix of A's and B's feature ids and the point's clip key
 };
 // Contacts between A and B for the normal n (B towards A) of separation
 // sep0: the supporting features of A (along -n) and B (along n) are
@@ -114,7 +110,7 @@ struct ManifoldPoint {
 // edge i -> i+1; a triangle list clears smooth edges). At most four points
 // (and at most `max`), spread over the contact area and the deepest first
 // (manifold.cpp); a fallback single point when the intersection is empty.
-int Manifold(const Shape &a, const Shape &b, V n, double sep0, double tol, unsigned clipMaskB,
-             ManifoldPoint out[], int max);
+int Manifold(const Shape &a, const Shape &b, V n, double sep0, double tol, unsigned clipMaskB, ManifoldPoint out[],
+             int max);
 
 }  // namespace karma::mcd::convex

@@ -153,11 +153,11 @@ struct PairChunk {
 };
 
 struct SpaceStats {
-  int overlaps = 0;        // pairs overlapping on all sorted axes (reported or not)
-  int reported = 0;        // hellos + stayings of the current events
-  int recordsInUse = 0;    // including goodbyes not yet retired
-  long long swaps = 0;     // endpoint swaps that changed an overlap, last sync
-  int droppedHellos = 0;   // hellos not reported for want of records, last EndChanges
+  int overlaps = 0;       // pairs overlapping on all sorted axes (reported or not)
+  int reported = 0;       // hellos + stayings of the current events
+  int recordsInUse = 0;   // including goodbyes not yet retired
+  long long swaps = 0;    // endpoint swaps that changed an overlap, last sync
+  int droppedHellos = 0;  // hellos not reported for want of records, last EndChanges
 };
 
 class AxisSortSpace {
@@ -180,8 +180,8 @@ class AxisSortSpace {
 
   // --- proxies (proxies.cpp). Inside a change block.
   ProxyId Insert(void *user, const MeReal min[3], const MeReal max[3]);
-  ProxyId InsertWithCulling(void *user, const MeReal min[3], const MeReal max[3], CullingTable *table,
-                            int cullingIndex, int cullingId);
+  ProxyId InsertWithCulling(void *user, const MeReal min[3], const MeReal max[3], CullingTable *table, int cullingIndex,
+                            int cullingId);
   bool Remove(ProxyId id);
   bool Update(ProxyId id, const MeReal min[3], const MeReal max[3]);
   void UpdateAll();
@@ -233,8 +233,8 @@ class AxisSortSpace {
   }
 
   // --- pair filters (pair_filter.cpp)
-  bool DisablePair(ProxyId a, ProxyId b);  // inside
-  bool EnablePair(ProxyId a, ProxyId b);   // inside
+  bool DisablePair(ProxyId a, ProxyId b);          // inside
+  bool EnablePair(ProxyId a, ProxyId b);           // inside
   bool PairIsEnabled(ProxyId a, ProxyId b) const;  // anywhere: not disabled, not culled
 
   // --- pair events (pair_iterator.cpp). Outside a change block.
@@ -254,12 +254,12 @@ class AxisSortSpace {
     void *user = nullptr;
     MeReal min[3] = {0, 0, 0}, max[3] = {0, 0, 0};
     std::uint32_t serial = 0;
-    std::uint32_t key = 0;          // sort key (see "Pair order")
+    std::uint32_t key = 0;  // sort key (see "Pair order")
     ProxyState state = ProxyState::Free;
     bool frozen = false;
     CullingTable *table = nullptr;  // NULL: no culling parameters
     int cullingIndex = 0, cullingId = 0;
-    int disabledCount = 0;          // entries of disabled_ naming this proxy
+    int disabledCount = 0;  // entries of disabled_ naming this proxy
   };
 
   AxisSortSpace() = default;
@@ -286,15 +286,15 @@ class AxisSortSpace {
   int axisIndex_[3] = {0, 1, 2};  // world axis of each sorted axis
   EndpointAxis axis_[3];
   int objectCount_ = 0;
-  int proxyCount_ = 0;            // Pending + Live
+  int proxyCount_ = 0;  // Pending + Live
   std::uint32_t nextSerial_ = 1;
-  std::vector<Proxy> proxies_;    // 2 * objectCount slots (see proxies.cpp)
-  std::vector<int> freeSlots_;    // LIFO, lowest first
-  std::vector<int> pending_;      // inserted, not yet in the arrays
-  std::vector<int> retired_;      // removed; slots free at the next BeginChanges
+  std::vector<Proxy> proxies_;  // 2 * objectCount slots (see proxies.cpp)
+  std::vector<int> freeSlots_;  // LIFO, lowest first
+  std::vector<int> pending_;    // inserted, not yet in the arrays
+  std::vector<int> retired_;    // removed; slots free at the next BeginChanges
   bool anyRemoved_ = false;
-  bool keysChanged_ = false;      // a SetKey changed a key since the last EndChanges
-  bool dirty_ = false;            // values changed since the last sort
+  bool keysChanged_ = false;  // a SetKey changed a key since the last EndChanges
+  bool dirty_ = false;        // values changed since the last sort
   long long swaps_ = 0;
 
   OverlapTable overlaps_;

@@ -42,8 +42,7 @@ CullingTable *CullingTableSet(CullingTable *table, std::uint32_t a, std::uint32_
   }
   const auto n = static_cast<std::uint32_t>(table->size);
   if (a >= n || b >= n) {
-    MeWarning(0, "McdCullingTableSet: index (%u, %u) outside the table of size %d; nothing set", a, b,
-              table->size);
+    MeWarning(0, "McdCullingTableSet: index (%u, %u) outside the table of size %d; nothing set", a, b, table->size);
     return table;
   }
   const std::uint8_t v = flag ? 1 : 0;

@@ -24,7 +24,7 @@
 namespace karma::mcd {
 
 struct CullingTable {
-  int size = 0;               // indices run over [0, size)
+  int size = 0;                   // indices run over [0, size)
   std::uint8_t *flags = nullptr;  // size*size bytes, row major, symmetric
 };
 

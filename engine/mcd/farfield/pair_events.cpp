@@ -80,8 +80,8 @@ void AxisSortSpace::ComputeEvents() {
     std::sort(previous_.begin(), previous_.end(), byOrder);
     keysChanged_ = false;
   } else {
-    std::merge(stayings_.begin(), stayings_.end(), hellos_.begin(), hellos_.end(),
-               std::back_inserter(previous_), byOrder);
+    std::merge(stayings_.begin(), stayings_.end(), hellos_.begin(), hellos_.end(), std::back_inserter(previous_),
+               byOrder);
   }
   goodbyes_.clear();
   hellos_.clear();

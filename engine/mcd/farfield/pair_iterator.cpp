@@ -39,8 +39,10 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withSta
   chunk->goodbyeFirst = chunk->goodbyeEnd = chunk->helloFirst = chunk->helloEnd = chunk->stayingEnd = 0;
   if (!RequireOutside(api)) return false;
   if (iter->generation != generation_) {
-    MeWarning(0, "%s: the iterator was not begun for the current pairs (call McdSpacePairIteratorBegin "
-                 "after McdSpaceEndChanges); no pairs", api);
+    MeWarning(0,
+              "%s: the iterator was not begun for the current pairs (call McdSpacePairIteratorBegin "
+              "after McdSpaceEndChanges); no pairs",
+              api);
     return false;
   }
   const int goodbyesLeft = static_cast<int>(goodbyes_.size()) - iter->nextGoodbye;

@@ -61,9 +61,7 @@ struct PairRecord {
   }
   // The deterministic order of reported pairs: by the proxies' sort keys,
   // then insertion serials, never by addresses.
-  PairOrder Order() const {
-    return {ProxyRank{keyA, serialA}.Packed(), ProxyRank{keyB, serialB}.Packed()};
-  }
+  PairOrder Order() const { return {ProxyRank{keyA, serialA}.Packed(), ProxyRank{keyB, serialB}.Packed()}; }
 };
 
 inline std::uint64_t SlotPairKey(int a, int b) {
@@ -73,9 +71,9 @@ inline std::uint64_t SlotPairKey(int a, int b) {
 }
 
 struct OverlapEntry {
-  std::uint64_t key;     // SlotPairKey, or kEmpty
-  int record;            // PairRecord index when reported, else -1
-  bool overlapping;      // false: overlap ended this block, awaiting its goodbye
+  std::uint64_t key;  // SlotPairKey, or kEmpty
+  int record;         // PairRecord index when reported, else -1
+  bool overlapping;   // false: overlap ended this block, awaiting its goodbye
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
   int SlotLo() const { return static_cast<int>(key >> 32); }
   int SlotHi() const { return static_cast<int>(key & 0xffffffffu); }

@@ -62,8 +62,8 @@ ProxyId AxisSortSpace::Insert(void *user, const MeReal min[3], const MeReal max[
   return InsertImpl(user, min, max, "McdSpaceInsertModel");
 }
 
-ProxyId AxisSortSpace::InsertWithCulling(void *user, const MeReal min[3], const MeReal max[3],
-                                         CullingTable *table, int cullingIndex, int cullingId) {
+ProxyId AxisSortSpace::InsertWithCulling(void *user, const MeReal min[3], const MeReal max[3], CullingTable *table,
+                                         int cullingIndex, int cullingId) {
   const char *api = "McdSpaceInsertModelWithCulling";
   if (!RequireInside(api)) return kNoProxy;
   if (table && (cullingIndex < 0 || cullingIndex >= table->size)) {
@@ -84,8 +84,8 @@ bool AxisSortSpace::SetCulling(ProxyId id, CullingTable *table, int cullingIndex
   const char *api = "McdSpaceSetModelCullingParameters";
   if (!RequireInside(api) || !CheckProxy(id, api)) return false;
   if (table && (cullingIndex < 0 || cullingIndex >= table->size)) {
-    MeWarning(0, "%s: culling index %d outside the table of size %d; parameters unchanged", api,
-              cullingIndex, table->size);
+    MeWarning(0, "%s: culling index %d outside the table of size %d; parameters unchanged", api, cullingIndex,
+              table->size);
     return false;
   }
   Proxy &p = proxies_[static_cast<std::size_t>(id)];

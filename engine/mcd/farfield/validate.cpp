@@ -31,7 +31,8 @@ bool AxisSortSpace::Validate() const {
     if (ax.Size() != 2 * live) return Fail("endpoint count");
     for (int i = 0; i < ax.Size(); ++i) {
       const Endpoint &e = ax.At(i);
-      if (proxies_[static_cast<std::size_t>(e.Slot())].state != ProxyState::Live) return Fail("endpoint of a dead proxy");
+      if (proxies_[static_cast<std::size_t>(e.Slot())].state != ProxyState::Live)
+        return Fail("endpoint of a dead proxy");
       if ((e.IsMax() ? ax.MaxPos(e.Slot()) : ax.MinPos(e.Slot())) != i) return Fail("endpoint position");
       const Proxy &p = proxies_[static_cast<std::size_t>(e.Slot())];
       if (e.Value() != (e.IsMax() ? p.max : p.min)[axisIndex_[k]]) return Fail("endpoint value");

@@ -16,22 +16,22 @@ namespace {
 void Swap(McdModelPair *pair) { std::swap(pair->model1, pair->model2); }
 
 void TurnRound(McdIntersectResult *r) {
-    for (int i = 0; i < r->contactCount; ++i) {
-        McdContact &c = r->contacts[i];
-        MeVector3Negate(c.normal);
-        std::swap(c.element1, c.element2);
-        const unsigned d = (unsigned)(unsigned short)c.dims;
-        c.dims = (MeI16)(((d & 0xFFu) << 8) | (d >> 8));
-    }
-    MeVector3Negate(r->normal);
+  for (int i = 0; i < r->contactCount; ++i) {
+    McdContact &c = r->contacts[i];
+    MeVector3Negate(c.normal);
+    std::swap(c.element1, c.element2);
+    const unsigned d = (unsigned)(unsigned short)c.dims;
+    c.dims = (MeI16)(((d & 0xFFu) << 8) | (d >> 8));
+  }
+  MeVector3Negate(r->normal);
 }
 
 // Calls fn with the pair in the order the interaction expects.
 template <class F>
 void InOrder(McdModelPair *pair, bool swap, F &&fn) {
-    if (swap) Swap(pair);
-    fn();
-    if (swap) Swap(pair);
+  if (swap) Swap(pair);
+  fn();
+  if (swap) Swap(pair);
 }
 
 }  // namespace
@@ -39,90 +39,88 @@ void InOrder(McdModelPair *pair, bool swap, F &&fn) {
 extern "C" {
 
 void MEAPI McdHello(McdModelPair *pair) {
-    static const char *fn = "McdHello";
-    ME_REQUIRE_ARG(pair != nullptr, fn, "pair is NULL");
-    ME_REQUIRE_ARG(pair->model1 && pair->model2, fn, "the pair has a NULL model");
-    if (pair->m_helloed) return;
-    pair->m_helloed = 1;
-    pair->m_interaction = nullptr;
-    pair->m_cachedData = nullptr;
-    McdFramework *fw = pair->model1->framework;
-    if (fw != pair->model2->framework) {
-        MeArgumentWarning(fn, "the models belong to different frameworks; they will not collide");
-        return;
-    }
-    const McdInteractions *e = McdFrameworkGetInteraction(
-        fw, McdGeometryGetTypeId(pair->model1->instance.geometry),
-        McdGeometryGetTypeId(pair->model2->instance.geometry));
-    pair->m_interaction = e;
-    if (e && e->helloFn) InOrder(pair, e->swap != 0, [&] { e->helloFn(pair); });
+  static const char *fn = "McdHello";
+  ME_REQUIRE_ARG(pair != nullptr, fn, "pair is NULL");
+  ME_REQUIRE_ARG(pair->model1 && pair->model2, fn, "the pair has a NULL model");
+  if (pair->m_helloed) return;
+  pair->m_helloed = 1;
+  pair->m_interaction = nullptr;
+  pair->m_cachedData = nullptr;
+  McdFramework *fw = pair->model1->framework;
+  if (fw != pair->model2->framework) {
+    MeArgumentWarning(fn, "the models belong to different frameworks; they will not collide");
+    return;
+  }
+  const McdInteractions *e = McdFrameworkGetInteraction(fw, McdGeometryGetTypeId(pair->model1->instance.geometry),
+                                                        McdGeometryGetTypeId(pair->model2->instance.geometry));
+  pair->m_interaction = e;
+  if (e && e->helloFn) InOrder(pair, e->swap != 0, [&] { e->helloFn(pair); });
 }
 
 void MEAPI McdGoodbye(McdModelPair *pair) {
-    ME_REQUIRE_ARG(pair != nullptr, "McdGoodbye", "pair is NULL");
-    if (!pair->m_helloed) return;
-    const McdInteractions *e = pair->m_interaction;
-    if (e && e->goodbyeFn) InOrder(pair, e->swap != 0, [&] { e->goodbyeFn(pair); });
-    pair->m_interaction = nullptr;
-    pair->m_cachedData = nullptr;
-    pair->m_helloed = 0;
+  ME_REQUIRE_ARG(pair != nullptr, "McdGoodbye", "pair is NULL");
+  if (!pair->m_helloed) return;
+  const McdInteractions *e = pair->m_interaction;
+  if (e && e->goodbyeFn) InOrder(pair, e->swap != 0, [&] { e->goodbyeFn(pair); });
+  pair->m_interaction = nullptr;
+  pair->m_cachedData = nullptr;
+  pair->m_helloed = 0;
 }
 
 MeBool MEAPI McdNearby(McdModelPair *pair) {
-    static const char *fn = "McdNearby";
-    ME_REQUIRE_ARG_RET(pair != nullptr, 0, fn, "pair is NULL");
-    ME_REQUIRE_ARG_RET(pair->model1 && pair->model2, 0, fn, "the pair has a NULL model");
-    const McdGeometryInstance &a = pair->model1->instance, &b = pair->model2->instance;
-    for (int k = 0; k < 3; ++k)
-        if (a.aabbMax[k] < b.aabbMin[k] || b.aabbMax[k] < a.aabbMin[k]) return 0;
-    return 1;
+  static const char *fn = "McdNearby";
+  ME_REQUIRE_ARG_RET(pair != nullptr, 0, fn, "pair is NULL");
+  ME_REQUIRE_ARG_RET(pair->model1 && pair->model2, 0, fn, "the pair has a NULL model");
+  const McdGeometryInstance &a = pair->model1->instance, &b = pair->model2->instance;
+  for (int k = 0; k < 3; ++k)
+    if (a.aabbMax[k] < b.aabbMin[k] || b.aabbMax[k] < a.aabbMin[k]) return 0;
+  return 1;
 }
 
 int MEAPI McdIntersect(McdModelPair *pair, McdIntersectResult *result) {
-    static const char *fn = "McdIntersect";
-    ME_REQUIRE_ARG_RET(result != nullptr, 0, fn, "result is NULL");
-    result->contactCount = 0;
-    result->touch = 0;
-    MeVector3Set(result->normal, 0, 0, 0);
-    ME_REQUIRE_ARG_RET(pair != nullptr, 0, fn, "pair is NULL");
-    ME_REQUIRE_ARG_RET(pair->model1 && pair->model2, 0, fn, "the pair has a NULL model");
-    result->pair = pair;
-    result->model1 = pair->model1;
+  static const char *fn = "McdIntersect";
+  ME_REQUIRE_ARG_RET(result != nullptr, 0, fn, "result is NULL");
+  result->contactCount = 0;
+  result->touch = 0;
+  MeVector3Set(result->normal, 0, 0, 0);
+  ME_REQUIRE_ARG_RET(pair != nullptr, 0, fn, "pair is NULL");
+  ME_REQUIRE_ARG_RET(pair->model1 && pair->model2, 0, fn, "the pair has a NULL model");
+  result->pair = pair;
+  result->model1 = pair->model1;
+  result->model2 = pair->model2;
+  ME_REQUIRE_ARG_RET(result->contactMaxCount >= 0, 0, fn, "result->contactMaxCount is negative (%d)",
+                     result->contactMaxCount);
+  ME_REQUIRE_ARG_RET(result->contacts != nullptr || result->contactMaxCount == 0, 0, fn,
+                     "result->contacts is NULL but contactMaxCount is %d", result->contactMaxCount);
+  ME_REQUIRE_ARG_RET(pair->m_helloed, 0, fn, "call McdHello on the pair first");
+  const McdInteractions *e = pair->m_interaction;
+  if (!e) return 0;  // no interaction for these types: ignored
+  const bool swap = e->swap != 0;
+  // The pair's request may lower the cap for this call only.
+  const int resultCap = result->contactMaxCount;
+  result->contactMaxCount = karma::mcd::EffectiveContactCap(pair, resultCap);
+  InOrder(pair, swap, [&] {
+    result->model1 = pair->model1;  // the interaction's order
     result->model2 = pair->model2;
-    ME_REQUIRE_ARG_RET(result->contactMaxCount >= 0, 0, fn,
-                       "result->contactMaxCount is negative (%d)", result->contactMaxCount);
-    ME_REQUIRE_ARG_RET(result->contacts != nullptr || result->contactMaxCount == 0, 0, fn,
-                       "result->contacts is NULL but contactMaxCount is %d",
-                       result->contactMaxCount);
-    ME_REQUIRE_ARG_RET(pair->m_helloed, 0, fn, "call McdHello on the pair first");
-    const McdInteractions *e = pair->m_interaction;
-    if (!e) return 0;  // no interaction for these types: ignored
-    const bool swap = e->swap != 0;
-    // The pair's request may lower the cap for this call only.
-    const int resultCap = result->contactMaxCount;
-    result->contactMaxCount = karma::mcd::EffectiveContactCap(pair, resultCap);
-    InOrder(pair, swap, [&] {
-        result->model1 = pair->model1;  // the interaction's order
-        result->model2 = pair->model2;
-        e->intersectFn(pair, result);
-    });
-    result->model1 = pair->model1;
-    result->model2 = pair->model2;
-    if (result->contactCount > result->contactMaxCount) result->contactCount = result->contactMaxCount;
-    result->contactMaxCount = resultCap;
-    if (result->contactCount < 0) result->contactCount = 0;
-    if (swap) TurnRound(result);
-    return result->touch;
+    e->intersectFn(pair, result);
+  });
+  result->model1 = pair->model1;
+  result->model2 = pair->model2;
+  if (result->contactCount > result->contactMaxCount) result->contactCount = result->contactMaxCount;
+  result->contactMaxCount = resultCap;
+  if (result->contactCount < 0) result->contactCount = 0;
+  if (swap) TurnRound(result);
+  return result->touch;
 }
 
 void MEAPI McdHelloEach(McdModelPairContainer *pairs) {
-    ME_REQUIRE_ARG(pairs != nullptr, "McdHelloEach", "container is NULL");
-    for (int i = pairs->helloFirst; i < pairs->helloEnd; ++i) McdHello(pairs->array[i]);
+  ME_REQUIRE_ARG(pairs != nullptr, "McdHelloEach", "container is NULL");
+  for (int i = pairs->helloFirst; i < pairs->helloEnd; ++i) McdHello(pairs->array[i]);
 }
 
 void MEAPI McdGoodbyeEach(McdModelPairContainer *pairs) {
-    ME_REQUIRE_ARG(pairs != nullptr, "McdGoodbyeEach", "container is NULL");
-    for (int i = pairs->goodbyeFirst; i < pairs->goodbyeEnd; ++i) McdGoodbye(pairs->array[i]);
+  ME_REQUIRE_ARG(pairs != nullptr, "McdGoodbyeEach", "container is NULL");
+  for (int i = pairs->goodbyeFirst; i < pairs->goodbyeEnd; ++i) McdGoodbye(pairs->array[i]);
 }
 
 }  // extern "C"

@@ -11,17 +11,17 @@ namespace karma::mcd {
 
 // One block from MeMemoryAPI holds the struct and its arrays.
 struct ConvexMesh {
-    McdGeometry g;
-    int vertexCount;
-    int faceCount;
-    MeVector3 *vertices;   // vertexCount
-    MeVector3 *normals;    // faceCount, outward unit
-    int *faceStart;        // faceCount + 1: face f has corners faceStart[f] .. faceStart[f+1]-1
-    int *faceIndex;        // vertex index of each corner, counter-clockwise from outside
-    MeReal fatness;
-    MeReal volume;         // density 1 mass properties of the sharp hull
-    MeVector3 com;
-    MeMatrix3 inertia;     // about com
+  McdGeometry g;
+  int vertexCount;
+  int faceCount;
+  MeVector3 *vertices;  // vertexCount
+  MeVector3 *normals;   // faceCount, outward unit
+  int *faceStart;       // faceCount + 1: face f has corners faceStart[f] .. faceStart[f+1]-1
+  int *faceIndex;       // vertex index of each corner, counter-clockwise from outside
+  MeReal fatness;
+  MeReal volume;  // density 1 mass properties of the sharp hull
+  MeVector3 com;
+  MeMatrix3 inertia;  // about com
 };
 
 using Vec3d = std::array<double, 3>;
@@ -29,9 +29,9 @@ using Vec3d = std::array<double, 3>;
 // A convex polyhedron: vertices (a subset of the input, input order), faces
 // as counter-clockwise vertex loops seen from outside, outward normals.
 struct Hull {
-    std::vector<Vec3d> vertices;
-    std::vector<std::vector<int>> faces;
-    std::vector<Vec3d> normals;
+  std::vector<Vec3d> vertices;
+  std::vector<std::vector<int>> faces;
+  std::vector<Vec3d> normals;
 };
 
 // Builds the hull of the points. False with the reason when the points are

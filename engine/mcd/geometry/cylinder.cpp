@@ -11,31 +11,31 @@ using namespace karma::mcd;
 namespace {
 
 struct Cylinder {
-    McdGeometry g;
-    MeReal radius;
-    MeReal height;
+  McdGeometry g;
+  MeReal radius;
+  MeReal height;
 };
 
 void Aabb(const McdGeometry *g, MECONSTMATRIX MeMatrix4 tm, MeVector3 mn, MeVector3 mx) {
-    auto *c = reinterpret_cast<const Cylinder *>(g);
-    for (int j = 0; j < 3; ++j) {
-        const MeReal a = tm[2][j];
-        const MeReal ak = tm[2][(j + 1) % 3], al = tm[2][(j + 2) % 3];
-        const MeReal disc = std::sqrt(ak * ak + al * al);
-        const MeReal e = std::fabs(a) * c->height / 2 + c->radius * disc;
-        mn[j] = tm[3][j] - e;
-        mx[j] = tm[3][j] + e;
-    }
+  auto *c = reinterpret_cast<const Cylinder *>(g);
+  for (int j = 0; j < 3; ++j) {
+    const MeReal a = tm[2][j];
+    const MeReal ak = tm[2][(j + 1) % 3], al = tm[2][(j + 2) % 3];
+    const MeReal disc = std::sqrt(ak * ak + al * al);
+    const MeReal e = std::fabs(a) * c->height / 2 + c->radius * disc;
+    mn[j] = tm[3][j] - e;
+    mx[j] = tm[3][j] + e;
+  }
 }
 
 bool Mass(const McdGeometry *g, MeReal *volume, MeVector3 com, MeMatrix3 I) {
-    auto *c = reinterpret_cast<const Cylinder *>(g);
-    const MeReal r = c->radius, h = c->height;
-    *volume = ME_PI * r * r * h;
-    MeVector3Set(com, 0, 0, 0);
-    const MeReal side = *volume * (3 * r * r + h * h) / 12;
-    Diagonal(I, side, side, *volume * r * r / 2);
-    return true;
+  auto *c = reinterpret_cast<const Cylinder *>(g);
+  const MeReal r = c->radius, h = c->height;
+  *volume = ME_PI * r * r * h;
+  MeVector3Set(com, 0, 0, 0);
+  const MeReal side = *volume * (3 * r * r + h * h) / 12;
+  Diagonal(I, side, side, *volume * r * r / 2);
+  return true;
 }
 
 }  // namespace
@@ -45,44 +45,41 @@ const GeometryType karma::mcd::kCylinderType = {"Cylinder", nullptr, Aabb, Mass}
 extern "C" {
 
 McdCylinderID MEAPI McdCylinderCreate(McdFrameworkID fw, MeReal radius, MeReal height) {
-    static const char *fn = "McdCylinderCreate";
-    ME_REQUIRE_ARG_RET(PositiveFinite(radius) && PositiveFinite(height), nullptr, fn,
-                       "radius and height must be positive and finite, got %g and %g",
-                       (double)radius, (double)height);
-    McdGeometry *g = NewGeometry(fw, kMcdGeometryTypeCylinder, sizeof(Cylinder), fn);
-    if (g) {
-        reinterpret_cast<Cylinder *>(g)->radius = radius;
-        reinterpret_cast<Cylinder *>(g)->height = height;
-    }
-    return g;
+  static const char *fn = "McdCylinderCreate";
+  ME_REQUIRE_ARG_RET(PositiveFinite(radius) && PositiveFinite(height), nullptr, fn,
+                     "radius and height must be positive and finite, got %g and %g", (double)radius, (double)height);
+  McdGeometry *g = NewGeometry(fw, kMcdGeometryTypeCylinder, sizeof(Cylinder), fn);
+  if (g) {
+    reinterpret_cast<Cylinder *>(g)->radius = radius;
+    reinterpret_cast<Cylinder *>(g)->height = height;
+  }
+  return g;
 }
 
 MeReal MEAPI McdCylinderGetRadius(McdCylinderID g) {
-    auto *c = As<Cylinder>(g, kMcdGeometryTypeCylinder, "McdCylinderGetRadius");
-    return c ? c->radius : 0;
+  auto *c = As<Cylinder>(g, kMcdGeometryTypeCylinder, "McdCylinderGetRadius");
+  return c ? c->radius : 0;
 }
 
 MeReal MEAPI McdCylinderGetHeight(McdCylinderID g) {
-    auto *c = As<Cylinder>(g, kMcdGeometryTypeCylinder, "McdCylinderGetHeight");
-    return c ? c->height : 0;
+  auto *c = As<Cylinder>(g, kMcdGeometryTypeCylinder, "McdCylinderGetHeight");
+  return c ? c->height : 0;
 }
 
 void MEAPI McdCylinderSetRadius(McdCylinderID g, MeReal radius) {
-    static const char *fn = "McdCylinderSetRadius";
-    auto *c = As<Cylinder>(g, kMcdGeometryTypeCylinder, fn);
-    if (!c) return;
-    ME_REQUIRE_ARG(PositiveFinite(radius), fn, "radius must be positive and finite, got %g",
-                   (double)radius);
-    c->radius = radius;
+  static const char *fn = "McdCylinderSetRadius";
+  auto *c = As<Cylinder>(g, kMcdGeometryTypeCylinder, fn);
+  if (!c) return;
+  ME_REQUIRE_ARG(PositiveFinite(radius), fn, "radius must be positive and finite, got %g", (double)radius);
+  c->radius = radius;
 }
 
 void MEAPI McdCylinderSetHeight(McdCylinderID g, MeReal height) {
-    static const char *fn = "McdCylinderSetHeight";
-    auto *c = As<Cylinder>(g, kMcdGeometryTypeCylinder, fn);
-    if (!c) return;
-    ME_REQUIRE_ARG(PositiveFinite(height), fn, "height must be positive and finite, got %g",
-                   (double)height);
-    c->height = height;
+  static const char *fn = "McdCylinderSetHeight";
+  auto *c = As<Cylinder>(g, kMcdGeometryTypeCylinder, fn);
+  if (!c) return;
+  ME_REQUIRE_ARG(PositiveFinite(height), fn, "height must be positive and finite, got %g", (double)height);
+  c->height = height;
 }
 
 }  // extern "C"

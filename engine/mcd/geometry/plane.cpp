@@ -9,14 +9,14 @@ using namespace karma::mcd;
 namespace {
 
 void Aabb(const McdGeometry *, MECONSTMATRIX MeMatrix4 tm, MeVector3 mn, MeVector3 mx) {
-    for (int j = 0; j < 3; ++j) {
-        mn[j] = -MEINFINITY;
-        mx[j] = MEINFINITY;
-    }
-    for (int j = 0; j < 3; ++j) {
-        if (tm[2][j] == 1) mx[j] = tm[3][j];
-        if (tm[2][j] == -1) mn[j] = tm[3][j];
-    }
+  for (int j = 0; j < 3; ++j) {
+    mn[j] = -MEINFINITY;
+    mx[j] = MEINFINITY;
+  }
+  for (int j = 0; j < 3; ++j) {
+    if (tm[2][j] == 1) mx[j] = tm[3][j];
+    if (tm[2][j] == -1) mn[j] = tm[3][j];
+  }
 }
 
 bool Mass(const McdGeometry *, MeReal *, MeVector3, MeMatrix3) { return false; }
@@ -26,5 +26,5 @@ bool Mass(const McdGeometry *, MeReal *, MeVector3, MeMatrix3) { return false; }
 const GeometryType karma::mcd::kPlaneType = {"Plane", nullptr, Aabb, Mass};
 
 extern "C" McdPlaneID MEAPI McdPlaneCreate(McdFrameworkID fw) {
-    return NewGeometry(fw, kMcdGeometryTypePlane, sizeof(McdGeometry), "McdPlaneCreate");
+  return NewGeometry(fw, kMcdGeometryTypePlane, sizeof(McdGeometry), "McdPlaneCreate");
 }

@@ -13,26 +13,25 @@ using namespace karma::mcd;
 extern "C" {
 
 void MEAPI McdModelUpdate(McdModelID m) {
-    static const char *fn = "McdModelUpdate";
-    ME_REQUIRE_ARG(m != nullptr, fn, "model is NULL");
-    ME_REQUIRE_ARG(m->instance.tm != nullptr, fn,
-                   "the model has no transform (McdModelSetTransformPtr or McdModelSetBody)");
-    if (m->relTM) MeMatrix4TMCompose(m->instance.tm, m->relTM, m->linkTM);
-    ME_REQUIRE_ARG(IsFiniteTM(m->instance.tm), fn,
-                   "the model's transform is not finite; its AABB is left as it was");
-    PlaceInstance(&m->instance, m->instance.tm);
-    m->updated = 1;
-    if (m->callback) m->callback(m);
+  static const char *fn = "McdModelUpdate";
+  ME_REQUIRE_ARG(m != nullptr, fn, "model is NULL");
+  ME_REQUIRE_ARG(m->instance.tm != nullptr, fn,
+                 "the model has no transform (McdModelSetTransformPtr or McdModelSetBody)");
+  if (m->relTM) MeMatrix4TMCompose(m->instance.tm, m->relTM, m->linkTM);
+  ME_REQUIRE_ARG(IsFiniteTM(m->instance.tm), fn, "the model's transform is not finite; its AABB is left as it was");
+  PlaceInstance(&m->instance, m->instance.tm);
+  m->updated = 1;
+  if (m->callback) m->callback(m);
 }
 
 void MEAPI McdModelGetAABB(McdModelID m, MeVector3 mn, MeVector3 mx) {
-    static const char *fn = "McdModelGetAABB";
-    ME_REQUIRE_ARG(mn != nullptr && mx != nullptr, fn, "an output vector is NULL");
-    MeVector3Set(mn, 0, 0, 0);
-    MeVector3Set(mx, 0, 0, 0);
-    ME_REQUIRE_ARG(m != nullptr, fn, "model is NULL");
-    MeVector3Copy(mn, m->instance.aabbMin);
-    MeVector3Copy(mx, m->instance.aabbMax);
+  static const char *fn = "McdModelGetAABB";
+  ME_REQUIRE_ARG(mn != nullptr && mx != nullptr, fn, "an output vector is NULL");
+  MeVector3Set(mn, 0, 0, 0);
+  MeVector3Set(mx, 0, 0, 0);
+  ME_REQUIRE_ARG(m != nullptr, fn, "model is NULL");
+  MeVector3Copy(mn, m->instance.aabbMin);
+  MeVector3Copy(mx, m->instance.aabbMax);
 }
 
 }  // extern "C"

@@ -25,31 +25,30 @@ using namespace karma::mcd;
 namespace karma::mcd {
 
 int DispatchPair(McdModelPair *pair, McdIntersectResult *r) {
-    McdFramework *fw = pair->model1->framework;
-    const McdInteractions *e = McdFrameworkGetInteraction(
-        fw, McdGeometryGetTypeId(pair->model1->instance.geometry),
-        McdGeometryGetTypeId(pair->model2->instance.geometry));
-    r->contactCount = 0;
-    r->touch = 0;
-    MeVector3Set(r->normal, 0, 0, 0);
-    if (!e) return 0;
-    if (e->swap) std::swap(pair->model1, pair->model2);
-    r->model1 = pair->model1, r->model2 = pair->model2;
-    e->intersectFn(pair, r);
-    if (e->swap) std::swap(pair->model1, pair->model2);
-    r->model1 = pair->model1, r->model2 = pair->model2;
-    r->contactCount = std::clamp(r->contactCount, 0, r->contactMaxCount);
-    if (e->swap) {
-        for (int i = 0; i < r->contactCount; ++i) {
-            McdContact &c = r->contacts[i];
-            MeVector3Negate(c.normal);
-            std::swap(c.element1, c.element2);
-            const unsigned d = (unsigned)(unsigned short)c.dims;
-            c.dims = (MeI16)(((d & 0xFFu) << 8) | (d >> 8));
-        }
-        MeVector3Negate(r->normal);
+  McdFramework *fw = pair->model1->framework;
+  const McdInteractions *e = McdFrameworkGetInteraction(fw, McdGeometryGetTypeId(pair->model1->instance.geometry),
+                                                        McdGeometryGetTypeId(pair->model2->instance.geometry));
+  r->contactCount = 0;
+  r->touch = 0;
+  MeVector3Set(r->normal, 0, 0, 0);
+  if (!e) return 0;
+  if (e->swap) std::swap(pair->model1, pair->model2);
+  r->model1 = pair->model1, r->model2 = pair->model2;
+  e->intersectFn(pair, r);
+  if (e->swap) std::swap(pair->model1, pair->model2);
+  r->model1 = pair->model1, r->model2 = pair->model2;
+  r->contactCount = std::clamp(r->contactCount, 0, r->contactMaxCount);
+  if (e->swap) {
+    for (int i = 0; i < r->contactCount; ++i) {
+      McdContact &c = r->contacts[i];
+      MeVector3Negate(c.normal);
+      std::swap(c.element1, c.element2);
+      const unsigned d = (unsigned)(unsigned short)c.dims;
+      c.dims = (MeI16)(((d & 0xFFu) << 8) | (d >> 8));
     }
-    return r->touch;
+    MeVector3Negate(r->normal);
+  }
+  return r->touch;
 }
 
 }  // namespace karma::mcd
@@ -57,57 +56,55 @@ int DispatchPair(McdModelPair *pair, McdIntersectResult *r) {
 namespace {
 
 bool Overlap(const McdGeometryInstance &a, const McdGeometryInstance &b, MeReal tol) {
-    for (int k = 0; k < 3; ++k)
-        if (a.aabbMax[k] + tol < b.aabbMin[k] || b.aabbMax[k] + tol < a.aabbMin[k]) return false;
-    return true;
+  for (int k = 0; k < 3; ++k)
+    if (a.aabbMax[k] + tol < b.aabbMin[k] || b.aabbMax[k] + tol < a.aabbMin[k]) return false;
+  return true;
 }
 
 int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
-    const McdModel *agg = p->model1;
-    const McdGeometryInstance &top = agg->instance;
-    const MeReal tol = ContactTolerance(agg->framework);
-    const int room = std::max(r->contactMaxCount, 1);
-    std::vector<McdContact> merged, scratch((std::size_t)std::max(room, 16));
-    int touch = 0;
-    for (int i = 0; i < top.childCount; ++i) {
-        const McdGeometryInstance *child = top.children[i];
-        if (!Overlap(*child, p->model2->instance, tol)) continue;
-        McdModel stand = *agg;  // the child as a model of its own
-        stand.instance = *child;
-        McdModelPair sub = *p;
-        sub.model1 = &stand;
-        sub.m_cachedData = nullptr;
-        McdIntersectResult sr{};
-        sr.pair = p;
-        sr.contacts = scratch.data();
-        sr.contactMaxCount = (int)scratch.size();
-        if (!DispatchPair(&sub, &sr)) continue;
-        touch = 1;
-        const bool leaf = child->childCount == 0;
-        for (int k = 0; k < sr.contactCount; ++k) {
-            if (leaf) scratch[k].element1.ptr = const_cast<McdGeometryInstance *>(child);
-            scratch[k].feature = feature::Mix((MeU32)i + 1, scratch[k].feature);
-            merged.push_back(scratch[k]);
-        }
+  const McdModel *agg = p->model1;
+  const McdGeometryInstance &top = agg->instance;
+  const MeReal tol = ContactTolerance(agg->framework);
+  const int room = std::max(r->contactMaxCount, 1);
+  std::vector<McdContact> merged, scratch((std::size_t)std::max(room, 16));
+  int touch = 0;
+  for (int i = 0; i < top.childCount; ++i) {
+    const McdGeometryInstance *child = top.children[i];
+    if (!Overlap(*child, p->model2->instance, tol)) continue;
+    McdModel stand = *agg;  // the child as a model of its own
+    stand.instance = *child;
+    McdModelPair sub = *p;
+    sub.model1 = &stand;
+    sub.m_cachedData = nullptr;
+    McdIntersectResult sr{};
+    sr.pair = p;
+    sr.contacts = scratch.data();
+    sr.contactMaxCount = (int)scratch.size();
+    if (!DispatchPair(&sub, &sr)) continue;
+    touch = 1;
+    const bool leaf = child->childCount == 0;
+    for (int k = 0; k < sr.contactCount; ++k) {
+      if (leaf) scratch[k].element1.ptr = const_cast<McdGeometryInstance *>(child);
+      scratch[k].feature = feature::Mix((MeU32)i + 1, scratch[k].feature);
+      merged.push_back(scratch[k]);
     }
-    if (!touch) return 0;
-    std::stable_sort(merged.begin(), merged.end(), [](const McdContact &a, const McdContact &b) {
-        return a.separation < b.separation;
-    });
-    const int n = std::min((int)merged.size(), r->contactMaxCount);
-    const int first = r->contactCount;
-    for (int k = 0; k < n; ++k) r->contacts[r->contactCount++] = merged[k];
-    feature::MakeDistinct(r->contacts, first, r->contactCount);
-    if (!merged.empty()) MeVector3Copy(r->normal, merged[0].normal);
-    r->touch = 1;
-    return 1;
+  }
+  if (!touch) return 0;
+  std::stable_sort(merged.begin(), merged.end(),
+                   [](const McdContact &a, const McdContact &b) { return a.separation < b.separation; });
+  const int n = std::min((int)merged.size(), r->contactMaxCount);
+  const int first = r->contactCount;
+  for (int k = 0; k < n; ++k) r->contacts[r->contactCount++] = merged[k];
+  feature::MakeDistinct(r->contacts, first, r->contactCount);
+  if (!merged.empty()) MeVector3Copy(r->normal, merged[0].normal);
+  r->touch = 1;
+  return 1;
 }
 
 }  // namespace
 
 extern "C" void MEAPI McdAggregateRegisterInteractions(McdFrameworkID fw) {
-    McdInteractions fns{};
-    fns.intersectFn = Intersect;
-    for (int t = 0; t < kMcdGeometryBuiltInTypes; ++t)
-        RegisterInteractionQuietly(fw, kMcdGeometryTypeAggregate, t, fns);
+  McdInteractions fns{};
+  fns.intersectFn = Intersect;
+  for (int t = 0; t < kMcdGeometryBuiltInTypes; ++t) RegisterInteractionQuietly(fw, kMcdGeometryTypeAggregate, t, fns);
 }

@@ -22,58 +22,56 @@ using namespace karma::mcd;
 namespace {
 
 int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
-    MeVector3 half;
-    McdBoxGetRadii(p->model1->instance.geometry, half);
-    const MeMatrix4Ptr box = ModelTM(p->model1), plane = ModelTM(p->model2);
-    const MeReal *n = plane[2];
-    const MeReal tol = ContactTolerance(p->model1->framework);
-    MeVector3 corner[8];
-    MeReal height[8];
-    int touching[8], count = 0;
-    for (int k = 0; k < 8; ++k) {
-        MeVector3Copy(corner[k], box[3]);
-        for (int i = 0; i < 3; ++i)
-            MeVector3MultiplyAdd(corner[k], ((k >> i) & 1) ? half[i] : -half[i], box[i]);
-        MeVector3 d;
-        MeVector3Subtract(d, corner[k], plane[3]);
-        height[k] = MeVector3Dot(d, n);
-        if (height[k] <= tol) touching[count++] = k;
-    }
-    if (count == 0) return 0;
-    // A thin box can touch with more than 4 corners: keep 4 spread over the
-    // plane (contact_reduce.h, in the plane's axes).
-    if (count > 4) {
-        ReducePoint rp[8];
-        for (int j = 0; j < count; ++j) {
-            const int k = touching[j];
-            rp[j] = {(double)MeVector3Dot(corner[k], plane[0]),
-                     (double)MeVector3Dot(corner[k], plane[1]), -(double)height[k]};
-        }
-        int keep[4];
-        const MeReal thin = std::fmin(std::fmin(half[0], half[1]), half[2]);
-        const MeReal slack = std::fmax(tol, (MeReal)1e-3 * thin);
-        count = ReduceToFour(rp, count, slack, keep);
-        for (int j = 0; j < count; ++j) touching[j] = touching[keep[j]];
-    }
-    // Deepest first; ties keep corner order, so the result is deterministic.
-    std::stable_sort(touching, touching + count,
-                     [&](int a, int b) { return height[a] < height[b]; });
+  MeVector3 half;
+  McdBoxGetRadii(p->model1->instance.geometry, half);
+  const MeMatrix4Ptr box = ModelTM(p->model1), plane = ModelTM(p->model2);
+  const MeReal *n = plane[2];
+  const MeReal tol = ContactTolerance(p->model1->framework);
+  MeVector3 corner[8];
+  MeReal height[8];
+  int touching[8], count = 0;
+  for (int k = 0; k < 8; ++k) {
+    MeVector3Copy(corner[k], box[3]);
+    for (int i = 0; i < 3; ++i) MeVector3MultiplyAdd(corner[k], ((k >> i) & 1) ? half[i] : -half[i], box[i]);
+    MeVector3 d;
+    MeVector3Subtract(d, corner[k], plane[3]);
+    height[k] = MeVector3Dot(d, n);
+    if (height[k] <= tol) touching[count++] = k;
+  }
+  if (count == 0) return 0;
+  // A thin box can touch with more than 4 corners: keep 4 spread over the
+  // plane (contact_reduce.h, in the plane's axes).
+  if (count > 4) {
+    ReducePoint rp[8];
     for (int j = 0; j < count; ++j) {
-        const int k = touching[j];
-        MeVector3 pos;
-        MeVector3Copy(pos, corner[k]);
-        MeVector3MultiplyAdd(pos, -height[k] / 2, n);
-        if (!Emit(r, pos, n, height[k], 0, 2, feature::Pack(feature::kBoxPlane, (MeU32)k))) break;
+      const int k = touching[j];
+      rp[j] = {(double)MeVector3Dot(corner[k], plane[0]), (double)MeVector3Dot(corner[k], plane[1]),
+               -(double)height[k]};
     }
-    MeVector3Copy(r->normal, n);
-    r->touch = 1;
-    return 1;
+    int keep[4];
+    const MeReal thin = std::fmin(std::fmin(half[0], half[1]), half[2]);
+    const MeReal slack = std::fmax(tol, (MeReal)1e-3 * thin);
+    count = ReduceToFour(rp, count, slack, keep);
+    for (int j = 0; j < count; ++j) touching[j] = touching[keep[j]];
+  }
+  // Deepest first; ties keep corner order, so the result is deterministic.
+  std::stable_sort(touching, touching + count, [&](int a, int b) { return height[a] < height[b]; });
+  for (int j = 0; j < count; ++j) {
+    const int k = touching[j];
+    MeVector3 pos;
+    MeVector3Copy(pos, corner[k]);
+    MeVector3MultiplyAdd(pos, -height[k] / 2, n);
+    if (!Emit(r, pos, n, height[k], 0, 2, feature::Pack(feature::kBoxPlane, (MeU32)k))) break;
+  }
+  MeVector3Copy(r->normal, n);
+  r->touch = 1;
+  return 1;
 }
 
 }  // namespace
 
 extern "C" void MEAPI McdBoxPlaneRegisterInteraction(McdFrameworkID fw) {
-    McdInteractions fns{};
-    fns.intersectFn = Intersect;
-    RegisterInteractionQuietly(fw, kMcdGeometryTypeBox, kMcdGeometryTypePlane, fns);
+  McdInteractions fns{};
+  fns.intersectFn = Intersect;
+  RegisterInteractionQuietly(fw, kMcdGeometryTypeBox, kMcdGeometryTypePlane, fns);
 }

@@ -28,47 +28,47 @@
 namespace karma::mcd {
 
 struct ReducePoint {
-    double x, y, depth;
+  double x, y, depth;
 };
 
 // Writes the indices of the kept candidates (at most 4, increasing) to
 // keep[] and returns their count; n <= 4 keeps all.
 inline int ReduceToFour(const ReducePoint *pts, int n, double slack, int keep[4]) {
-    if (n <= 4) {
-        for (int i = 0; i < n; ++i) keep[i] = i;
-        return n;
+  if (n <= 4) {
+    for (int i = 0; i < n; ++i) keep[i] = i;
+    return n;
+  }
+  static constexpr double kC = 0.92387953251128674, kS = 0.38268343236508978;  // 22.5 deg
+  static constexpr double kDir[4][2] = {{kC, kS}, {-kS, kC}, {-kC, -kS}, {kS, -kC}};
+  bool chosen[64] = {};
+  int count = 0;
+  for (const auto &w : kDir) {
+    int pick = 0;
+    double best = -INFINITY;
+    for (int i = 0; i < n && i < 64; ++i) {
+      const double s = pts[i].x * w[0] + pts[i].y * w[1];
+      if (s > best) best = s, pick = i;
     }
-    static constexpr double kC = 0.92387953251128674, kS = 0.38268343236508978;  // 22.5 deg
-    static constexpr double kDir[4][2] = {{kC, kS}, {-kS, kC}, {-kC, -kS}, {kS, -kC}};
-    bool chosen[64] = {};
-    int count = 0;
-    for (const auto &w : kDir) {
-        int pick = 0;
-        double best = -INFINITY;
-        for (int i = 0; i < n && i < 64; ++i) {
-            const double s = pts[i].x * w[0] + pts[i].y * w[1];
-            if (s > best) best = s, pick = i;
-        }
-        if (!chosen[pick]) chosen[pick] = true, ++count;
+    if (!chosen[pick]) chosen[pick] = true, ++count;
+  }
+  int deepest = 0;
+  for (int i = 1; i < n && i < 64; ++i)
+    if (pts[i].depth > pts[deepest].depth) deepest = i;
+  if (!chosen[deepest]) {
+    double keptDepth = -INFINITY, near = INFINITY;
+    int nearest = -1;
+    for (int i = 0; i < n && i < 64; ++i) {
+      if (!chosen[i]) continue;
+      keptDepth = std::fmax(keptDepth, pts[i].depth);
+      const double d = std::hypot(pts[i].x - pts[deepest].x, pts[i].y - pts[deepest].y);
+      if (d < near) near = d, nearest = i;
     }
-    int deepest = 0;
-    for (int i = 1; i < n && i < 64; ++i)
-        if (pts[i].depth > pts[deepest].depth) deepest = i;
-    if (!chosen[deepest]) {
-        double keptDepth = -INFINITY, near = INFINITY;
-        int nearest = -1;
-        for (int i = 0; i < n && i < 64; ++i) {
-            if (!chosen[i]) continue;
-            keptDepth = std::fmax(keptDepth, pts[i].depth);
-            const double d = std::hypot(pts[i].x - pts[deepest].x, pts[i].y - pts[deepest].y);
-            if (d < near) near = d, nearest = i;
-        }
-        if (pts[deepest].depth > keptDepth + slack) chosen[nearest] = false, chosen[deepest] = true;
-    }
-    int k = 0;
-    for (int i = 0; i < n && i < 64; ++i)
-        if (chosen[i]) keep[k++] = i;
-    return k;
+    if (pts[deepest].depth > keptDepth + slack) chosen[nearest] = false, chosen[deepest] = true;
+  }
+  int k = 0;
+  for (int i = 0; i < n && i < 64; ++i)
+    if (chosen[i]) keep[k++] = i;
+  return k;
 }
 
 }  // namespace karma::mcd

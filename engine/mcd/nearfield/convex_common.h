@@ -10,8 +10,7 @@ namespace karma::mcd {
 
 // A (model1) against B (model2) through libccd and the manifold builder;
 // fills r (Emit) and returns touch.
-int ConvexIntersect(const convex::Shape &a, const convex::Shape &b, double tol,
-                    McdIntersectResult *r);
+int ConvexIntersect(const convex::Shape &a, const convex::Shape &b, double tol, McdIntersectResult *r);
 
 // Runs the table's interaction for the pair as it stands (model1, model2),
 // turning a mirrored entry round like McdIntersect does. The result's

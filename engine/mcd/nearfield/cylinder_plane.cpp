@@ -27,43 +27,42 @@ namespace {
 constexpr int kRimPoints = 8;
 
 int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
-    McdGeometry *g = p->model1->instance.geometry;
-    const MeReal R = McdCylinderGetRadius(g), H = McdCylinderGetHeight(g) / 2;
-    const Frame cyl(p->model1), plane(p->model2);
-    const V3 n = plane.axis[2], a = cyl.axis[2];
-    const MeReal tol = ContactTolerance(p->model1->framework);
-    V3 u = Dot(n, a) * a - n;
-    const MeReal ulen = Norm(u);
-    u = ulen >= (MeReal)0.035 ? (1 / ulen) * u : cyl.axis[0];
-    const V3 v = Cross(a, u);
-    V3 pts[2 * kRimPoints];
-    MeReal h[2 * kRimPoints];
-    int order[2 * kRimPoints], count = 0;
-    const MeReal cap[2] = {-H, H};
-    for (int e = 0; e < 2; ++e) {
-        const V3 centre = cyl.o + cap[e] * a;
-        for (int k = 0; k < kRimPoints; ++k) {
-            const MeReal phi = (MeReal)(2 * ME_PI) * (MeReal)k / kRimPoints;
-            const int i = e * kRimPoints + k;
-            pts[i] = centre + R * (std::cos(phi) * u + std::sin(phi) * v);
-            h[i] = Dot(pts[i] - plane.o, n);
-            if (h[i] <= tol) order[count++] = i;
-        }
+  McdGeometry *g = p->model1->instance.geometry;
+  const MeReal R = McdCylinderGetRadius(g), H = McdCylinderGetHeight(g) / 2;
+  const Frame cyl(p->model1), plane(p->model2);
+  const V3 n = plane.axis[2], a = cyl.axis[2];
+  const MeReal tol = ContactTolerance(p->model1->framework);
+  V3 u = Dot(n, a) * a - n;
+  const MeReal ulen = Norm(u);
+  u = ulen >= (MeReal)0.035 ? (1 / ulen) * u : cyl.axis[0];
+  const V3 v = Cross(a, u);
+  V3 pts[2 * kRimPoints];
+  MeReal h[2 * kRimPoints];
+  int order[2 * kRimPoints], count = 0;
+  const MeReal cap[2] = {-H, H};
+  for (int e = 0; e < 2; ++e) {
+    const V3 centre = cyl.o + cap[e] * a;
+    for (int k = 0; k < kRimPoints; ++k) {
+      const MeReal phi = (MeReal)(2 * ME_PI) * (MeReal)k / kRimPoints;
+      const int i = e * kRimPoints + k;
+      pts[i] = centre + R * (std::cos(phi) * u + std::sin(phi) * v);
+      h[i] = Dot(pts[i] - plane.o, n);
+      if (h[i] <= tol) order[count++] = i;
     }
-    std::stable_sort(order, order + count, [&](int x, int y) { return h[x] < h[y]; });
-    for (int j = 0; j < count; ++j) {
-        const int i = order[j];
-        const MeU32 id = feature::Pack(feature::kCylinderPlane, (MeU32)(i / kRimPoints),
-                                      (MeU32)(i % kRimPoints));
-        if (!EmitV(r, pts[i] - (MeReal)0.5 * h[i] * n, n, h[i], 1, 2, id)) break;
-    }
-    return Finish(r, n);
+  }
+  std::stable_sort(order, order + count, [&](int x, int y) { return h[x] < h[y]; });
+  for (int j = 0; j < count; ++j) {
+    const int i = order[j];
+    const MeU32 id = feature::Pack(feature::kCylinderPlane, (MeU32)(i / kRimPoints), (MeU32)(i % kRimPoints));
+    if (!EmitV(r, pts[i] - (MeReal)0.5 * h[i] * n, n, h[i], 1, 2, id)) break;
+  }
+  return Finish(r, n);
 }
 
 }  // namespace
 
 extern "C" void MEAPI McdCylinderPlaneRegisterInteraction(McdFrameworkID fw) {
-    McdInteractions fns{};
-    fns.intersectFn = Intersect;
-    RegisterInteractionQuietly(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypePlane, fns);
+  McdInteractions fns{};
+  fns.intersectFn = Intersect;
+  RegisterInteractionQuietly(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypePlane, fns);
 }

@@ -57,62 +57,62 @@
 namespace karma::mcd::feature {
 
 enum Kind : MeU32 {
-    kSingle = 1,
-    kBoxFace1,
-    kBoxFace2,
-    kBoxEdge,
-    kBoxPlane,
-    kCylinderPlane,
-    kSphylPlane,
-    kSphylPair,
-    kSphylBoxFace,
-    kConvexPlane,
-    kConvex,
+  kSingle = 1,
+  kBoxFace1,
+  kBoxFace2,
+  kBoxEdge,
+  kBoxPlane,
+  kCylinderPlane,
+  kSphylPlane,
+  kSphylPair,
+  kSphylBoxFace,
+  kConvexPlane,
+  kConvex,
 };
 
 // Tags of the single-contact pairs (field a of kSingle).
 enum SingleTag : MeU32 {
-    kSphereSphere = 1,
-    kSpherePlane,
-    kSphereBox,
-    kSphereCylinder,
-    kSphereSphyl,
-    kSphylSphyl,
-    kSphylBox,
-    kBoxBoxFallback,
-    kSphereTriangle,
+  kSphereSphere = 1,
+  kSpherePlane,
+  kSphereBox,
+  kSphereCylinder,
+  kSphereSphyl,
+  kSphylSphyl,
+  kSphylBox,
+  kBoxBoxFallback,
+  kSphereTriangle,
 };
 
 inline constexpr MeU32 Pack(MeU32 kind, MeU32 a, MeU32 b = 0, MeU32 c = 0) {
-    return kind << 24 | (a & 0xFFu) << 16 | (b & 0xFFu) << 8 | (c & 0xFFu);
+  return kind << 24 | (a & 0xFFu) << 16 | (b & 0xFFu) << 8 | (c & 0xFFu);
 }
 inline constexpr MeU32 Pack24(MeU32 kind, MeU32 v) { return kind << 24 | (v & 0xFFFFFFu); }
 
 // A 32-bit mix of two values (the murmur3 finaliser applied to a
 // combination); never 0.
 inline constexpr MeU32 Mix(MeU32 x, MeU32 y) {
-    MeU32 h = x * 0x9E3779B1u ^ (y + 0x7F4A7C15u + (x << 6) + (x >> 2));
-    h ^= h >> 16;
-    h *= 0x85EBCA6Bu;
-    h ^= h >> 13;
-    h *= 0xC2B2AE35u;
-    h ^= h >> 16;
-    return h ? h : 1u;
+  MeU32 h = x * 0x9E3779B1u ^ (y + 0x7F4A7C15u + (x << 6) + (x >> 2));
+  h ^= h >> 16;
+  h *= 0x85EBCA6Bu;
+  h ^= h >> 13;
+  h *= 0xC2B2AE35u;
+  h ^= h >> 16;
+  return h ? h : 1u;
 }
 
 // Makes the ids of contacts[first, end) distinct and nonzero: a repeated
 // id (a hash collision) is re-mixed until it is new. Deterministic: the
 // earlier contact keeps its id.
 inline void MakeDistinct(McdContact *contacts, int first, int end) {
-    for (int i = first; i < end; ++i) {
-        MeU32 &f = contacts[i].feature;
-        if (f == 0) f = 1;
-        for (bool clash = true; clash;) {
-            clash = false;
-            for (int j = first; j < i && !clash; ++j) clash = contacts[j].feature == f;
-            if (clash) f = Mix(f, 0x5BD1E995u);
-        }
+  for (int i = first; i < end; ++i) {
+    MeU32 &f = contacts[i].feature;
+    if (f == 0) f = 1;
+    for (bool clash = true; clash;) {
+      clash = false;
+      for (int j = first; j < i && !clash; ++j) clash = contacts[j].feature == f;
+      if (clash) f = Mix(f, 0x5BD1E995u);
     }
+  }
 }
 
 }  // namespace karma::mcd::feature

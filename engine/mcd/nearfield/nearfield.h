@@ -37,30 +37,29 @@ inline MeMatrix4Ptr ModelTM(const McdModel *m) { return m->instance.tm; }
 // same whichever model an aggregate's stand-in copy is, so (a, b) and
 // (b, a) give mirrored contacts with the same feature ids.
 inline bool ComputedFirst(const McdModel *a, const McdModel *b) {
-    const MeI32 ka = EffectiveSortKey(a), kb = EffectiveSortKey(b);
-    if (ka != kb) return ka < kb;
-    const std::less<const void *> before;
-    if (a->instance.tm != b->instance.tm) return before(a->instance.tm, b->instance.tm);
-    if (a->instance.geometry != b->instance.geometry)
-        return before(a->instance.geometry, b->instance.geometry);
-    return !before(b, a);
+  const MeI32 ka = EffectiveSortKey(a), kb = EffectiveSortKey(b);
+  if (ka != kb) return ka < kb;
+  const std::less<const void *> before;
+  if (a->instance.tm != b->instance.tm) return before(a->instance.tm, b->instance.tm);
+  if (a->instance.geometry != b->instance.geometry) return before(a->instance.geometry, b->instance.geometry);
+  return !before(b, a);
 }
 
 // Appends a contact if there is room; returns false when the buffer is full.
 // `feature` is the contact's feature id (its encoding: feature_id.h).
-inline bool Emit(McdIntersectResult *r, const MeVector3 position, const MeVector3 normal,
-                 MeReal separation, int dims1, int dims2, MeU32 feature) {
-    if (r->contactCount >= r->contactMaxCount) return false;
-    McdContact &c = r->contacts[r->contactCount++];
-    MeVector3Copy(c.position, position);
-    MeVector3Copy(c.normal, normal);
-    c.separation = separation;
-    c.dims = (MeI16)((dims1 & 0xFF) | ((dims2 & 0xFF) << 8));
-    c.spare = 0;
-    c.element1.ptr = nullptr;
-    c.element2.ptr = nullptr;
-    c.feature = feature;
-    return true;
+inline bool Emit(McdIntersectResult *r, const MeVector3 position, const MeVector3 normal, MeReal separation, int dims1,
+                 int dims2, MeU32 feature) {
+  if (r->contactCount >= r->contactMaxCount) return false;
+  McdContact &c = r->contacts[r->contactCount++];
+  MeVector3Copy(c.position, position);
+  MeVector3Copy(c.normal, normal);
+  c.separation = separation;
+  c.dims = (MeI16)((dims1 & 0xFF) | ((dims2 & 0xFF) << 8));
+  c.spare = 0;
+  c.element1.ptr = nullptr;
+  c.element2.ptr = nullptr;
+  c.feature = feature;
+  return true;
 }
 
 }  // namespace karma::mcd

@@ -14,28 +14,28 @@ using namespace karma::mcd;
 namespace {
 
 int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
-    const MeReal radius = McdSphereGetRadius(p->model1->instance.geometry);
-    const MeReal *c = ModelTM(p->model1)[3];
-    const MeMatrix4Ptr plane = ModelTM(p->model2);
-    const MeReal *n = plane[2];
-    MeVector3 d;
-    MeVector3Subtract(d, c, plane[3]);
-    const MeReal h = MeVector3Dot(d, n);
-    const MeReal s = h - radius;
-    if (s > ContactTolerance(p->model1->framework)) return 0;
-    MeVector3 pos;
-    MeVector3Copy(pos, c);
-    MeVector3MultiplyAdd(pos, -(radius + h) / 2, n);
-    Emit(r, pos, n, s, 2, 2, feature::Pack(feature::kSingle, feature::kSpherePlane));
-    MeVector3Copy(r->normal, n);
-    r->touch = 1;
-    return 1;
+  const MeReal radius = McdSphereGetRadius(p->model1->instance.geometry);
+  const MeReal *c = ModelTM(p->model1)[3];
+  const MeMatrix4Ptr plane = ModelTM(p->model2);
+  const MeReal *n = plane[2];
+  MeVector3 d;
+  MeVector3Subtract(d, c, plane[3]);
+  const MeReal h = MeVector3Dot(d, n);
+  const MeReal s = h - radius;
+  if (s > ContactTolerance(p->model1->framework)) return 0;
+  MeVector3 pos;
+  MeVector3Copy(pos, c);
+  MeVector3MultiplyAdd(pos, -(radius + h) / 2, n);
+  Emit(r, pos, n, s, 2, 2, feature::Pack(feature::kSingle, feature::kSpherePlane));
+  MeVector3Copy(r->normal, n);
+  r->touch = 1;
+  return 1;
 }
 
 }  // namespace
 
 extern "C" void MEAPI McdSpherePlaneRegisterInteraction(McdFrameworkID fw) {
-    McdInteractions fns{};
-    fns.intersectFn = Intersect;
-    RegisterInteractionQuietly(fw, kMcdGeometryTypeSphere, kMcdGeometryTypePlane, fns);
+  McdInteractions fns{};
+  fns.intersectFn = Intersect;
+  RegisterInteractionQuietly(fw, kMcdGeometryTypeSphere, kMcdGeometryTypePlane, fns);
 }

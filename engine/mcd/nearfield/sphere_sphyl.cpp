@@ -14,27 +14,27 @@ using namespace karma::mcd::prim;
 namespace {
 
 int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
-    const MeReal r1 = McdSphereGetRadius(p->model1->instance.geometry);
-    McdGeometry *g = p->model2->instance.geometry;
-    const MeReal R = McdSphylGetRadius(g), H = McdSphylGetHeight(g) / 2;
-    const Frame sphyl(p->model2);
-    const V3 c(ModelTM(p->model1)[3]);
-    const V3 e0 = sphyl.o - H * sphyl.axis[2], e1 = sphyl.o + H * sphyl.axis[2];
-    const V3 k = e0 + ClosestOnSegment(e0, e1, c) * (e1 - e0);
-    V3 n = c - k;
-    const MeReal dist = Norm(n);
-    const MeReal s = dist - r1 - R;
-    if (s > ContactTolerance(p->model1->framework)) return 0;
-    n = dist > 0 ? (1 / dist) * n : sphyl.axis[0];
-    EmitV(r, (MeReal)0.5 * ((c - r1 * n) + (k + R * n)), n, s, 2, 2,
-          feature::Pack(feature::kSingle, feature::kSphereSphyl));
-    return Finish(r, n);
+  const MeReal r1 = McdSphereGetRadius(p->model1->instance.geometry);
+  McdGeometry *g = p->model2->instance.geometry;
+  const MeReal R = McdSphylGetRadius(g), H = McdSphylGetHeight(g) / 2;
+  const Frame sphyl(p->model2);
+  const V3 c(ModelTM(p->model1)[3]);
+  const V3 e0 = sphyl.o - H * sphyl.axis[2], e1 = sphyl.o + H * sphyl.axis[2];
+  const V3 k = e0 + ClosestOnSegment(e0, e1, c) * (e1 - e0);
+  V3 n = c - k;
+  const MeReal dist = Norm(n);
+  const MeReal s = dist - r1 - R;
+  if (s > ContactTolerance(p->model1->framework)) return 0;
+  n = dist > 0 ? (1 / dist) * n : sphyl.axis[0];
+  EmitV(r, (MeReal)0.5 * ((c - r1 * n) + (k + R * n)), n, s, 2, 2,
+        feature::Pack(feature::kSingle, feature::kSphereSphyl));
+  return Finish(r, n);
 }
 
 }  // namespace
 
 extern "C" void MEAPI McdSphereSphylRegisterInteraction(McdFrameworkID fw) {
-    McdInteractions fns{};
-    fns.intersectFn = Intersect;
-    RegisterInteractionQuietly(fw, kMcdGeometryTypeSphere, kMcdGeometryTypeSphyl, fns);
+  McdInteractions fns{};
+  fns.intersectFn = Intersect;
+  RegisterInteractionQuietly(fw, kMcdGeometryTypeSphere, kMcdGeometryTypeSphyl, fns);
 }

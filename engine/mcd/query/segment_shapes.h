@@ -18,21 +18,19 @@
 namespace karma::mcd::query {
 
 struct SegmentHit {
-    MeReal t = 0;
-    MeVector3 normal = {0, 0, 0};
+  MeReal t = 0;
+  MeVector3 normal = {0, 0, 0};
 };
 
 bool SegmentSphere(const MeVector3 a, const MeVector3 b, MeReal r, SegmentHit &hit);
 bool SegmentBox(const MeVector3 a, const MeVector3 b, const MeVector3 half, SegmentHit &hit);
-bool SegmentCylinder(const MeVector3 a, const MeVector3 b, MeReal r, MeReal height,
-                     SegmentHit &hit);
-bool SegmentSphyl(const MeVector3 a, const MeVector3 b, MeReal r, MeReal height,
-                  SegmentHit &hit);
+bool SegmentCylinder(const MeVector3 a, const MeVector3 b, MeReal r, MeReal height, SegmentHit &hit);
+bool SegmentSphyl(const MeVector3 a, const MeVector3 b, MeReal r, MeReal height, SegmentHit &hit);
 bool SegmentPlane(const MeVector3 a, const MeVector3 b, SegmentHit &hit);
 
 // A convex solid given by `count` faces, face i being n_i . p <= d_i with
 // n_i a unit outward normal (Cyrus-Beck clipping).
-bool SegmentHalfSpaces(const MeVector3 a, const MeVector3 b, const MeVector3 *normals,
-                       const MeReal *offsets, int count, SegmentHit &hit);
+bool SegmentHalfSpaces(const MeVector3 a, const MeVector3 b, const MeVector3 *normals, const MeReal *offsets, int count,
+                       SegmentHit &hit);
 
 }  // namespace karma::mcd::query

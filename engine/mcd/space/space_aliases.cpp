@@ -13,8 +13,6 @@ MeBool MEAPI McdSpaceIsFrozen(McdModelID model) { return McdSpaceModelIsFrozen(m
 
 MeBool MEAPI McdUnfreezeInSpace(McdModelID model) { return McdSpaceUnfreezeModel(model); }
 
-MeBool MEAPI McdDisablePair(McdModelID model1, McdModelID model2) {
-    return McdSpaceDisablePair(model1, model2);
-}
+MeBool MEAPI McdDisablePair(McdModelID model1, McdModelID model2) { return McdSpaceDisablePair(model1, model2); }
 
 }  // extern "C"

@@ -23,12 +23,12 @@
 #include <vector>
 
 struct McdSpace {
-    karma::mcd::AxisSortSpace *core;
-    McdFramework *framework;
-    McdModelPair *pairs;  // pairCount, MeMemoryAPI
-    int pairCount;
-    McdSpaceAABBFnPtr aabbFn;
-    std::vector<const karma::mcd::PairRecord *> chunk;
+  karma::mcd::AxisSortSpace *core;
+  McdFramework *framework;
+  McdModelPair *pairs;  // pairCount, MeMemoryAPI
+  int pairCount;
+  McdSpaceAABBFnPtr aabbFn;
+  std::vector<const karma::mcd::PairRecord *> chunk;
 };
 
 namespace karma::mcd {

@@ -21,59 +21,56 @@ using namespace karma::mcd;
 namespace karma::mcd {
 
 void SpaceAabb(const McdSpace *s, McdModelID m, MeReal min[3], MeReal max[3]) {
-    if (s->aabbFn) {
-        s->aabbFn(m, min, max);
-    } else {
-        for (int k = 0; k < 3; ++k) {
-            min[k] = m->instance.aabbMin[k];
-            max[k] = m->instance.aabbMax[k];
-        }
-    }
-    const MeReal pad = ContactTolerance(s->framework) + m->boundsPadding;
+  if (s->aabbFn) {
+    s->aabbFn(m, min, max);
+  } else {
     for (int k = 0; k < 3; ++k) {
-        min[k] -= pad;
-        max[k] += pad;
+      min[k] = m->instance.aabbMin[k];
+      max[k] = m->instance.aabbMax[k];
     }
+  }
+  const MeReal pad = ContactTolerance(s->framework) + m->boundsPadding;
+  for (int k = 0; k < 3; ++k) {
+    min[k] -= pad;
+    max[k] += pad;
+  }
 }
 
 void RefreshSpaceSortKey(McdModel *m) {
-    if (!m->space) return;
-    static_cast<McdSpace *>(m->space)->core->SetKey(m->spaceIndex,
-                                                    static_cast<std::uint32_t>(EffectiveSortKey(m)));
+  if (!m->space) return;
+  static_cast<McdSpace *>(m->space)->core->SetKey(m->spaceIndex, static_cast<std::uint32_t>(EffectiveSortKey(m)));
 }
 
 void UpdateAndReadAabb(void *user, void *data, MeReal min[3], MeReal max[3]) {
-    auto *m = static_cast<McdModelID>(user);
-    McdModelUpdate(m);
-    SpaceAabb(static_cast<const McdSpace *>(data), m, min, max);
+  auto *m = static_cast<McdModelID>(user);
+  McdModelUpdate(m);
+  SpaceAabb(static_cast<const McdSpace *>(data), m, min, max);
 }
 
 }  // namespace karma::mcd
 
 namespace {
 
-MeBool Insert(McdSpaceID s, McdModelID m, McdCullingTable *table, int index, int id,
-              bool culling, const char *fn) {
-    ME_REQUIRE_ARG_RET(s != nullptr && m != nullptr, 0, fn, "space or model is NULL");
-    if (m->space) {
-        MeArgumentWarning(fn, "the model is already in a space (%s); a model can be in one "
-                              "space only: not inserted",
-                          m->space == s ? "this one" : "another one");
-        return 0;
-    }
-    ME_REQUIRE_ARG_RET(m->framework == s->framework, 0, fn,
-                       "the model belongs to another framework; not inserted");
-    if (!s->core->RequireInside(fn)) return 0;
-    if (!m->updated && m->instance.tm) McdModelUpdate(m);
-    MeReal min[3], max[3];
-    SpaceAabb(s, m, min, max);
-    auto *t = reinterpret_cast<CullingTable *>(table);
-    const ProxyId p = culling ? s->core->InsertWithCulling(m, min, max, t, index, id)
-                              : s->core->Insert(m, min, max);
-    if (p == kNoProxy) return 0;
-    McdModelSetSpaceData(m, s, p);
-    RefreshSpaceSortKey(m);
-    return 1;
+MeBool Insert(McdSpaceID s, McdModelID m, McdCullingTable *table, int index, int id, bool culling, const char *fn) {
+  ME_REQUIRE_ARG_RET(s != nullptr && m != nullptr, 0, fn, "space or model is NULL");
+  if (m->space) {
+    MeArgumentWarning(fn,
+                      "the model is already in a space (%s); a model can be in one "
+                      "space only: not inserted",
+                      m->space == s ? "this one" : "another one");
+    return 0;
+  }
+  ME_REQUIRE_ARG_RET(m->framework == s->framework, 0, fn, "the model belongs to another framework; not inserted");
+  if (!s->core->RequireInside(fn)) return 0;
+  if (!m->updated && m->instance.tm) McdModelUpdate(m);
+  MeReal min[3], max[3];
+  SpaceAabb(s, m, min, max);
+  auto *t = reinterpret_cast<CullingTable *>(table);
+  const ProxyId p = culling ? s->core->InsertWithCulling(m, min, max, t, index, id) : s->core->Insert(m, min, max);
+  if (p == kNoProxy) return 0;
+  McdModelSetSpaceData(m, s, p);
+  RefreshSpaceSortKey(m);
+  return 1;
 }
 
 }  // namespace
@@ -81,64 +78,64 @@ MeBool Insert(McdSpaceID s, McdModelID m, McdCullingTable *table, int index, int
 extern "C" {
 
 MeBool MEAPI McdSpaceInsertModel(McdSpaceID s, McdModelID m) {
-    return Insert(s, m, nullptr, 0, 0, false, "McdSpaceInsertModel");
+  return Insert(s, m, nullptr, 0, 0, false, "McdSpaceInsertModel");
 }
 
-MeBool MEAPI McdSpaceInsertModelWithCulling(McdSpaceID s, McdModelID m, McdCullingTable *table,
-                                            int cullingIndex, int cullingID) {
-    return Insert(s, m, table, cullingIndex, cullingID, true, "McdSpaceInsertModelWithCulling");
+MeBool MEAPI McdSpaceInsertModelWithCulling(McdSpaceID s, McdModelID m, McdCullingTable *table, int cullingIndex,
+                                            int cullingID) {
+  return Insert(s, m, table, cullingIndex, cullingID, true, "McdSpaceInsertModelWithCulling");
 }
 
 MeBool MEAPI McdSpaceRemoveModel(McdModelID m) {
-    McdSpace *s = SpaceOf(m, "McdSpaceRemoveModel");
-    if (!s || !s->core->Remove(m->spaceIndex)) return 0;
-    McdModelSetSpaceData(m, nullptr, -1);
-    return 1;
+  McdSpace *s = SpaceOf(m, "McdSpaceRemoveModel");
+  if (!s || !s->core->Remove(m->spaceIndex)) return 0;
+  McdModelSetSpaceData(m, nullptr, -1);
+  return 1;
 }
 
 void MEAPI McdSpaceUpdateModel(McdModelID m) {
-    static const char *fn = "McdSpaceUpdateModel";
-    McdSpace *s = SpaceOf(m, fn);
-    if (!s || !s->core->RequireInside(fn)) return;
-    if (s->core->IsFrozen(m->spaceIndex)) {
-        MeArgumentWarning(fn, "the model is frozen (unfreeze it before updating); ignored");
-        return;
-    }
-    MeReal min[3], max[3];
-    UpdateAndReadAabb(m, s, min, max);
-    s->core->Update(m->spaceIndex, min, max);
+  static const char *fn = "McdSpaceUpdateModel";
+  McdSpace *s = SpaceOf(m, fn);
+  if (!s || !s->core->RequireInside(fn)) return;
+  if (s->core->IsFrozen(m->spaceIndex)) {
+    MeArgumentWarning(fn, "the model is frozen (unfreeze it before updating); ignored");
+    return;
+  }
+  MeReal min[3], max[3];
+  UpdateAndReadAabb(m, s, min, max);
+  s->core->Update(m->spaceIndex, min, max);
 }
 
 void MEAPI McdSpaceUpdateAll(McdSpaceID s) {
-    ME_REQUIRE_ARG(s != nullptr, "McdSpaceUpdateAll", "space is NULL");
-    s->core->UpdateAll();
+  ME_REQUIRE_ARG(s != nullptr, "McdSpaceUpdateAll", "space is NULL");
+  s->core->UpdateAll();
 }
 
 void MEAPI McdSpaceUpdateModels(McdSpaceID s) {
-    ME_REQUIRE_ARG(s != nullptr, "McdSpaceUpdateModels", "space is NULL");
-    if (!s->core->RequireInside("McdSpaceUpdateModels")) return;
-    s->core->UpdateAll();
+  ME_REQUIRE_ARG(s != nullptr, "McdSpaceUpdateModels", "space is NULL");
+  if (!s->core->RequireInside("McdSpaceUpdateModels")) return;
+  s->core->UpdateAll();
 }
 
 void MEAPI McdSpaceSetAABBFn(McdSpaceID s, McdSpaceAABBFnPtr fn) {
-    ME_REQUIRE_ARG(s != nullptr, "McdSpaceSetAABBFn", "space is NULL");
-    if (!s->core->RequireOutside("McdSpaceSetAABBFn")) return;
-    s->aabbFn = fn;
+  ME_REQUIRE_ARG(s != nullptr, "McdSpaceSetAABBFn", "space is NULL");
+  if (!s->core->RequireOutside("McdSpaceSetAABBFn")) return;
+  s->aabbFn = fn;
 }
 
 MeBool MEAPI McdSpaceFreezeModel(McdModelID m) {
-    McdSpace *s = SpaceOf(m, "McdSpaceFreezeModel");
-    return s && s->core->Freeze(m->spaceIndex) ? 1 : 0;
+  McdSpace *s = SpaceOf(m, "McdSpaceFreezeModel");
+  return s && s->core->Freeze(m->spaceIndex) ? 1 : 0;
 }
 
 MeBool MEAPI McdSpaceUnfreezeModel(McdModelID m) {
-    McdSpace *s = SpaceOf(m, "McdSpaceUnfreezeModel");
-    return s && s->core->Unfreeze(m->spaceIndex) ? 1 : 0;
+  McdSpace *s = SpaceOf(m, "McdSpaceUnfreezeModel");
+  return s && s->core->Unfreeze(m->spaceIndex) ? 1 : 0;
 }
 
 MeBool MEAPI McdSpaceModelIsFrozen(McdModelID m) {
-    if (!m || !m->space) return 0;  // a model in no space is not frozen (quietly)
-    return static_cast<McdSpace *>(m->space)->core->IsFrozen(m->spaceIndex) ? 1 : 0;
+  if (!m || !m->space) return 0;  // a model in no space is not frozen (quietly)
+  return static_cast<McdSpace *>(m->space)->core->IsFrozen(m->spaceIndex) ? 1 : 0;
 }
 
 }  // extern "C"

@@ -65,8 +65,7 @@ void relockTwist(MdtConstraint *c) {
 
 namespace karma::mdt {
 extern const ConstraintType kAngular3Type = {
-    MdtConstraintTypeAngular3, "Angular3", sizeof(MdtAngular3), 3, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+    MdtConstraintTypeAngular3, "Angular3", sizeof(MdtAngular3), 3, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Angular3, kAngular3Type)
@@ -85,8 +84,7 @@ MeBool MEAPI MdtAngular3RotationIsEnabled(const MdtAngular3ID j) {
   return j->rotationEnabled;
 }
 
-void MEAPI MdtAngular3SetAxis(const MdtAngular3ID j, const MeReal x, const MeReal y,
-                              const MeReal z) {
+void MEAPI MdtAngular3SetAxis(const MdtAngular3ID j, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtAngular3SetAxis";
   if (!checkType(j, kAngular3Type, fn)) return;
   MeVector3 a = {x, y, z};

@@ -11,16 +11,13 @@ namespace {
 
 void reset(MdtConstraint *) {}
 
-void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
-  addPointRows(sink, ctx, anchorsOf(c));
-}
+void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) { addPointRows(sink, ctx, anchorsOf(c)); }
 
 }  // namespace
 
 namespace karma::mdt {
 extern const ConstraintType kBSJointType = {
-    MdtConstraintTypeBSJoint, "BSJoint", sizeof(MdtBSJoint), 3, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+    MdtConstraintTypeBSJoint, "BSJoint", sizeof(MdtBSJoint), 3, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(BSJoint, kBSJointType)

@@ -162,8 +162,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 
 namespace karma::mdt {
 extern const ConstraintType kCarWheelType = {
-    MdtConstraintTypeCarWheel, "CarWheel", sizeof(MdtCarWheel), 7, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+    MdtConstraintTypeCarWheel, "CarWheel", sizeof(MdtCarWheel), 7, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(CarWheel, kCarWheelType)

@@ -20,9 +20,9 @@
 #include "bcl_type.h"
 
 struct MdtCarWheel : MdtConstraint {
-  MdtLimit steer;        // steering motor only (no stops)
-  MdtLimit hinge;        // hinge motor only
-  MdtLimit suspension;   // the hard (or softened) stops on the height
+  MdtLimit steer;       // steering motor only (no stops)
+  MdtLimit hinge;       // hinge motor only
+  MdtLimit suspension;  // the hard (or softened) stops on the height
   MeBool steeringLocked;
   MeReal kp, kd;         // suspension spring
   MeReal limitSoftness;  // row softness of the stops (0: the world's epsilon)
@@ -32,10 +32,10 @@ struct MdtCarWheel : MdtConstraint {
 namespace karma::mdt {
 
 struct WheelGeometry {
-  MeVector3 s, h;         // steering and hinge axes (world, unit)
-  Anchors a;              // p[0] joint point, p[1] wheel centre; r[0] = p1 - x0
-  MeReal height;          // s . (p1 - p0)
-  MeReal jHeight[4][3];   // row Jacobian whose J v is d(height)/dt
+  MeVector3 s, h;        // steering and hinge axes (world, unit)
+  Anchors a;             // p[0] joint point, p[1] wheel centre; r[0] = p1 - x0
+  MeReal height;         // s . (p1 - p0)
+  MeReal jHeight[4][3];  // row Jacobian whose J v is d(height)/dt
 };
 
 WheelGeometry wheelGeometry(const MdtCarWheel *j);

@@ -28,14 +28,12 @@ void setMotor(MdtLimit *m, MeReal v, MeReal f, const char *fn) {
 
 extern "C" {
 
-void MEAPI MdtCarWheelSetSteeringAndHingeAxes(const MdtCarWheelID j, const MeReal xs,
-                                              const MeReal ys, const MeReal zs, const MeReal xh,
-                                              const MeReal yh, const MeReal zh) {
+void MEAPI MdtCarWheelSetSteeringAndHingeAxes(const MdtCarWheelID j, const MeReal xs, const MeReal ys, const MeReal zs,
+                                              const MeReal xh, const MeReal yh, const MeReal zh) {
   static const char *fn = "MdtCarWheelSetSteeringAndHingeAxes";
   if (!ok(j, fn)) return;
   MeVector3 s = {xs, ys, zs}, h = {xh, yh, zh}, a;
-  if (!unitDirection(s, fn, "the steering axis") || !unitDirection(h, fn, "the hinge axis"))
-    return;
+  if (!unitDirection(s, fn, "the steering axis") || !unitDirection(h, fn, "the hinge axis")) return;
   const MeReal cosine = MeVector3Dot(s, h);
   if (std::fabs(cosine) > (MeReal)1e-3) {
     MeWarning(0, "%s: the axes are not perpendicular (cosine %g); ignored", fn, (double)cosine);
@@ -88,8 +86,7 @@ MeReal MEAPI MdtCarWheelGetSteeringAngleRate(const MdtCarWheelID j) {
   return -wheelRelativeRate(j, wheelGeometry(j).s);
 }
 
-void MEAPI MdtCarWheelSetHingeLimitedForceMotor(const MdtCarWheelID j, const MeReal v,
-                                                const MeReal f) {
+void MEAPI MdtCarWheelSetHingeLimitedForceMotor(const MdtCarWheelID j, const MeReal v, const MeReal f) {
   static const char *fn = "MdtCarWheelSetHingeLimitedForceMotor";
   if (ok(j, fn)) setMotor(&j->hinge, v, f, fn);
 }
@@ -100,14 +97,12 @@ MeReal MEAPI MdtCarWheelGetHingeMotorMaxForce(const MdtCarWheelID j) {
   return ok(j, "MdtCarWheelGetHingeMotorMaxForce") ? j->hinge.motorMaxForce : 0;
 }
 
-void MEAPI MdtCarWheelSetSteeringLimitedForceMotor(const MdtCarWheelID j, const MeReal v,
-                                                   const MeReal f) {
+void MEAPI MdtCarWheelSetSteeringLimitedForceMotor(const MdtCarWheelID j, const MeReal v, const MeReal f) {
   static const char *fn = "MdtCarWheelSetSteeringLimitedForceMotor";
   if (ok(j, fn)) setMotor(&j->steer, v, f, fn);
 }
 MeReal MEAPI MdtCarWheelGetSteeringMotorDesiredVelocity(const MdtCarWheelID j) {
-  return ok(j, "MdtCarWheelGetSteeringMotorDesiredVelocity") ? j->steer.motorDesiredVelocity
-                                                               : 0;
+  return ok(j, "MdtCarWheelGetSteeringMotorDesiredVelocity") ? j->steer.motorDesiredVelocity : 0;
 }
 MeReal MEAPI MdtCarWheelGetSteeringMotorMaxForce(const MdtCarWheelID j) {
   return ok(j, "MdtCarWheelGetSteeringMotorMaxForce") ? j->steer.motorMaxForce : 0;
@@ -122,18 +117,15 @@ MeBool MEAPI MdtCarWheelIsSteeringLocked(const MdtCarWheelID j) {
   return ok(j, "MdtCarWheelIsSteeringLocked") ? j->steeringLocked : FALSE;
 }
 
-void MEAPI MdtCarWheelSetSuspension(const MdtCarWheelID j, const MeReal kp, const MeReal kd,
-                                    const MeReal softness, const MeReal lo, const MeReal hi,
-                                    const MeReal ref) {
+void MEAPI MdtCarWheelSetSuspension(const MdtCarWheelID j, const MeReal kp, const MeReal kd, const MeReal softness,
+                                    const MeReal lo, const MeReal hi, const MeReal ref) {
   static const char *fn = "MdtCarWheelSetSuspension";
   if (!ok(j, fn)) return;
   if (!realFinite3(kp, kd, softness) || !realFinite3(lo, hi, ref)) {
     MeWarning(0, "%s: an argument is not finite; ignored", fn);
     return;
   }
-  if (!nonNegative(kp, fn, "Kp") || !nonNegative(kd, fn, "Kd") ||
-      !nonNegative(softness, fn, "limit softness"))
-    return;
+  if (!nonNegative(kp, fn, "Kp") || !nonNegative(kd, fn, "Kd") || !nonNegative(softness, fn, "limit softness")) return;
   j->kp = kp;
   j->kd = kd;
   j->limitSoftness = softness;

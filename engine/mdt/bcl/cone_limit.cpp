@@ -72,9 +72,16 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kConeLimitType = {
-    MdtConstraintTypeConeLimit, "ConeLimit", sizeof(MdtConeLimit), 1, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+extern const ConstraintType kConeLimitType = {MdtConstraintTypeConeLimit,
+                                              "ConeLimit",
+                                              sizeof(MdtConeLimit),
+                                              1,
+                                              nullptr,
+                                              reset,
+                                              addRows,
+                                              nullptr,
+                                              nullptr,
+                                              nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(ConeLimit, kConeLimitType)
@@ -84,8 +91,7 @@ extern "C" {
 void MEAPI MdtConeLimitSetConeHalfAngle(const MdtConeLimitID j, const MeReal theta) {
   static const char *fn = "MdtConeLimitSetConeHalfAngle";
   if (!checkType(j, kConeLimitType, fn)) return;
-  ME_REQUIRE_ARG(theta > 0 && theta <= (MeReal)ME_PI, fn,
-                 "half-angle %g must be in (0, pi]; ignored", (double)theta);
+  ME_REQUIRE_ARG(theta > 0 && theta <= (MeReal)ME_PI, fn, "half-angle %g must be in (0, pi]; ignored", (double)theta);
   j->halfAngle = theta;
 }
 
@@ -116,8 +122,7 @@ MeReal MEAPI MdtConeLimitGetDamping(const MdtConeLimitID j) {
   return j->damping;
 }
 
-void MEAPI MdtConeLimitSetAxis(const MdtConeLimitID j, const MeReal x, const MeReal y,
-                               const MeReal z) {
+void MEAPI MdtConeLimitSetAxis(const MdtConeLimitID j, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtConeLimitSetAxis";
   if (!checkType(j, kConeLimitType, fn)) return;
   MeVector3 a = {x, y, z};
@@ -125,8 +130,8 @@ void MEAPI MdtConeLimitSetAxis(const MdtConeLimitID j, const MeReal x, const MeR
   MdtConstraintSetAxis(j, a[0], a[1], a[2]);
 }
 
-void MEAPI MdtConeLimitBodySetAxis(const MdtConeLimitID j, const unsigned int bodyindex,
-                                   const MeReal x, const MeReal y, const MeReal z) {
+void MEAPI MdtConeLimitBodySetAxis(const MdtConeLimitID j, const unsigned int bodyindex, const MeReal x, const MeReal y,
+                                   const MeReal z) {
   static const char *fn = "MdtConeLimitBodySetAxis";
   if (!checkType(j, kConeLimitType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   MeVector3 a = {x, y, z}, o;
@@ -135,8 +140,7 @@ void MEAPI MdtConeLimitBodySetAxis(const MdtConeLimitID j, const unsigned int bo
   MdtConstraintBodySetAxes(j, bodyindex, a[0], a[1], a[2], o[0], o[1], o[2]);
 }
 
-void MEAPI MdtConeLimitGetAxis(const MdtConeLimitID j, const unsigned int bodyindex,
-                               MeVector3 axis) {
+void MEAPI MdtConeLimitGetAxis(const MdtConeLimitID j, const unsigned int bodyindex, MeVector3 axis) {
   static const char *fn = "MdtConeLimitGetAxis";
   if (!checkType(j, kConeLimitType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   ME_REQUIRE_ARG(axis != nullptr, fn, "axis is NULL");

@@ -88,9 +88,8 @@ MeReal predictedRowVelocity(const MdtContact *c, const Row &row) {
   return v;
 }
 
-void frictionRow(MdtContact *c, RowSink &sink, const StepContext &ctx, const Anchors &a,
-                 const MeVector3 d, int normalRow, MdtFrictionModel model, MeReal limit,
-                 MeReal coefficient, MeReal slip, MeReal slide) {
+void frictionRow(MdtContact *c, RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d,
+                 int normalRow, MdtFrictionModel model, MeReal limit, MeReal coefficient, MeReal slip, MeReal slide) {
   Row &row = addLinearRow(sink, ctx, a, d);
   row.role = RowRole::ContactFriction;
   row.contact = c;
@@ -139,16 +138,14 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
   n.warm = c->warmNormal;
   n.warmSet = true;
   const MeReal vrel = rowVelocity(c, n);  // > 0: separating
-  const MeReal bounce =
-      (prm.restitution > 0 && vrel < -prm.velThreshold) ? -prm.restitution * vrel : 0;
+  const MeReal bounce = (prm.restitution > 0 && vrel < -prm.velThreshold) ? -prm.restitution * vrel : 0;
   if (c->penetration < 0) {
     // Apart: the approach over the step is the mean of the velocities at
     // its start and after the forces (gravity speeds a falling body up).
     const MeReal approach = (MeReal)0.5 * (vrel + predictedRowVelocity(c, n));
     const MeReal gap = -c->penetration;
     const bool impact = -approach * ctx.h >= gap;
-    const MeReal bounce =
-        (prm.restitution > 0 && approach < -prm.velThreshold) ? -prm.restitution * approach : 0;
+    const MeReal bounce = (prm.restitution > 0 && approach < -prm.velThreshold) ? -prm.restitution * approach : 0;
     if (impact && bounce > 0) {
       // The impact falls within the step, at t = gap / |vrel|: the step's
       // velocity takes the body where the bounce would have by the step's
@@ -165,11 +162,11 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
   if (prm.type == MdtContactTypeFrictionZero) return;
   MeVector3 d1, d2;
   contactDirections(c, d1, d2);
-  frictionRow(c, sink, ctx, a, d1, normalRow, prm.model1, prm.friction1, prm.frictionCoefficient1,
-              prm.slip1, prm.slide1);
+  frictionRow(c, sink, ctx, a, d1, normalRow, prm.model1, prm.friction1, prm.frictionCoefficient1, prm.slip1,
+              prm.slide1);
   if (prm.type == MdtContactTypeFriction2D)
-    frictionRow(c, sink, ctx, a, d2, normalRow, prm.model2, prm.friction2,
-                prm.frictionCoefficient2, prm.slip2, prm.slide2);
+    frictionRow(c, sink, ctx, a, d2, normalRow, prm.model2, prm.friction2, prm.frictionCoefficient2, prm.slip2,
+                prm.slide2);
 }
 
 }  // namespace karma::mdt
@@ -178,9 +175,7 @@ namespace {
 
 void reset(MdtConstraint *c) { resetContact(as<MdtContact>(c)); }
 
-void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
-  addContactRows(as<MdtContact>(c), sink, ctx);
-}
+void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) { addContactRows(as<MdtContact>(c), sink, ctx); }
 
 void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContext &ctx) {
   auto *k = as<MdtContact>(c);
@@ -197,16 +192,14 @@ void destroy(MdtConstraint *c) {
 
 namespace karma::mdt {
 extern const ConstraintType kContactType = {
-    MdtConstraintTypeContact, "Contact", sizeof(MdtContact), 3, nullptr, reset, addRows,
-    afterSolve, destroy, nullptr};
+    MdtConstraintTypeContact, "Contact", sizeof(MdtContact), 3, nullptr, reset, addRows, afterSolve, destroy, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Contact, kContactType)
 
 extern "C" {
 
-void MEAPI MdtContactSetNormal(const MdtContactID c, const MeReal x, const MeReal y,
-                               const MeReal z) {
+void MEAPI MdtContactSetNormal(const MdtContactID c, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtContactSetNormal";
   if (!checkType(c, kContactType, fn)) return;
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "normal is not finite; ignored");
@@ -221,8 +214,7 @@ void MEAPI MdtContactGetNormal(const MdtContactID c, MeVector3 normal) {
   MeVector3Copy(normal, c->normal);
 }
 
-void MEAPI MdtContactSetDirection(const MdtContactID c, const MeReal x, const MeReal y,
-                                  const MeReal z) {
+void MEAPI MdtContactSetDirection(const MdtContactID c, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtContactSetDirection";
   if (!checkType(c, kContactType, fn)) return;
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "direction is not finite; ignored");
@@ -330,8 +322,7 @@ MdtContactID MEAPI MdtBodyGetFirstContact(const MdtBodyID body) {
 }
 
 MdtContactID MEAPI MdtBodyGetNextContact(const MdtBodyID body, const MdtContactID c) {
-  ME_REQUIRE_ARG_RET(body != nullptr && c != nullptr, nullptr, "MdtBodyGetNextContact",
-                     "NULL argument");
+  ME_REQUIRE_ARG_RET(body != nullptr && c != nullptr, nullptr, "MdtBodyGetNextContact", "NULL argument");
   return scanFrom(body, static_cast<MdtConstraint *>(c));
 }
 

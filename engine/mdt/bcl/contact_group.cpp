@@ -58,9 +58,16 @@ void destroy(MdtConstraint *c) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kContactGroupType = {
-    MdtConstraintTypeContactGroup, "ContactGroup", sizeof(MdtContactGroup), 0, rowCapacity,
-    reset, addRows, afterSolve, destroy, nullptr};
+extern const ConstraintType kContactGroupType = {MdtConstraintTypeContactGroup,
+                                                 "ContactGroup",
+                                                 sizeof(MdtContactGroup),
+                                                 0,
+                                                 rowCapacity,
+                                                 reset,
+                                                 addRows,
+                                                 afterSolve,
+                                                 destroy,
+                                                 nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(ContactGroup, kContactGroupType)
@@ -126,8 +133,7 @@ MdtContactID MEAPI MdtContactGroupGetFirstContact(const MdtContactGroupID g) {
   return g->first;
 }
 
-MdtContactID MEAPI MdtContactGroupGetNextContact(const MdtContactGroupID g,
-                                                 const MdtContactID c) {
+MdtContactID MEAPI MdtContactGroupGetNextContact(const MdtContactGroupID g, const MdtContactID c) {
   static const char *fn = "MdtContactGroupGetNextContact";
   if (!checkType(g, kContactGroupType, fn) || !checkType(c, kContactType, fn)) return nullptr;
   ME_REQUIRE_ARG_RET(c->owner == g, nullptr, fn, "the contact is not in this group");

@@ -11,8 +11,8 @@ struct MdtContact : MdtConstraint {
   MeVector3 direction;  // world frame, primary friction direction if set
   MeBool directionSet;
   MeReal penetration;
-  MdtContact *next;     // the next contact of the pair / group
-  MeReal normalForce;   // last step
+  MdtContact *next;    // the next contact of the pair / group
+  MeReal normalForce;  // last step
   // Identity of the collision features that made it (McdContact::feature),
   // for the bridge's matching; 0 for contacts made by hand.
   MeU32 feature;

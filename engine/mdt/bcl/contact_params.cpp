@@ -14,8 +14,7 @@ bool validNonNegative(MdtContactParamsID p, MeReal v, const char *fn, bool allow
     return false;
   }
   const bool ok = v >= 0 && (allowInfinity ? !std::isnan(v) : std::isfinite(v));
-  if (!ok) MeWarning(0, "%s: value %g must be >= 0%s; ignored", fn, (double)v,
-                     allowInfinity ? "" : " and finite");
+  if (!ok) MeWarning(0, "%s: value %g must be >= 0%s; ignored", fn, (double)v, allowInfinity ? "" : " and finite");
   return ok;
 }
 
@@ -43,14 +42,12 @@ void MEAPI MdtContactParamsReset(const MdtContactParamsID p) {
 void MEAPI MdtContactParamsSetType(const MdtContactParamsID p, const MdtContactType t) {
   static const char *fn = "MdtContactParamsSetType";
   ME_REQUIRE_ARG(p != nullptr, fn, "params is NULL");
-  ME_REQUIRE_ARG(t == MdtContactTypeFrictionZero || t == MdtContactTypeFriction1D ||
-                     t == MdtContactTypeFriction2D,
-                 fn, "unknown contact type %d; ignored", (int)t);
+  ME_REQUIRE_ARG(t == MdtContactTypeFrictionZero || t == MdtContactTypeFriction1D || t == MdtContactTypeFriction2D, fn,
+                 "unknown contact type %d; ignored", (int)t);
   p->type = t;
 }
 MdtContactType MEAPI MdtContactParamsGetType(const MdtContactParamsID p) {
-  ME_REQUIRE_ARG_RET(p != nullptr, MdtContactTypeFrictionZero, "MdtContactParamsGetType",
-                     "params is NULL");
+  ME_REQUIRE_ARG_RET(p != nullptr, MdtContactTypeFrictionZero, "MdtContactParamsGetType", "params is NULL");
   return p->type;
 }
 
@@ -59,26 +56,22 @@ static bool validModel(MdtFrictionModel m, const char *fn) {
   MeWarning(0, "%s: unknown friction model %d; ignored", fn, (int)m);
   return false;
 }
-void MEAPI MdtContactParamsSetPrimaryFrictionModel(const MdtContactParamsID p,
-                                                   const MdtFrictionModel m) {
+void MEAPI MdtContactParamsSetPrimaryFrictionModel(const MdtContactParamsID p, const MdtFrictionModel m) {
   static const char *fn = "MdtContactParamsSetPrimaryFrictionModel";
   ME_REQUIRE_ARG(p != nullptr, fn, "params is NULL");
   if (validModel(m, fn)) p->model1 = m;
 }
-void MEAPI MdtContactParamsSetSecondaryFrictionModel(const MdtContactParamsID p,
-                                                     const MdtFrictionModel m) {
+void MEAPI MdtContactParamsSetSecondaryFrictionModel(const MdtContactParamsID p, const MdtFrictionModel m) {
   static const char *fn = "MdtContactParamsSetSecondaryFrictionModel";
   ME_REQUIRE_ARG(p != nullptr, fn, "params is NULL");
   if (validModel(m, fn)) p->model2 = m;
 }
 MdtFrictionModel MEAPI MdtContactParamsGetPrimaryFrictionModel(const MdtContactParamsID p) {
-  ME_REQUIRE_ARG_RET(p != nullptr, MdtFrictionModelBox, "MdtContactParamsGetPrimaryFrictionModel",
-                     "params is NULL");
+  ME_REQUIRE_ARG_RET(p != nullptr, MdtFrictionModelBox, "MdtContactParamsGetPrimaryFrictionModel", "params is NULL");
   return p->model1;
 }
 MdtFrictionModel MEAPI MdtContactParamsGetSecondaryFrictionModel(const MdtContactParamsID p) {
-  ME_REQUIRE_ARG_RET(p != nullptr, MdtFrictionModelBox,
-                     "MdtContactParamsGetSecondaryFrictionModel", "params is NULL");
+  ME_REQUIRE_ARG_RET(p != nullptr, MdtFrictionModelBox, "MdtContactParamsGetSecondaryFrictionModel", "params is NULL");
   return p->model2;
 }
 
@@ -107,24 +100,20 @@ void MEAPI MdtContactParamsSetFrictionCoefficient(const MdtContactParamsID p, co
   if (!validNonNegative(p, mu, "MdtContactParamsSetFrictionCoefficient", false)) return;
   p->frictionCoefficient1 = p->frictionCoefficient2 = mu;
 }
-void MEAPI MdtContactParamsSetPrimaryFrictionCoefficient(const MdtContactParamsID p,
-                                                        const MeReal mu) {
+void MEAPI MdtContactParamsSetPrimaryFrictionCoefficient(const MdtContactParamsID p, const MeReal mu) {
   if (!validNonNegative(p, mu, "MdtContactParamsSetPrimaryFrictionCoefficient", false)) return;
   p->frictionCoefficient1 = mu;
 }
-void MEAPI MdtContactParamsSetSecondaryFrictionCoefficient(const MdtContactParamsID p,
-                                                          const MeReal mu) {
+void MEAPI MdtContactParamsSetSecondaryFrictionCoefficient(const MdtContactParamsID p, const MeReal mu) {
   if (!validNonNegative(p, mu, "MdtContactParamsSetSecondaryFrictionCoefficient", false)) return;
   p->frictionCoefficient2 = mu;
 }
 MeReal MEAPI MdtContactParamsGetPrimaryFrictionCoefficient(const MdtContactParamsID p) {
-  ME_REQUIRE_ARG_RET(p != nullptr, 0, "MdtContactParamsGetPrimaryFrictionCoefficient",
-                     "params is NULL");
+  ME_REQUIRE_ARG_RET(p != nullptr, 0, "MdtContactParamsGetPrimaryFrictionCoefficient", "params is NULL");
   return p->frictionCoefficient1;
 }
 MeReal MEAPI MdtContactParamsGetSecondaryFrictionCoefficient(const MdtContactParamsID p) {
-  ME_REQUIRE_ARG_RET(p != nullptr, 0, "MdtContactParamsGetSecondaryFrictionCoefficient",
-                     "params is NULL");
+  ME_REQUIRE_ARG_RET(p != nullptr, 0, "MdtContactParamsGetSecondaryFrictionCoefficient", "params is NULL");
   return p->frictionCoefficient2;
 }
 
@@ -133,8 +122,10 @@ void MEAPI MdtContactParamsSetRestitution(const MdtContactParamsID p, const MeRe
   ME_REQUIRE_ARG(p != nullptr, fn, "params is NULL");
   ME_REQUIRE_ARG(e >= 0 && e <= 1, fn, "restitution %g must be in [0, 1]; ignored", (double)e);
   p->restitution = e;
-  if (e > 0) p->options |= MdtContactOptionBounce;
-  else p->options &= ~MdtContactOptionBounce;
+  if (e > 0)
+    p->options |= MdtContactOptionBounce;
+  else
+    p->options &= ~MdtContactOptionBounce;
 }
 MeReal MEAPI MdtContactParamsGetRestitution(const MdtContactParamsID p) {
   ME_REQUIRE_ARG_RET(p != nullptr, 0, "MdtContactParamsGetRestitution", "params is NULL");
@@ -145,14 +136,15 @@ void MEAPI MdtContactParamsSetRestitutionThreshold(const MdtContactParamsID p, c
   p->velThreshold = v;
 }
 MeReal MEAPI MdtContactParamsGetRestitutionThreshold(const MdtContactParamsID p) {
-  ME_REQUIRE_ARG_RET(p != nullptr, 0, "MdtContactParamsGetRestitutionThreshold",
-                     "params is NULL");
+  ME_REQUIRE_ARG_RET(p != nullptr, 0, "MdtContactParamsGetRestitutionThreshold", "params is NULL");
   return p->velThreshold;
 }
 
 static void setFlag(MdtContactParamsID p, int flag, bool on) {
-  if (on) p->options |= flag;
-  else p->options &= ~flag;
+  if (on)
+    p->options |= flag;
+  else
+    p->options &= ~flag;
 }
 
 void MEAPI MdtContactParamsSetSoftness(const MdtContactParamsID p, const MeReal s) {

@@ -60,41 +60,46 @@ void afterSolve(MdtConstraint *c, const MeReal *, int, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kFixedPathType = {
-    MdtConstraintTypeFixedPath, "FixedPath", sizeof(MdtFixedPath), 3, nullptr, reset, addRows,
-    afterSolve, nullptr, nullptr};
+extern const ConstraintType kFixedPathType = {MdtConstraintTypeFixedPath,
+                                              "FixedPath",
+                                              sizeof(MdtFixedPath),
+                                              3,
+                                              nullptr,
+                                              reset,
+                                              addRows,
+                                              afterSolve,
+                                              nullptr,
+                                              nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(FixedPath, kFixedPathType)
 
 extern "C" {
 
-void MEAPI MdtFixedPathSetPosition(const MdtFixedPathID j, const unsigned int bodyindex,
-                                   const MeReal x, const MeReal y, const MeReal z) {
+void MEAPI MdtFixedPathSetPosition(const MdtFixedPathID j, const unsigned int bodyindex, const MeReal x, const MeReal y,
+                                   const MeReal z) {
   static const char *fn = "MdtFixedPathSetPosition";
   if (!checkType(j, kFixedPathType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position is not finite; ignored");
   MdtConstraintBodySetPosition(j, bodyindex, x, y, z);
 }
 
-void MEAPI MdtFixedPathGetPosition(const MdtFixedPathID j, const unsigned int bodyindex,
-                                   MeVector3 position) {
+void MEAPI MdtFixedPathGetPosition(const MdtFixedPathID j, const unsigned int bodyindex, MeVector3 position) {
   static const char *fn = "MdtFixedPathGetPosition";
   if (!checkType(j, kFixedPathType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   ME_REQUIRE_ARG(position != nullptr, fn, "position is NULL");
   attachmentPoint(j, (int)bodyindex, position);
 }
 
-void MEAPI MdtFixedPathSetVelocity(const MdtFixedPathID j, const unsigned int bodyindex,
-                                   const MeReal x, const MeReal y, const MeReal z) {
+void MEAPI MdtFixedPathSetVelocity(const MdtFixedPathID j, const unsigned int bodyindex, const MeReal x, const MeReal y,
+                                   const MeReal z) {
   static const char *fn = "MdtFixedPathSetVelocity";
   if (!checkType(j, kFixedPathType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "velocity is not finite; ignored");
   MeVector3Set(j->pathVelocity[bodyindex], x, y, z);
 }
 
-void MEAPI MdtFixedPathGetVelocity(const MdtFixedPathID j, const unsigned int bodyindex,
-                                   MeVector3 velocity) {
+void MEAPI MdtFixedPathGetVelocity(const MdtFixedPathID j, const unsigned int bodyindex, MeVector3 velocity) {
   static const char *fn = "MdtFixedPathGetVelocity";
   if (!checkType(j, kFixedPathType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   ME_REQUIRE_ARG(velocity != nullptr, fn, "velocity is NULL");

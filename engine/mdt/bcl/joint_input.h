@@ -29,8 +29,7 @@ inline bool unitDirection(MeVector3 v, const char *fn, const char *what) {
 // exactly orthogonal; false (with a warning naming `fn`) when either is not
 // finite or zero, or they are not orthogonal within a cosine of 1e-3.
 inline bool orthogonalAxes(MeVector3 p, MeVector3 o, const char *fn) {
-  if (!unitDirection(p, fn, "the primary axis") || !unitDirection(o, fn, "the secondary axis"))
-    return false;
+  if (!unitDirection(p, fn, "the primary axis") || !unitDirection(o, fn, "the secondary axis")) return false;
   const MeReal cosine = MeVector3Dot(p, o);
   if (cosine > (MeReal)1e-3 || cosine < -(MeReal)1e-3) {
     MeWarning(0, "%s: the axes are not orthogonal (cosine %g); ignored", fn, (double)cosine);

@@ -30,16 +30,14 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 
 namespace karma::mdt {
 extern const ConstraintType kLinear1Type = {
-    MdtConstraintTypeLinear1, "Linear1", sizeof(MdtLinear1), 1, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+    MdtConstraintTypeLinear1, "Linear1", sizeof(MdtLinear1), 1, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Linear1, kLinear1Type)
 
 extern "C" {
 
-void MEAPI MdtLinear1SetAxis(const MdtLinear1ID j, const MeReal x, const MeReal y,
-                             const MeReal z) {
+void MEAPI MdtLinear1SetAxis(const MdtLinear1ID j, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtLinear1SetAxis";
   if (!checkType(j, kLinear1Type, fn)) return;
   MeVector3 n = {x, y, z};

@@ -33,16 +33,14 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 
 namespace karma::mdt {
 extern const ConstraintType kLinear2Type = {
-    MdtConstraintTypeLinear2, "Linear2", sizeof(MdtLinear2), 2, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+    MdtConstraintTypeLinear2, "Linear2", sizeof(MdtLinear2), 2, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Linear2, kLinear2Type)
 
 extern "C" {
 
-void MEAPI MdtLinear2SetDirection(const MdtLinear2ID j, const MeReal x, const MeReal y,
-                                  const MeReal z) {
+void MEAPI MdtLinear2SetDirection(const MdtLinear2ID j, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtLinear2SetDirection";
   if (!checkType(j, kLinear2Type, fn)) return;
   MeVector3 d = {x, y, z};

@@ -58,17 +58,23 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kPrismaticType = {
-    MdtConstraintTypePrismatic, "Prismatic", sizeof(MdtPrismatic), 7, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+extern const ConstraintType kPrismaticType = {MdtConstraintTypePrismatic,
+                                              "Prismatic",
+                                              sizeof(MdtPrismatic),
+                                              7,
+                                              nullptr,
+                                              reset,
+                                              addRows,
+                                              nullptr,
+                                              nullptr,
+                                              nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Prismatic, kPrismaticType)
 
 extern "C" {
 
-void MEAPI MdtPrismaticSetAxis(const MdtPrismaticID j, const MeReal x, const MeReal y,
-                               const MeReal z) {
+void MEAPI MdtPrismaticSetAxis(const MdtPrismaticID j, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtPrismaticSetAxis";
   if (!checkType(j, kPrismaticType, fn)) return;
   MeVector3 a = {x, y, z};

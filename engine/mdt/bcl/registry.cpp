@@ -23,10 +23,9 @@ extern const ConstraintType kContactGroupType;
 
 const ConstraintType *const *allConstraintTypes() {
   static const ConstraintType *const all[] = {
-      &kBSJointType,  &kHingeType,   &kPrismaticType, &kUniversalType,
-      &kAngular3Type, &kConeLimitType, &kLinear1Type, &kLinear2Type,
-      &kFixedPathType, &kCarWheelType, &kSpringType, &kSkeletalType, &kSpring6Type, &kRPROJointType,
-      &kContactType, &kContactGroupType, nullptr};
+      &kBSJointType, &kHingeType,     &kPrismaticType, &kUniversalType,    &kAngular3Type, &kConeLimitType,
+      &kLinear1Type, &kLinear2Type,   &kFixedPathType, &kCarWheelType,     &kSpringType,   &kSkeletalType,
+      &kSpring6Type, &kRPROJointType, &kContactType,   &kContactGroupType, nullptr};
   return all;
 }
 

@@ -75,9 +75,16 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kRPROJointType = {
-    MdtConstraintTypeRPROJoint, "RPROJoint", sizeof(MdtRPROJoint), 6, nullptr, reset, addRows,
-    nullptr, nullptr, attach};
+extern const ConstraintType kRPROJointType = {MdtConstraintTypeRPROJoint,
+                                              "RPROJoint",
+                                              sizeof(MdtRPROJoint),
+                                              6,
+                                              nullptr,
+                                              reset,
+                                              addRows,
+                                              nullptr,
+                                              nullptr,
+                                              attach};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(RPROJoint, kRPROJointType)

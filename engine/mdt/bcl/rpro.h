@@ -6,8 +6,8 @@
 #include "bcl_type.h"
 
 struct MdtRPROJoint : MdtConstraint {
-  MeVector4 relativeQ;      // target: F1 = F0 turned by relativeQ (F0 axes)
-  MeVector3 relativeW;      // target w1 - w0 in F0 axes
+  MeVector4 relativeQ;  // target: F1 = F0 turned by relativeQ (F0 axes)
+  MeVector3 relativeW;  // target w1 - w0 in F0 axes
   MeVector3 linearStrength;
   MeVector3 angularStrength;
 };

@@ -22,12 +22,10 @@ bool unitQuaternion(MeVector4 q, const char *fn) {
 
 void setStrength(MeVector3 out, MeReal x, MeReal y, MeReal z, const char *fn) {
   if (!(x > 0 && y > 0 && z > 0)) {  // also rejects NaN
-    MeWarning(0, "%s: strengths (%g, %g, %g) must be > 0; ignored", fn, (double)x, (double)y,
-              (double)z);
+    MeWarning(0, "%s: strengths (%g, %g, %g) must be > 0; ignored", fn, (double)x, (double)y, (double)z);
     return;
   }
-  MeVector3Set(out, x > MEINFINITY ? MEINFINITY : x, y > MEINFINITY ? MEINFINITY : y,
-               z > MEINFINITY ? MEINFINITY : z);
+  MeVector3Set(out, x > MEINFINITY ? MEINFINITY : x, y > MEINFINITY ? MEINFINITY : y, z > MEINFINITY ? MEINFINITY : z);
 }
 
 }  // namespace
@@ -71,8 +69,7 @@ void MEAPI MdtRPROJointGetRelativeAngularVelocity(const MdtRPROJointID j, MeVect
   MeVector3Copy(w, j->relativeW);
 }
 
-void MEAPI MdtRPROJointSetAttachmentPosition(const MdtRPROJointID j, const MeReal x,
-                                             const MeReal y, const MeReal z,
+void MEAPI MdtRPROJointSetAttachmentPosition(const MdtRPROJointID j, const MeReal x, const MeReal y, const MeReal z,
                                              const unsigned int i) {
   static const char *fn = "MdtRPROJointSetAttachmentPosition";
   if (!ok(j, fn) || !bodyIndexOk(i, fn)) return;
@@ -81,17 +78,15 @@ void MEAPI MdtRPROJointSetAttachmentPosition(const MdtRPROJointID j, const MeRea
   j->warmRows = 0;
 }
 
-void MEAPI MdtRPROJointGetAttachmentPosition(const MdtRPROJointID j, const unsigned int i,
-                                             MeVector3 p) {
+void MEAPI MdtRPROJointGetAttachmentPosition(const MdtRPROJointID j, const unsigned int i, MeVector3 p) {
   static const char *fn = "MdtRPROJointGetAttachmentPosition";
   if (!ok(j, fn) || !bodyIndexOk(i, fn)) return;
   ME_REQUIRE_ARG(p != nullptr, fn, "position is NULL");
   MeVector3Copy(p, j->localPos[i]);
 }
 
-void MEAPI MdtRPROJointSetAttachmentQuaternion(const MdtRPROJointID j, const MeReal q0,
-                                               const MeReal q1, const MeReal q2, const MeReal q3,
-                                               const unsigned int i) {
+void MEAPI MdtRPROJointSetAttachmentQuaternion(const MdtRPROJointID j, const MeReal q0, const MeReal q1,
+                                               const MeReal q2, const MeReal q3, const unsigned int i) {
   static const char *fn = "MdtRPROJointSetAttachmentQuaternion";
   if (!ok(j, fn) || !bodyIndexOk(i, fn)) return;
   MeVector4 q = {q0, q1, q2, q3};
@@ -103,8 +98,7 @@ void MEAPI MdtRPROJointSetAttachmentQuaternion(const MdtRPROJointID j, const MeR
   j->warmRows = 0;
 }
 
-void MEAPI MdtRPROJointGetAttachmentOrientation(const MdtRPROJointID j, const unsigned int i,
-                                                MeVector4 q) {
+void MEAPI MdtRPROJointGetAttachmentOrientation(const MdtRPROJointID j, const unsigned int i, MeVector4 q) {
   static const char *fn = "MdtRPROJointGetAttachmentOrientation";
   if (!ok(j, fn) || !bodyIndexOk(i, fn)) return;
   ME_REQUIRE_ARG(q != nullptr, fn, "quaternion is NULL");
@@ -115,14 +109,12 @@ void MEAPI MdtRPROJointGetAttachmentOrientation(const MdtRPROJointID j, const un
   MeQuaternionFromR(q, R);
 }
 
-void MEAPI MdtRPROJointSetAngularStrength(const MdtRPROJointID j, const MeReal x, const MeReal y,
-                                          const MeReal z) {
+void MEAPI MdtRPROJointSetAngularStrength(const MdtRPROJointID j, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtRPROJointSetAngularStrength";
   if (ok(j, fn)) setStrength(j->angularStrength, x, y, z, fn);
 }
 
-void MEAPI MdtRPROJointSetLinearStrength(const MdtRPROJointID j, const MeReal x, const MeReal y,
-                                         const MeReal z) {
+void MEAPI MdtRPROJointSetLinearStrength(const MdtRPROJointID j, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtRPROJointSetLinearStrength";
   if (ok(j, fn)) setStrength(j->linearStrength, x, y, z, fn);
 }

@@ -30,8 +30,7 @@ SkeletalAngles skeletalAngles(const MdtSkeletal *j) {
   frameRows(j, 0, F0);
   MeVector3 a1;
   attachmentAxis(j, 1, a1);
-  const MeReal x = MeVector3Dot(a1, F0[0]), y = MeVector3Dot(a1, F0[1]),
-               z = MeVector3Dot(a1, F0[2]);
+  const MeReal x = MeVector3Dot(a1, F0[0]), y = MeVector3Dot(a1, F0[1]), z = MeVector3Dot(a1, F0[2]);
   SkeletalAngles s;
   s.theta = std::atan2(std::sqrt(y * y + z * z), x);
   s.psi = std::atan2(z, y);
@@ -132,8 +131,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 
 namespace karma::mdt {
 extern const ConstraintType kSkeletalType = {
-    MdtConstraintTypeSkeletal, "Skeletal", sizeof(MdtSkeletal), 5, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+    MdtConstraintTypeSkeletal, "Skeletal", sizeof(MdtSkeletal), 5, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Skeletal, kSkeletalType)

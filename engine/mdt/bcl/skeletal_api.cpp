@@ -12,9 +12,7 @@ bool ok(const MdtSkeletal *j, const char *fn) { return checkType(j, kSkeletalTyp
 
 bool angleOk(MeReal a, bool zeroAllowed, const char *fn) {
   const bool good = (zeroAllowed ? a >= 0 : a > 0) && a <= (MeReal)ME_PI;
-  if (!good)
-    MeWarning(0, "%s: angle %g must be in %s0, pi]; ignored", fn, (double)a,
-              zeroAllowed ? "[" : "(");
+  if (!good) MeWarning(0, "%s: angle %g must be in %s0, pi]; ignored", fn, (double)a, zeroAllowed ? "[" : "(");
   return good;
 }
 
@@ -36,8 +34,8 @@ void setDamping(MdtSkeletal *j, MeReal MdtSkeletal::*field, MeReal d, const char
 
 extern "C" {
 
-void MEAPI MdtSkeletalSetAxes(const MdtSkeletalID j, const MeReal px, const MeReal py,
-                              const MeReal pz, const MeReal ox, const MeReal oy, const MeReal oz) {
+void MEAPI MdtSkeletalSetAxes(const MdtSkeletalID j, const MeReal px, const MeReal py, const MeReal pz, const MeReal ox,
+                              const MeReal oy, const MeReal oz) {
   static const char *fn = "MdtSkeletalSetAxes";
   if (!ok(j, fn)) return;
   MeVector3 p = {px, py, pz}, o = {ox, oy, oz};

@@ -67,8 +67,7 @@ void attach(MdtConstraint *c) {
 // the circle), which gamma alone only holds at ~(u h)^2 / (2 d gamma). The
 // rod row asks for that much radial closing speed in advance:
 // h |u_perp|^2 / (2 d).
-MeReal curvatureSpeed(const MdtConstraint *c, const Anchors &a, const MeVector3 e, MeReal d,
-                      const StepContext &ctx) {
+MeReal curvatureSpeed(const MdtConstraint *c, const Anchors &a, const MeVector3 e, MeReal d, const StepContext &ctx) {
   if (!(d > 0)) return 0;
   MeVector3 u0, u1, u;
   pointVelocity(c, 0, a.p[0], u0);
@@ -131,16 +130,15 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 
 namespace karma::mdt {
 extern const ConstraintType kSpringType = {
-    MdtConstraintTypeSpring, "Spring", sizeof(MdtSpring), 2, nullptr, reset, addRows, nullptr,
-    nullptr, attach};
+    MdtConstraintTypeSpring, "Spring", sizeof(MdtSpring), 2, nullptr, reset, addRows, nullptr, nullptr, attach};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Spring, kSpringType)
 
 extern "C" {
 
-void MEAPI MdtSpringSetPosition(const MdtSpringID j, const unsigned int i, const MeReal x,
-                                const MeReal y, const MeReal z) {
+void MEAPI MdtSpringSetPosition(const MdtSpringID j, const unsigned int i, const MeReal x, const MeReal y,
+                                const MeReal z) {
   static const char *fn = "MdtSpringSetPosition";
   if (!checkType(j, kSpringType, fn) || !bodyIndexOk(i, fn)) return;
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position is not finite; ignored");
@@ -172,8 +170,7 @@ void MEAPI MdtSpringSetLimit(const MdtSpringID j, const MdtLimitID limit) {
 void MEAPI MdtSpringSetNaturalLength(const MdtSpringID j, const MeReal L) {
   static const char *fn = "MdtSpringSetNaturalLength";
   if (!checkType(j, kSpringType, fn)) return;
-  ME_REQUIRE_ARG(L >= 0 && realFinite(L), fn, "length %g must be finite and >= 0; ignored",
-                 (double)L);
+  ME_REQUIRE_ARG(L >= 0 && realFinite(L), fn, "length %g must be finite and >= 0; ignored", (double)L);
   j->limit.limit[0].stop = L;
   j->limit.limit[1].stop = L;
   j->lengthSet = TRUE;
@@ -188,8 +185,7 @@ void MEAPI MdtSpringSetStiffness(const MdtSpringID j, const MeReal k) {
 void MEAPI MdtSpringSetDamping(const MdtSpringID j, const MeReal c) {
   static const char *fn = "MdtSpringSetDamping";
   if (!checkType(j, kSpringType, fn)) return;
-  ME_REQUIRE_ARG(c >= 0 && realFinite(c), fn, "damping %g must be finite and >= 0; ignored",
-                 (double)c);
+  ME_REQUIRE_ARG(c >= 0 && realFinite(c), fn, "damping %g must be finite and >= 0; ignored", (double)c);
   for (MdtSingleLimit &s : j->limit.limit) s.damping = c;
 }
 

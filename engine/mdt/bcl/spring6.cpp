@@ -73,8 +73,7 @@ bool axisOk(unsigned axis, const char *fn) {
 // Stiffness (damping when `damping`) of axis `axis` of the linear (first =
 // 0) or angular (first = 3) springs.
 void setValue(MdtSpring6 *j, bool damping, int first, unsigned axis, MeReal v, const char *fn) {
-  if (!checkType(j, kSpring6Type, fn) || !axisOk(axis, fn) ||
-      !nonNegative(v, fn, damping ? "damping" : "stiffness"))
+  if (!checkType(j, kSpring6Type, fn) || !axisOk(axis, fn) || !nonNegative(v, fn, damping ? "damping" : "stiffness"))
     return;
   MeReal *arr = damping ? j->c : j->k;
   arr[first + (int)axis] = v > MEINFINITY ? MEINFINITY : v;
@@ -90,16 +89,15 @@ MeReal getValue(const MdtSpring6 *j, bool damping, int first, unsigned axis, con
 
 namespace karma::mdt {
 extern const ConstraintType kSpring6Type = {
-    MdtConstraintTypeSpring6, "Spring6", sizeof(MdtSpring6), 6, nullptr, reset, addRows, nullptr,
-    nullptr, nullptr};
+    MdtConstraintTypeSpring6, "Spring6", sizeof(MdtSpring6), 6, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Spring6, kSpring6Type)
 
 extern "C" {
 
-void MEAPI MdtSpring6SetAxes(const MdtSpring6ID j, const MeReal px, const MeReal py,
-                             const MeReal pz, const MeReal ox, const MeReal oy, const MeReal oz) {
+void MEAPI MdtSpring6SetAxes(const MdtSpring6ID j, const MeReal px, const MeReal py, const MeReal pz, const MeReal ox,
+                             const MeReal oy, const MeReal oz) {
   static const char *fn = "MdtSpring6SetAxes";
   if (!checkType(j, kSpring6Type, fn)) return;
   MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
@@ -122,12 +120,10 @@ void MEAPI MdtSpring6SetLinearStiffness(const MdtSpring6ID j, const unsigned int
 void MEAPI MdtSpring6SetLinearDamping(const MdtSpring6ID j, const unsigned int a, const MeReal c) {
   setValue(j, true, 0, a, c, "MdtSpring6SetLinearDamping");
 }
-void MEAPI MdtSpring6SetAngularStiffness(const MdtSpring6ID j, const unsigned int a,
-                                         const MeReal k) {
+void MEAPI MdtSpring6SetAngularStiffness(const MdtSpring6ID j, const unsigned int a, const MeReal k) {
   setValue(j, false, 3, a, k, "MdtSpring6SetAngularStiffness");
 }
-void MEAPI MdtSpring6SetAngularDamping(const MdtSpring6ID j, const unsigned int a,
-                                       const MeReal c) {
+void MEAPI MdtSpring6SetAngularDamping(const MdtSpring6ID j, const unsigned int a, const MeReal c) {
   setValue(j, true, 3, a, c, "MdtSpring6SetAngularDamping");
 }
 MeReal MEAPI MdtSpring6GetLinearStiffness(const MdtSpring6ID j, const unsigned int a) {

@@ -64,17 +64,24 @@ void setBodyCrossAxis(MdtConstraint *c, int i, const MeVector3 d) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kUniversalType = {
-    MdtConstraintTypeUniversal, "Universal", sizeof(MdtUniversal), 4, nullptr, reset, addRows,
-    nullptr, nullptr, nullptr};
+extern const ConstraintType kUniversalType = {MdtConstraintTypeUniversal,
+                                              "Universal",
+                                              sizeof(MdtUniversal),
+                                              4,
+                                              nullptr,
+                                              reset,
+                                              addRows,
+                                              nullptr,
+                                              nullptr,
+                                              nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Universal, kUniversalType)
 
 extern "C" {
 
-void MEAPI MdtUniversalSetAxis(const MdtUniversalID j, const unsigned int bodyindex,
-                               const MeReal x, const MeReal y, const MeReal z) {
+void MEAPI MdtUniversalSetAxis(const MdtUniversalID j, const unsigned int bodyindex, const MeReal x, const MeReal y,
+                               const MeReal z) {
   static const char *fn = "MdtUniversalSetAxis";
   if (!checkType(j, kUniversalType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   MeVector3 d = {x, y, z};
@@ -83,8 +90,7 @@ void MEAPI MdtUniversalSetAxis(const MdtUniversalID j, const unsigned int bodyin
   j->warmRows = 0;
 }
 
-void MEAPI MdtUniversalGetAxis(const MdtUniversalID j, const unsigned int bodyindex,
-                               MeVector3 axis) {
+void MEAPI MdtUniversalGetAxis(const MdtUniversalID j, const unsigned int bodyindex, MeVector3 axis) {
   static const char *fn = "MdtUniversalGetAxis";
   if (!checkType(j, kUniversalType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   ME_REQUIRE_ARG(axis != nullptr, fn, "axis is NULL");
@@ -94,14 +100,12 @@ void MEAPI MdtUniversalGetAxis(const MdtUniversalID j, const unsigned int bodyin
     attachmentOrtho(j, 1, axis);
 }
 
-void MEAPI MdtUniversalSetAxes(const MdtUniversalID j, const unsigned int bodyindex,
-                               const MeReal px, const MeReal py, const MeReal pz,
-                               const MeReal ox, const MeReal oy, const MeReal oz) {
+void MEAPI MdtUniversalSetAxes(const MdtUniversalID j, const unsigned int bodyindex, const MeReal px, const MeReal py,
+                               const MeReal pz, const MeReal ox, const MeReal oy, const MeReal oz) {
   static const char *fn = "MdtUniversalSetAxes";
   if (!checkType(j, kUniversalType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
-  if (!unitDirection(p, fn, "the primary axis") || !unitDirection(o, fn, "the secondary axis"))
-    return;
+  if (!unitDirection(p, fn, "the primary axis") || !unitDirection(o, fn, "the secondary axis")) return;
   const MeReal cosine = MeVector3Dot(p, o);
   if (std::fabs(cosine) > (MeReal)1e-3) {
     MeWarning(0, "%s: the axes are not orthogonal (cosine %g); ignored", fn, (double)cosine);
@@ -111,8 +115,8 @@ void MEAPI MdtUniversalSetAxes(const MdtUniversalID j, const unsigned int bodyin
   j->warmRows = 0;
 }
 
-void MEAPI MdtUniversalGetAxes(const MdtUniversalID j, const unsigned int bodyindex,
-                               MeVector3 primary, MeVector3 ortho) {
+void MEAPI MdtUniversalGetAxes(const MdtUniversalID j, const unsigned int bodyindex, MeVector3 primary,
+                               MeVector3 ortho) {
   static const char *fn = "MdtUniversalGetAxes";
   if (!checkType(j, kUniversalType, fn) || !bodyIndexOk(bodyindex, fn)) return;
   ME_REQUIRE_ARG(primary != nullptr && ortho != nullptr, fn, "NULL argument");

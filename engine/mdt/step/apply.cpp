@@ -8,8 +8,8 @@
 
 namespace karma::mdt {
 
-void applyImpulses(StepScratch &s, const Partition &part, const PartitionRows &rows,
-                   std::span<const MeReal> lambda, const StepContext &ctx) {
+void applyImpulses(StepScratch &s, const Partition &part, const PartitionRows &rows, std::span<const MeReal> lambda,
+                   const StepContext &ctx) {
   std::span<MeReal> all = s.arena.take<MeReal>((size_t)rows.count);
   for (int r = 0; r < rows.count; ++r) {
     const int k = rows.solveIndex[(size_t)r];

@@ -17,8 +17,7 @@ namespace karma::mdt {
 namespace {
 
 // M^-1 J^T of kept row k (12 values) and its J v over the bodies' velocities.
-MeReal rowResponse(const BodySpaceProblem &p, StepScratch &s, const Partition &part, int k,
-                   MeReal mj[12]) {
+MeReal rowResponse(const BodySpaceProblem &p, StepScratch &s, const Partition &part, int k, MeReal mj[12]) {
   const MeReal *J = &p.J[(size_t)k * 12];
   const int bodies[2] = {p.body0[(size_t)k], p.body1[(size_t)k]};
   MeReal jv = 0;
@@ -35,8 +34,7 @@ MeReal rowResponse(const BodySpaceProblem &p, StepScratch &s, const Partition &p
   return jv;
 }
 
-void push(const BodySpaceProblem &p, StepScratch &s, const Partition &part, int k, const MeReal mj[12],
-          MeReal dl) {
+void push(const BodySpaceProblem &p, StepScratch &s, const Partition &part, int k, const MeReal mj[12], MeReal dl) {
   const int bodies[2] = {p.body0[(size_t)k], p.body1[(size_t)k]};
   for (int side = 0; side < 2; ++side) {
     if (bodies[side] < 0) continue;
@@ -48,8 +46,8 @@ void push(const BodySpaceProblem &p, StepScratch &s, const Partition &part, int 
 
 // The bounce of up to kSmallLcpMax rows (kept indices `ks`, bounce speeds
 // `b`) together; one row at a time if the small LCP finds no answer.
-void bounceTogether(const BodySpaceProblem &p, StepScratch &s, const Partition &part, const int *ks,
-                    const MeReal *b, int n) {
+void bounceTogether(const BodySpaceProblem &p, StepScratch &s, const Partition &part, const int *ks, const MeReal *b,
+                    int n) {
   MeReal mj[kSmallLcpMax][12] = {}, q[kSmallLcpMax] = {}, lo[kSmallLcpMax] = {}, x[kSmallLcpMax] = {};
   MeReal A[kSmallLcpMax * kSmallLcpMax] = {};
   for (int i = 0; i < n; ++i) q[i] = b[i] - rowResponse(p, s, part, ks[i], mj[i]);
@@ -74,8 +72,7 @@ void bounceTogether(const BodySpaceProblem &p, StepScratch &s, const Partition &
 
 }  // namespace
 
-void applyBounces(StepScratch &s, const Partition &part, const PartitionRows &rows,
-                  const BodySpaceProblem &p) {
+void applyBounces(StepScratch &s, const Partition &part, const PartitionRows &rows, const BodySpaceProblem &p) {
   for (int c = 0; c < part.constraintCount; ++c) {
     int ks[kSmallLcpMax], n = 0;
     MeReal b[kSmallLcpMax];

@@ -25,9 +25,7 @@ struct Candidate {
   MdtConstraint *group;
 };
 
-MdtConstraint *groupOf(MdtConstraint *contact) {
-  return contact->owner ? contact->owner : contact;
-}
+MdtConstraint *groupOf(MdtConstraint *contact) { return contact->owner ? contact->owner : contact; }
 
 }  // namespace
 

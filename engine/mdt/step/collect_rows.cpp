@@ -13,9 +13,7 @@ namespace karma::mdt {
 
 namespace {
 
-int rowCapacity(const MdtConstraint *c) {
-  return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows;
-}
+int rowCapacity(const MdtConstraint *c) { return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows; }
 
 bool allFinite(const Row *rows, int n) {
   bool finite = true;
@@ -32,11 +30,9 @@ int writeRows(MdtConstraint *c, Row *rows, const StepContext &ctx) {
   RowSink sink(rows, rowCapacity(c));
   c->type->addRows(c, sink, ctx);
   if (sink.overflowed())
-    MeWarning(0, "MdtWorldStep: a %s wrote more rows than it declared; extra rows dropped",
-              c->type->name);
+    MeWarning(0, "MdtWorldStep: a %s wrote more rows than it declared; extra rows dropped", c->type->name);
   if (!allFinite(sink.rows(), sink.count())) {
-    MeWarning(0, "MdtWorldStep: a %s produced non-finite rows; it was skipped this step",
-              c->type->name);
+    MeWarning(0, "MdtWorldStep: a %s produced non-finite rows; it was skipped this step", c->type->name);
     return 0;
   }
   return sink.count();
@@ -44,8 +40,7 @@ int writeRows(MdtConstraint *c, Row *rows, const StepContext &ctx) {
 
 }  // namespace
 
-PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &part,
-                          const StepContext &ctx) {
+PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &part, const StepContext &ctx) {
   const int nc = part.constraintCount;
   MdtConstraint *const *cons = s.partConstraints.data() + part.constraintStart;
   int capacity = 0;

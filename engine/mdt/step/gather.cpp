@@ -54,8 +54,7 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
 
   // Gather.
   s.bodies.clear();
-  for (void *slot = MePoolGetNextUsed(&p->bodies, nullptr); slot;
-       slot = MePoolGetNextUsed(&p->bodies, slot)) {
+  for (void *slot = MePoolGetNextUsed(&p->bodies, nullptr); slot; slot = MePoolGetNextUsed(&p->bodies, slot)) {
     auto *b = static_cast<MdtBody *>(slot);
     if (b->enabled) s.bodies.push_back(b);
   }

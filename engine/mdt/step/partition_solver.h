@@ -30,7 +30,7 @@ struct SolveReport {
   int frictionRounds = 0;  // exact solver: friction fixed-point rounds beyond the first
   int staleSolves = 0;     // exact solver: linear solves with last step's factor
   bool solved = true;
-  bool cycle = false;      // stopped by a detected cycle
+  bool cycle = false;  // stopped by a detected cycle
   bool badInput = false;
 };
 
@@ -39,8 +39,8 @@ class PartitionSolver {
   virtual ~PartitionSolver() = default;
   virtual const char *name() const = 0;
   // lambda: rowCount values, written.
-  virtual SolveReport solve(const BodySpaceProblem &problem, const SolverSettings &settings,
-                            StepArena &arena, std::span<MeReal> lambda) = 0;
+  virtual SolveReport solve(const BodySpaceProblem &problem, const SolverSettings &settings, StepArena &arena,
+                            std::span<MeReal> lambda) = 0;
 };
 
 // The solvers the world can choose (MdtWorldSetKeaMethod): each lives as

@@ -33,24 +33,24 @@ struct BodySpaceProblem {
   int bodyCount = 0;
   int rowCount = 0;
   // Per body.
-  std::span<const MeReal> invMass;            // bodyCount
-  std::span<const MeReal> invInertia;         // 9 * bodyCount
+  std::span<const MeReal> invMass;     // bodyCount
+  std::span<const MeReal> invInertia;  // 9 * bodyCount
   // Per row.
-  std::span<const int> body0, body1;          // body index or -1
-  std::span<const MeReal> J;                  // 12 * rowCount: lin0 ang0 lin1 ang1
+  std::span<const int> body0, body1;  // body index or -1
+  std::span<const MeReal> J;          // 12 * rowCount: lin0 ang0 lin1 ang1
   std::span<const MeReal> rhs, softness, lo, hi;
-  std::span<const int> friction;              // normal row index or -1
+  std::span<const int> friction;  // normal row index or -1
   std::span<const MeReal> mu;
   std::span<const MeReal> warm;
   // The contact normal rows of one contact group, or of one stand-alone
   // contact, form a block: rows normalBlock[b] .. normalBlock[b+1]-1 of
   // normalRows (ascending row indices). A solver may treat a block as one
   // unit (the contacts of a face share the load symmetrically).
-  std::span<const int> normalBlock;           // blockCount + 1
+  std::span<const int> normalBlock;  // blockCount + 1
   std::span<const int> normalRows;
   int blockCount = 0;
   bool anyFriction = false;
-  bool anyWarm = false;                       // a warm value is nonzero
+  bool anyWarm = false;  // a warm value is nonzero
 };
 
 // M^-1 J^T of one side of row `row` for body b (6 values: linear, angular):

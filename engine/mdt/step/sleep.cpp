@@ -36,8 +36,7 @@ bool idle(const MdtBody *b, const MdtWorldParams &w) {
   const MeReal a = MeVector3Magnitude(b->acceleration);
   if (g > 0 && !(a < g / 2)) return false;
   return MeVector3Magnitude(b->velocity) < w.velocityThreshold &&
-         MeVector3Magnitude(b->angularVelocity) < w.angularVelocityThreshold &&
-         a < w.accelerationThreshold &&
+         MeVector3Magnitude(b->angularVelocity) < w.angularVelocityThreshold && a < w.accelerationThreshold &&
          MeVector3Magnitude(b->angularAcceleration) < w.angularAccelerationThreshold;
 }
 
@@ -86,8 +85,7 @@ void wakeDrivenBodies(MdtWorldID world) {
   if (p->forcesDoNotWake) return;  // the FAQ's reading: forces wait for an enable
   if (p->enabledCount == (unsigned)MePoolGetUsed(&p->bodies)) return;
   // Pool order is fine here: each body is decided on its own accumulators.
-  for (void *slot = MePoolGetNextUsed(&p->bodies, nullptr); slot;
-       slot = MePoolGetNextUsed(&p->bodies, slot)) {
+  for (void *slot = MePoolGetNextUsed(&p->bodies, nullptr); slot; slot = MePoolGetNextUsed(&p->bodies, slot)) {
     auto *b = static_cast<MdtBody *>(slot);
     if (b->enabled) continue;
     if (drivenPastThresholds(b, world->params))

@@ -23,8 +23,10 @@ std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpace
   s.stats.keaFactorizations += report.factorizations;
   s.stats.keaFrictionRounds += report.frictionRounds;
   s.stats.keaStaleSolves += report.staleSolves;
-  if (report.solved) ++s.stats.keaSolved;
-  else ++s.stats.keaUnsolved;
+  if (report.solved)
+    ++s.stats.keaSolved;
+  else
+    ++s.stats.keaUnsolved;
   if (report.cycle) ++s.stats.keaCycles;
   if (!iterative && !report.solved && !report.badInput)
     s.solveWarnings.note(report.cycle ? UnsolvedCause::Cycle : UnsolvedCause::IterationCap, report.residual);

@@ -24,12 +24,12 @@ class SolveWarnings {
 
  private:
   struct Cause {
-    int pending = 0;          // solves since the last report
-    MeReal worst = 0;         // their largest residual
-    MeReal nextReport = 0;    // simulated time from which it may be reported
+    int pending = 0;        // solves since the last report
+    MeReal worst = 0;       // their largest residual
+    MeReal nextReport = 0;  // simulated time from which it may be reported
   };
   Cause causes_[2];
-  MeReal clock_ = 0;          // simulated seconds stepped
+  MeReal clock_ = 0;  // simulated seconds stepped
 };
 
 }  // namespace karma::mdt

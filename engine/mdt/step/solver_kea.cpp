@@ -28,8 +28,7 @@ struct Csr {
 };
 
 // bodyRowStart/bodyRows: for each body, the rows that act on it.
-void rowsByBody(const BodySpaceProblem &p, StepArena &arena, std::span<int> &start,
-                std::span<int> &rows) {
+void rowsByBody(const BodySpaceProblem &p, StepArena &arena, std::span<int> &start, std::span<int> &rows) {
   const int m = p.rowCount;
   start = arena.filled<int>((size_t)p.bodyCount + 1, 0);
   for (int k = 0; k < m; ++k) {
@@ -58,8 +57,8 @@ std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
       const int b = bodies[side];
       if (b < 0) continue;
       const auto *inertia = reinterpret_cast<const MeReal(*)[3]>(&p.invInertia[(size_t)b * 9]);
-      kern.bodyMinvJt(p.invMass[(size_t)b], inertia, J + side * 6, J + side * 6 + 3,
-                      out + side * 6, out + side * 6 + 3);
+      kern.bodyMinvJt(p.invMass[(size_t)b], inertia, J + side * 6, J + side * 6 + 3, out + side * 6,
+                      out + side * 6 + 3);
     }
   }
   return mj;
@@ -68,8 +67,8 @@ std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
 // The columns of every row: row i's are the union of its bodies' row lists,
 // each ascending, so a merge gives them in order. Fills a.rowStart and
 // a.col (room for `bound` entries) and diagonal[i], the index of (i, i).
-void layoutColumns(const BodySpaceProblem &p, std::span<const int> bodyRowStart, std::span<const int> bodyRows,
-                   Csr &a, std::span<int> diagonal) {
+void layoutColumns(const BodySpaceProblem &p, std::span<const int> bodyRowStart, std::span<const int> bodyRows, Csr &a,
+                   std::span<int> diagonal) {
   constexpr int kEnd = std::numeric_limits<int>::max();
   int nnz = 0;
   a.rowStart[0] = 0;
@@ -275,8 +274,7 @@ class KeaSolver final : public PartitionSolver {
     report.solved = result_.status == kea::KeaStatus::Solved;
     report.cycle = result_.status == kea::KeaStatus::CycleDetected;
     report.badInput = result_.status == kea::KeaStatus::BadInput;
-    if (!report.badInput)
-      std::copy(result_.lambda.begin(), result_.lambda.begin() + p.rowCount, lambda.begin());
+    if (!report.badInput) std::copy(result_.lambda.begin(), result_.lambda.begin() + p.rowCount, lambda.begin());
     return report;
   }
 

@@ -42,12 +42,12 @@ MeReal defaultTolerance() { return sizeof(MeReal) == 4 ? (MeReal)1e-4 : (MeReal)
 constexpr int kMaxBlock = kSmallLcpMax;
 
 struct Workspace {
-  std::span<MeReal> mj;     // 12 per row: M^-1 J^T, per side (lin, ang)
-  std::span<MeReal> diag;   // d_i
-  std::span<MeReal> dv;     // 6 per body: linear, angular
-  std::span<int> block;     // per row: its normal block, or -1
-  std::span<MeReal> blockA; // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
-  std::span<int> visited;   // per block: the last sweep that solved it
+  std::span<MeReal> mj;      // 12 per row: M^-1 J^T, per side (lin, ang)
+  std::span<MeReal> diag;    // d_i
+  std::span<MeReal> dv;      // 6 per body: linear, angular
+  std::span<int> block;      // per row: its normal block, or -1
+  std::span<MeReal> blockA;  // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
+  std::span<int> visited;    // per block: the last sweep that solved it
 };
 
 MeReal dot6(const MeReal *a, const MeReal *b) {

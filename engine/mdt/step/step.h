@@ -66,19 +66,19 @@ struct StepScratch {
   StepScratch(const StepScratch &) = delete;
   StepScratch &operator=(const StepScratch &) = delete;
 
-  std::vector<MdtBody *> bodies;               // enabled, sorted
-  std::vector<MdtConstraint *> constraints;    // simulated, sorted
-  std::vector<int> adjStart, adj, adjFill;     // body -> constraints (indices)
+  std::vector<MdtBody *> bodies;             // enabled, sorted
+  std::vector<MdtConstraint *> constraints;  // simulated, sorted
+  std::vector<int> adjStart, adj, adjFill;   // body -> constraints (indices)
   std::vector<MdtBody *> partBodies;
   std::vector<MdtConstraint *> partConstraints;
-  std::vector<MdtConstraint *> found;          // one partition's constraints, while searching
+  std::vector<MdtConstraint *> found;  // one partition's constraints, while searching
   std::vector<Partition> partitions;
-  std::vector<int> partitionRows;              // rows solved per partition (after capping)
+  std::vector<int> partitionRows;  // rows solved per partition (after capping)
   StepArena arena;
-  PartitionSolver *activeSet;                  // the solvers, one of each
+  PartitionSolver *activeSet;  // the solvers, one of each
   PartitionSolver *pgs;
   MdtWorldStepStats stats;
-  SolveWarnings solveWarnings;                 // the exact solver's, rate-limited
+  SolveWarnings solveWarnings;  // the exact solver's, rate-limited
 };
 
 // Stage 1: fills bodies, constraints, partitions (waking bodies).
@@ -92,24 +92,21 @@ void predictPartition(MdtWorldID world, StepScratch &s, const Partition &p, MeRe
 // (stabilize.cpp); called before the velocities are predicted.
 void accumulateGeometricStiffness(MdtWorldID world, StepScratch &s, const Partition &p);
 // Stage 3.
-PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &p,
-                          const StepContext &ctx);
+PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &p, const StepContext &ctx);
 // Matrix capping: clears keep[] of the rows to drop so that at most maxRows
 // remain, in the guide's order (or by the importance callback).
 void capRows(MdtWorldID world, std::span<const Row> rows, std::span<char> keep, int maxRows);
 // Stage 4.
-BodySpaceProblem assembleProblem(StepScratch &s, const Partition &p, const PartitionRows &rows,
-                                 const StepContext &ctx);
+BodySpaceProblem assembleProblem(StepScratch &s, const Partition &p, const PartitionRows &rows, const StepContext &ctx);
 // Stage 5: the impulses of the kept rows (problem.rowCount of them).
 std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpaceProblem &problem);
 // Stage 6: lambda holds the kept rows' impulses.
-void applyImpulses(StepScratch &s, const Partition &p, const PartitionRows &rows,
-                   std::span<const MeReal> lambda, const StepContext &ctx);
+void applyImpulses(StepScratch &s, const Partition &p, const PartitionRows &rows, std::span<const MeReal> lambda,
+                   const StepContext &ctx);
 // Stage 7.
 void integratePartition(StepScratch &s, const Partition &p, MeReal h);
 // Stage 7b: the bounces owed by impacts found apart (bounce.cpp).
-void applyBounces(StepScratch &s, const Partition &p, const PartitionRows &rows,
-                  const BodySpaceProblem &problem);
+void applyBounces(StepScratch &s, const Partition &p, const PartitionRows &rows, const BodySpaceProblem &problem);
 // Stage 8: updates each body's rest time from its new velocities and
 // accelerations; true if the whole partition has rested for the alive window
 // and was put to sleep.

@@ -30,9 +30,9 @@ void removeArguments(MeCommandLineOptions &options, int index, int n) noexcept;
 // The value of option `name` for the named look-up `caller`: NULL if absent
 // (silently) or if it is the last argument (warning). Eats the option and
 // its value when `eat` is true. *present tells whether the option was found.
-const char *takeOptionValue(MeCommandLineOptions *options, const char *name, MeBool eat,
-                            const char *caller, bool *present) noexcept;
+const char *takeOptionValue(MeCommandLineOptions *options, const char *name, MeBool eat, const char *caller,
+                            bool *present) noexcept;
 
-} // namespace karma::me
+}  // namespace karma::me
 
 #endif

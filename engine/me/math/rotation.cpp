@@ -8,8 +8,7 @@ using karma::me::detail::kZero;
 
 namespace {
 
-void setRows(MeMatrix3 R, MeReal a, MeReal b, MeReal c, MeReal d, MeReal e, MeReal f, MeReal g, MeReal h,
-             MeReal i) {
+void setRows(MeMatrix3 R, MeReal a, MeReal b, MeReal c, MeReal d, MeReal e, MeReal f, MeReal g, MeReal h, MeReal i) {
   MeVector3Set(R[0], a, b, c);
   MeVector3Set(R[1], d, e, f);
   MeVector3Set(R[2], g, h, i);

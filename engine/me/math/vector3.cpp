@@ -58,9 +58,7 @@ MeReal MEAPI MeVector3DistanceSqr(const MeVector3 a, const MeVector3 b) {
   return dot3(d, d);
 }
 
-MeReal MEAPI MeVector3Distance(const MeVector3 a, const MeVector3 b) {
-  return MeSqrt(MeVector3DistanceSqr(a, b));
-}
+MeReal MEAPI MeVector3Distance(const MeVector3 a, const MeVector3 b) { return MeSqrt(MeVector3DistanceSqr(a, b)); }
 
 MeReal MEAPI MeVector3Normalize(MeVector3 v) {
   const MeReal len = MeSqrt(dot3(v, v));

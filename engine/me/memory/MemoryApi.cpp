@@ -7,9 +7,6 @@ extern "C" {
 // (in any translation unit) already find the defaults.
 MEPUBLIC constinit MeMemoryAPIStruct MeMemoryAPI = karma::me::defaultMemoryAPI;
 
-MEPUBLIC void MEAPI MeMemoryAPIReset(void)
-{
-    MeMemoryAPI = karma::me::defaultMemoryAPI;
-}
+MEPUBLIC void MEAPI MeMemoryAPIReset(void) { MeMemoryAPI = karma::me::defaultMemoryAPI; }
 
-} // extern "C"
+}  // extern "C"

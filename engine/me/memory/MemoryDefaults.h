@@ -23,16 +23,15 @@ void MEAPI defaultDestroyAligned(void *block);
 
 // The table of all defaults, as MeMemoryAPI starts out.
 inline constexpr MeMemoryAPIStruct defaultMemoryAPI = {
-    &defaultCreate,        &defaultDestroy,        &defaultResize,
-    &defaultCreateZeroed,  &defaultCreateAligned,  &defaultDestroyAligned,
+    &defaultCreate,       &defaultDestroy,       &defaultResize,
+    &defaultCreateZeroed, &defaultCreateAligned, &defaultDestroyAligned,
 };
 
 // True if `alignment` is a power of two (which excludes 0).
-constexpr bool isPowerOfTwo(unsigned long long alignment) noexcept
-{
-    return alignment != 0 && (alignment & (alignment - 1)) == 0;
+constexpr bool isPowerOfTwo(unsigned long long alignment) noexcept {
+  return alignment != 0 && (alignment & (alignment - 1)) == 0;
 }
 
-} // namespace karma::me
+}  // namespace karma::me
 
 #endif

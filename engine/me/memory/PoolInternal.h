@@ -9,10 +9,8 @@
 namespace karma::me {
 
 // Address of struct `index` (0 <= index < maxCount).
-inline void *poolStructAt(const MePool &pool, int index) noexcept
-{
-    return static_cast<char *>(pool.memory) +
-           static_cast<std::size_t>(index) * static_cast<std::size_t>(pool.stride);
+inline void *poolStructAt(const MePool &pool, int index) noexcept {
+  return static_cast<char *>(pool.memory) + static_cast<std::size_t>(index) * static_cast<std::size_t>(pool.stride);
 }
 
 // Index of the struct at `address`, or -1 if `address` is not the start of
@@ -23,11 +21,8 @@ int poolIndexOf(const MePool &pool, const void *address) noexcept;
 void poolResetFreeStack(MePool &pool) noexcept;
 
 // Name used in messages.
-inline const char *poolName(const MePool &pool) noexcept
-{
-    return pool.name != nullptr ? pool.name : "(unnamed)";
-}
+inline const char *poolName(const MePool &pool) noexcept { return pool.name != nullptr ? pool.name : "(unnamed)"; }
 
-} // namespace karma::me
+}  // namespace karma::me
 
 #endif

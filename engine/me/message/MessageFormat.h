@@ -12,7 +12,7 @@ namespace karma::me {
 // bytes with the terminator; lives on the caller's stack so that formatting
 // needs neither a lock nor an allocation (it works when memory is exhausted).
 struct MessageText {
-    char text[ME_MESSAGE_MAX_LENGTH];
+  char text[ME_MESSAGE_MAX_LENGTH];
 };
 
 // Formats `format` with `args` into `out`. Text that does not fit is cut and
@@ -20,6 +20,6 @@ struct MessageText {
 // error yields a short placeholder instead of failing.
 void formatMessage(MessageText &out, const char *format, std::va_list args) noexcept;
 
-} // namespace karma::me
+}  // namespace karma::me
 
 #endif

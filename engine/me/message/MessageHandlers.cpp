@@ -9,25 +9,13 @@
 namespace karma::me {
 namespace {
 
-void MEAPI defaultInfo(int, const char *message)
-{
-    std::fprintf(stderr, "Karma info: %s\n", message);
-}
+void MEAPI defaultInfo(int, const char *message) { std::fprintf(stderr, "Karma info: %s\n", message); }
 
-void MEAPI defaultWarning(int, const char *message)
-{
-    std::fprintf(stderr, "Karma warning: %s\n", message);
-}
+void MEAPI defaultWarning(int, const char *message) { std::fprintf(stderr, "Karma warning: %s\n", message); }
 
-void MEAPI defaultFatalError(int, const char *message)
-{
-    std::fprintf(stderr, "Karma fatal error: %s\n", message);
-}
+void MEAPI defaultFatalError(int, const char *message) { std::fprintf(stderr, "Karma fatal error: %s\n", message); }
 
-void MEAPI defaultDebug(int, const char *message)
-{
-    std::fprintf(stderr, "Karma debug: %s\n", message);
-}
+void MEAPI defaultDebug(int, const char *message) { std::fprintf(stderr, "Karma debug: %s\n", message); }
 
 // Invariant: every slot holds a non-null handler (constant-initialised, so
 // messages emitted during static initialisation already work).
@@ -37,69 +25,55 @@ std::atomic<MeMessageHandler> fatalErrorSlot{&defaultFatalError};
 std::atomic<MeMessageHandler> debugSlot{&defaultDebug};
 std::atomic<int> debugLevel{0};
 
-std::atomic<MeMessageHandler> &slotOf(MessageChannel channel) noexcept
-{
-    switch (channel) {
-    case MessageChannel::info: return infoSlot;
-    case MessageChannel::warning: return warningSlot;
-    case MessageChannel::fatalError: return fatalErrorSlot;
-    case MessageChannel::debug: break;
-    }
-    return debugSlot;
+std::atomic<MeMessageHandler> &slotOf(MessageChannel channel) noexcept {
+  switch (channel) {
+    case MessageChannel::info:
+      return infoSlot;
+    case MessageChannel::warning:
+      return warningSlot;
+    case MessageChannel::fatalError:
+      return fatalErrorSlot;
+    case MessageChannel::debug:
+      break;
+  }
+  return debugSlot;
 }
 
 MeMessageHandler install(std::atomic<MeMessageHandler> &slot, MeMessageHandler handler,
-                         MeMessageHandler fallback) noexcept
-{
-    return slot.exchange(handler != nullptr ? handler : fallback);
+                         MeMessageHandler fallback) noexcept {
+  return slot.exchange(handler != nullptr ? handler : fallback);
 }
 
-} // namespace
+}  // namespace
 
-MeMessageHandler currentHandler(MessageChannel channel) noexcept
-{
-    return slotOf(channel).load();
-}
+MeMessageHandler currentHandler(MessageChannel channel) noexcept { return slotOf(channel).load(); }
 
-int currentDebugLevel() noexcept
-{
-    return debugLevel.load(std::memory_order_relaxed);
-}
+int currentDebugLevel() noexcept { return debugLevel.load(std::memory_order_relaxed); }
 
-} // namespace karma::me
+}  // namespace karma::me
 
 using namespace karma::me;
 
 extern "C" {
 
-MEPUBLIC MeMessageHandler MEAPI MeSetInfoHandler(MeMessageHandler handler)
-{
-    return install(infoSlot, handler, &defaultInfo);
+MEPUBLIC MeMessageHandler MEAPI MeSetInfoHandler(MeMessageHandler handler) {
+  return install(infoSlot, handler, &defaultInfo);
 }
 
-MEPUBLIC MeMessageHandler MEAPI MeSetWarningHandler(MeMessageHandler handler)
-{
-    return install(warningSlot, handler, &defaultWarning);
+MEPUBLIC MeMessageHandler MEAPI MeSetWarningHandler(MeMessageHandler handler) {
+  return install(warningSlot, handler, &defaultWarning);
 }
 
-MEPUBLIC MeMessageHandler MEAPI MeSetFatalErrorHandler(MeMessageHandler handler)
-{
-    return install(fatalErrorSlot, handler, &defaultFatalError);
+MEPUBLIC MeMessageHandler MEAPI MeSetFatalErrorHandler(MeMessageHandler handler) {
+  return install(fatalErrorSlot, handler, &defaultFatalError);
 }
 
-MEPUBLIC MeMessageHandler MEAPI MeSetDebugHandler(MeMessageHandler handler)
-{
-    return install(debugSlot, handler, &defaultDebug);
+MEPUBLIC MeMessageHandler MEAPI MeSetDebugHandler(MeMessageHandler handler) {
+  return install(debugSlot, handler, &defaultDebug);
 }
 
-MEPUBLIC void MEAPI MeSetDebugLevel(int level)
-{
-    debugLevel.store(level, std::memory_order_relaxed);
-}
+MEPUBLIC void MEAPI MeSetDebugLevel(int level) { debugLevel.store(level, std::memory_order_relaxed); }
 
-MEPUBLIC int MEAPI MeGetDebugLevel(void)
-{
-    return debugLevel.load(std::memory_order_relaxed);
-}
+MEPUBLIC int MEAPI MeGetDebugLevel(void) { return debugLevel.load(std::memory_order_relaxed); }
 
-} // extern "C"
+}  // extern "C"

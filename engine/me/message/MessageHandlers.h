@@ -15,6 +15,6 @@ MeMessageHandler currentHandler(MessageChannel channel) noexcept;
 // The MeDebug threshold (0 = debug output off).
 int currentDebugLevel() noexcept;
 
-} // namespace karma::me
+}  // namespace karma::me
 
 #endif

@@ -42,8 +42,8 @@ ME_EXTERN_C_BEGIN
  * message) if an option is malformed, the output directory cannot be
  * written, or the backend cannot start. -help prints the options and exits
  * the program with status 0. */
-MEPUBLIC RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options,
-                                             MeCommandLineOptions *overrideOptions, MeBool eat);
+MEPUBLIC RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLineOptions *overrideOptions,
+                                             MeBool eat);
 /* Frees the context, its graphics in both lists, native lines and
  * textures. NULL is accepted. Returns 0. */
 MEPUBLIC int MEAPI RRenderContextDestroy(RRender *rc);
@@ -64,35 +64,32 @@ MEPUBLIC void MEAPI RGraphicRemoveFromList(RRender *rc, RGraphic *rg, int is2D);
  * rectangles to the 2D list; NULL on failure) ----------------------------- */
 
 /* x, y: left and top edge in 2D units. */
-MEPUBLIC RGraphic *MEAPI RGraphic2DRectangleCreate(RRender *rc, AcmeReal x, AcmeReal y, AcmeReal width,
-                                                   AcmeReal height, const float color[4]);
+MEPUBLIC RGraphic *MEAPI RGraphic2DRectangleCreate(RRender *rc, AcmeReal x, AcmeReal y, AcmeReal width, AcmeReal height,
+                                                   const float color[4]);
 /* A square in x-z of side `length` at height y_pos, cut into `triangles`
  * cells per side (two triangles each); textures span it once. */
-MEPUBLIC RGraphic *MEAPI RGraphicGroundPlaneCreate(RRender *rc, AcmeReal length, int triangles,
-                                                   const float color[4], AcmeReal y_pos);
+MEPUBLIC RGraphic *MEAPI RGraphicGroundPlaneCreate(RRender *rc, AcmeReal length, int triangles, const float color[4],
+                                                   AcmeReal y_pos);
 /* Centred at the origin, sides x, y, z. */
-MEPUBLIC RGraphic *MEAPI RGraphicBoxCreate(RRender *rc, AcmeReal x, AcmeReal y, AcmeReal z,
-                                           const float color[4], MeMatrix4Ptr matrix);
+MEPUBLIC RGraphic *MEAPI RGraphicBoxCreate(RRender *rc, AcmeReal x, AcmeReal y, AcmeReal z, const float color[4],
+                                           MeMatrix4Ptr matrix);
 /* Axis z: apex at z = uheight, base (radius `radius`) at z = -lheight. */
 MEPUBLIC RGraphic *MEAPI RGraphicConeCreate(RRender *rc, AcmeReal radius, AcmeReal uheight, AcmeReal lheight,
                                             const float color[4], MeMatrix4Ptr matrix);
 /* Axis z, from -height/2 to height/2. */
-MEPUBLIC RGraphic *MEAPI RGraphicCylinderCreate(RRender *rc, AcmeReal radius, AcmeReal height,
-                                                const float color[4], MeMatrix4Ptr matrix);
-MEPUBLIC RGraphic *MEAPI RGraphicSphereCreate(RRender *rc, AcmeReal radius, const float color[4],
-                                              MeMatrix4Ptr matrix);
+MEPUBLIC RGraphic *MEAPI RGraphicCylinderCreate(RRender *rc, AcmeReal radius, AcmeReal height, const float color[4],
+                                                MeMatrix4Ptr matrix);
+MEPUBLIC RGraphic *MEAPI RGraphicSphereCreate(RRender *rc, AcmeReal radius, const float color[4], MeMatrix4Ptr matrix);
 /* In the x-y plane, centred, facing +z. */
-MEPUBLIC RGraphic *MEAPI RGraphicSquareCreate(RRender *rc, AcmeReal side, const float color[4],
-                                              MeMatrix4Ptr matrix);
+MEPUBLIC RGraphic *MEAPI RGraphicSquareCreate(RRender *rc, AcmeReal side, const float color[4], MeMatrix4Ptr matrix);
 /* About the z axis; the surface spans distances innerRadius..outerRadius
  * from the axis (tube radius (outer - inner) / 2). */
 MEPUBLIC RGraphic *MEAPI RGraphicTorusCreate(RRender *rc, AcmeReal innerRadius, AcmeReal outerRadius,
                                              const float color[4], MeMatrix4Ptr matrix);
 /* Axis z, a `sides`-gon of radius bottomRadius at z = bottom to one of
  * topRadius at z = top, both ends capped. */
-MEPUBLIC RGraphic *MEAPI RGraphicFrustumCreate(RRender *rc, AcmeReal bottomRadius, AcmeReal topRadius,
-                                               AcmeReal bottom, AcmeReal top, int sides, const float color[4],
-                                               MeMatrix4Ptr matrix);
+MEPUBLIC RGraphic *MEAPI RGraphicFrustumCreate(RRender *rc, AcmeReal bottomRadius, AcmeReal topRadius, AcmeReal bottom,
+                                               AcmeReal top, int sides, const float color[4], MeMatrix4Ptr matrix);
 /* A line as an RGraphic: one degenerate wireframe triangle (origin, end,
  * end). Move it with RGraphicLineMoveEnds. */
 MEPUBLIC RGraphic *MEAPI RGraphicLineCreate(RRender *rc, AcmeReal *origin, AcmeReal *end, const float color[4],
@@ -105,8 +102,7 @@ MEPUBLIC RNativeLine *MEAPI RNLineCreate(RRender *const rc, const AcmeReal start
 MEPUBLIC void MEAPI RNLineMoveEnds(RNativeLine *const line, const AcmeReal start[3], const AcmeReal end[3]);
 /* Text in the 2D list, textured with the built-in "font": x, y are the left
  * and top edge in 2D units; '\n' starts a new line. */
-MEPUBLIC RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal x, AcmeReal y,
-                                            const float color[4]);
+MEPUBLIC RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal x, AcmeReal y, const float color[4]);
 
 /* ---- objects ------------------------------------------------------------ */
 
@@ -127,8 +123,8 @@ MEPUBLIC void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool wireframe);
 /* Appends the triangles of the strips to rg's list (growing the
  * allocation as needed), alternate triangles reversed so every triangle
  * keeps the strip's winding. rg->m_pVertices may move. */
-MEPUBLIC void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize,
-                                              int *stripStart, int numStrips);
+MEPUBLIC void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize, int *stripStart,
+                                              int numStrips);
 
 /* ---- object files (ASE) ------------------------------------------------------- */
 
@@ -138,15 +134,14 @@ MEPUBLIC void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strip
  * positions multiplied by the scales, into one graphic in the 3D list.
  * The file is found like a texture (the search path), by its full name.
  * NULL with a message for a missing or malformed file. */
-MEPUBLIC RGraphic *MEAPI RGraphicLoadASE(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale,
-                                         AcmeReal zScale, const float color[4], MeMatrix4Ptr matrix);
+MEPUBLIC RGraphic *MEAPI RGraphicLoadASE(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale,
+                                         const float color[4], MeMatrix4Ptr matrix);
 /* As RGraphicLoadASE, after normalising the object: centred on its bounding
  * box, each side scaled to length 2 (or, with bKeepAspectRatio, the longest
  * side to 2 and the others in proportion), then multiplied by the scales;
  * put in the 2D list when is2D. */
-MEPUBLIC RGraphic *MEAPI RGraphicCreate(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale,
-                                        AcmeReal zScale, const AcmeReal color[4], MeMatrix4Ptr matrix, int is2D,
-                                        int bKeepAspectRatio);
+MEPUBLIC RGraphic *MEAPI RGraphicCreate(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale,
+                                        const AcmeReal color[4], MeMatrix4Ptr matrix, int is2D, int bKeepAspectRatio);
 
 /* ---- textures ------------------------------------------------------------ */
 
@@ -249,10 +244,10 @@ MEPUBLIC RPerformanceBar *MEAPI RPerformanceBarCreate(RRender *rc);
  * viewer knows no physics; MeViewerAccuracy.h's probe computes them from
  * a dynamics world). */
 typedef struct RAccuracyFigures {
-    MeReal jointError;  /* largest joint gap: a joint's point as carried by each body, m */
-    MeReal penetration; /* deepest contact penetration, m */
-    MeReal energyDrift; /* kinetic + potential energy now minus at the first frame, J */
-    MeReal residual;    /* the solver's largest residual in the last step */
+  MeReal jointError;  /* largest joint gap: a joint's point as carried by each body, m */
+  MeReal penetration; /* deepest contact penetration, m */
+  MeReal energyDrift; /* kinetic + potential energy now minus at the first frame, J */
+  MeReal residual;    /* the solver's largest residual in the last step */
 } RAccuracyFigures;
 typedef void(MEAPI *RAccuracySource)(RAccuracyFigures *figures, void *data);
 
@@ -286,7 +281,7 @@ ME_EXTERN_C_END
  * and picks RRunNoData for a one-parameter tick (_Generic); in C++ there
  * are overloads (there, pass a real tick: a null one is ambiguous). */
 #if !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L
-#  define R_RUN_PICK_(tick) _Generic((tick), RMainLoopCallBackNoData: RRunNoData, default: RRun)
+#  define R_RUN_PICK_(tick) _Generic((tick), RMainLoopCallBackNoData : RRunNoData, default : RRun)
 #  define R_RUN_3_(rc, tick, userdata) R_RUN_PICK_(tick)(rc, tick, userdata)
 #  define R_RUN_2_(rc, tick) R_RUN_PICK_(tick)(rc, tick, 0)
 #  define R_RUN_SELECT_(a, b, c, name, ...) name

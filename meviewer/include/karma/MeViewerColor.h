@@ -19,25 +19,25 @@
 #if KARMA_DOUBLE
 
 static inline const float *RColorFromDouble_(const double *c, float *out) {
-    int i;
-    if (!c) return 0;
-    for (i = 0; i < 4; ++i) out[i] = (float)c[i];
-    return out;
+  int i;
+  if (!c) return 0;
+  for (i = 0; i < 4; ++i) out[i] = (float)c[i];
+  return out;
 }
 static inline const MeReal *RColorFromFloat_(const float *c, MeReal *out) {
-    int i;
-    if (!c) return 0;
-    for (i = 0; i < 4; ++i) out[i] = (MeReal)c[i];
-    return out;
+  int i;
+  if (!c) return 0;
+  for (i = 0; i < 4; ++i) out[i] = (MeReal)c[i];
+  return out;
 }
 
 #  if !defined(__cplusplus) && defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L
-#    define R_COLOR_F_(c)                                                                             \
-        _Generic((c), double *: RColorFromDouble_((const double *)(c), (float[4]){0, 0, 0, 0}),        \
+#    define R_COLOR_F_(c) \
+      _Generic((c), double *: RColorFromDouble_((const double *)(c), (float[4]){0, 0, 0, 0}),        \
                  const double *: RColorFromDouble_((const double *)(c), (float[4]){0, 0, 0, 0}),       \
                  default: (c))
-#    define R_COLOR_R_(c)                                                                             \
-        _Generic((c), float *: RColorFromFloat_((const float *)(c), (MeReal[4]){0, 0, 0, 0}),          \
+#    define R_COLOR_R_(c) \
+      _Generic((c), float *: RColorFromFloat_((const float *)(c), (MeReal[4]){0, 0, 0, 0}),          \
                  const float *: RColorFromFloat_((const float *)(c), (MeReal[4]){0, 0, 0, 0}),         \
                  default: (c))
 #    define RGraphic2DRectangleCreate(rc, x, y, w, h, c) RGraphic2DRectangleCreate(rc, x, y, w, h, R_COLOR_F_(c))
@@ -48,7 +48,8 @@ static inline const MeReal *RColorFromFloat_(const float *c, MeReal *out) {
 #    define RGraphicSphereCreate(rc, r, c, m) RGraphicSphereCreate(rc, r, R_COLOR_F_(c), m)
 #    define RGraphicSquareCreate(rc, s, c, m) RGraphicSquareCreate(rc, s, R_COLOR_F_(c), m)
 #    define RGraphicTorusCreate(rc, i, o, c, m) RGraphicTorusCreate(rc, i, o, R_COLOR_F_(c), m)
-#    define RGraphicFrustumCreate(rc, br, tr, b, t, s, c, m) RGraphicFrustumCreate(rc, br, tr, b, t, s, R_COLOR_F_(c), m)
+#    define RGraphicFrustumCreate(rc, br, tr, b, t, s, c, m) \
+      RGraphicFrustumCreate(rc, br, tr, b, t, s, R_COLOR_F_(c), m)
 #    define RGraphicLineCreate(rc, o, e, c, m) RGraphicLineCreate(rc, o, e, R_COLOR_F_(c), m)
 #    define RGraphicTextCreate(rc, t, x, y, c) RGraphicTextCreate(rc, t, x, y, R_COLOR_F_(c))
 #    define RGraphicSetColor(g, c) RGraphicSetColor(g, R_COLOR_F_(c))
@@ -56,11 +57,11 @@ static inline const MeReal *RColorFromFloat_(const float *c, MeReal *out) {
 #    define RGraphicLoadASE(rc, f, x, y, z, c, m) RGraphicLoadASE(rc, f, x, y, z, R_COLOR_F_(c), m)
 #    define RGraphicCreate(rc, f, x, y, z, c, m, d, k) RGraphicCreate(rc, f, x, y, z, R_COLOR_R_(c), m, d, k)
 #  elif defined(__cplusplus)
-#    define R_DOUBLE_COLOR_OVERLOAD_(ret, name, params, args)                                          \
-        inline ret name params {                                                                      \
-            float f_[4];                                                                              \
-            return name args;                                                                         \
-        }
+#    define R_DOUBLE_COLOR_OVERLOAD_(ret, name, params, args) \
+      inline ret name params {                                \
+        float f_[4];                                          \
+        return name args;                                     \
+      }
 R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphic2DRectangleCreate,
                          (RRender * rc, AcmeReal x, AcmeReal y, AcmeReal w, AcmeReal h, const double c[4]),
                          (rc, x, y, w, h, RColorFromDouble_(c, f_)))
@@ -76,9 +77,11 @@ R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicConeCreate,
 R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicCylinderCreate,
                          (RRender * rc, AcmeReal r, AcmeReal h, const double c[4], MeMatrix4Ptr m),
                          (rc, r, h, RColorFromDouble_(c, f_), m))
-R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicSphereCreate, (RRender * rc, AcmeReal r, const double c[4], MeMatrix4Ptr m),
+R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicSphereCreate,
+                         (RRender * rc, AcmeReal r, const double c[4], MeMatrix4Ptr m),
                          (rc, r, RColorFromDouble_(c, f_), m))
-R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicSquareCreate, (RRender * rc, AcmeReal s, const double c[4], MeMatrix4Ptr m),
+R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicSquareCreate,
+                         (RRender * rc, AcmeReal s, const double c[4], MeMatrix4Ptr m),
                          (rc, s, RColorFromDouble_(c, f_), m))
 R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicTorusCreate,
                          (RRender * rc, AcmeReal i, AcmeReal o, const double c[4], MeMatrix4Ptr m),
@@ -90,7 +93,8 @@ R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicFrustumCreate,
 R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicLineCreate,
                          (RRender * rc, AcmeReal *o, AcmeReal *e, const double c[4], MeMatrix4Ptr m),
                          (rc, o, e, RColorFromDouble_(c, f_), m))
-R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicTextCreate, (RRender * rc, char *t, AcmeReal x, AcmeReal y, const double c[4]),
+R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicTextCreate,
+                         (RRender * rc, char *t, AcmeReal x, AcmeReal y, const double c[4]),
                          (rc, t, x, y, RColorFromDouble_(c, f_)))
 R_DOUBLE_COLOR_OVERLOAD_(void, RGraphicSetColor, (RGraphic * g, const double c[4]), (g, RColorFromDouble_(c, f_)))
 R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicLoadASE,
@@ -98,13 +102,13 @@ R_DOUBLE_COLOR_OVERLOAD_(RGraphic *, RGraphicLoadASE,
                          (rc, f, x, y, z, RColorFromDouble_(c, f_), m))
 inline RGraphic *RGraphicCreate(RRender *rc, char *f, AcmeReal x, AcmeReal y, AcmeReal z, const float c[4],
                                 MeMatrix4Ptr m, int is2D, int keep) {
-    MeReal r[4];
-    return RGraphicCreate(rc, f, x, y, z, RColorFromFloat_(c, r), m, is2D, keep);
+  MeReal r[4];
+  return RGraphicCreate(rc, f, x, y, z, RColorFromFloat_(c, r), m, is2D, keep);
 }
 inline RNativeLine *RNLineCreate(RRender *const rc, const AcmeReal s[3], const AcmeReal e[3], const float c[4],
                                  const MeVector4 *const m) {
-    MeReal r[4];
-    return RNLineCreate(rc, s, e, RColorFromFloat_(c, r), m);
+  MeReal r[4];
+  return RNLineCreate(rc, s, e, RColorFromFloat_(c, r), m);
 }
 #    undef R_DOUBLE_COLOR_OVERLOAD_
 #  endif

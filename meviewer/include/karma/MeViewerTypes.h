@@ -35,68 +35,63 @@ typedef MeVector4 AcmeVector4;
 #define R_TEXT_CHAR_HEIGHT 14
 
 typedef struct RObjectVertex {
-    float m_X, m_Y, m_Z;    /* position in the object's frame */
-    float m_NX, m_NY, m_NZ; /* unit normal */
-    float m_U, m_V;         /* texture coordinates in [0, 1] */
+  float m_X, m_Y, m_Z;    /* position in the object's frame */
+  float m_NX, m_NY, m_NZ; /* unit normal */
+  float m_U, m_V;         /* texture coordinates in [0, 1] */
 } RObjectVertex;
 
 typedef struct RObjectHeader {
-    MeMatrix4 m_Matrix;        /* copied from m_pLWMatrix each frame (identity if none) */
-    int m_nNumVertices;        /* vertices in use, a multiple of 3 */
-    int m_nTextureID;          /* -1: untextured */
-    int m_bIsWireFrame;        /* non-zero: draw the triangle edges only */
-    float m_ColorAmbient[4];   /* RGBA */
-    float m_ColorDiffuse[4];
-    float m_ColorEmissive[4];
-    float m_ColorSpecular[4];
-    float m_SpecularPower;     /* shininess, 0..128 */
+  MeMatrix4 m_Matrix;      /* copied from m_pLWMatrix each frame (identity if none) */
+  int m_nNumVertices;      /* vertices in use, a multiple of 3 */
+  int m_nTextureID;        /* -1: untextured */
+  int m_bIsWireFrame;      /* non-zero: draw the triangle edges only */
+  float m_ColorAmbient[4]; /* RGBA */
+  float m_ColorDiffuse[4];
+  float m_ColorEmissive[4];
+  float m_ColorSpecular[4];
+  float m_SpecularPower; /* shininess, 0..128 */
 } RObjectHeader;
 
 typedef struct RGraphic {
-    RObjectHeader *m_pObject;   /* the header; the vertices follow it */
-    RObjectVertex *m_pVertices; /* == (RObjectVertex *)(m_pObject + 1), aligned */
-    MeMatrix4Ptr m_pLWMatrix;   /* local-to-world transform, or NULL */
-    int m_nMaxNumVertices;      /* vertices allocated after the header */
-    struct RGraphic *m_pNext;   /* next in its render list */
-    void *m_pUserData;          /* for the application */
+  RObjectHeader *m_pObject;   /* the header; the vertices follow it */
+  RObjectVertex *m_pVertices; /* == (RObjectVertex *)(m_pObject + 1), aligned */
+  MeMatrix4Ptr m_pLWMatrix;   /* local-to-world transform, or NULL */
+  int m_nMaxNumVertices;      /* vertices allocated after the header */
+  struct RGraphic *m_pNext;   /* next in its render list */
+  void *m_pUserData;          /* for the application */
 } RGraphic;
 
 /* A line drawn by the graphics library itself (GL_LINES), unlit. */
 typedef struct RNativeLine {
-    AcmeReal m_Start[3];
-    AcmeReal m_End[3];
-    float m_Color[4];
-    const MeVector4 *m_pMatrix; /* transform of the end points, or NULL */
-    struct RNativeLine *m_pNext;
+  AcmeReal m_Start[3];
+  AcmeReal m_End[3];
+  float m_Color[4];
+  const MeVector4 *m_pMatrix; /* transform of the end points, or NULL */
+  struct RNativeLine *m_pNext;
 } RNativeLine;
 
 typedef struct RDirectLight {
-    int m_bUseLight;         /* non-zero: the light is on */
-    float m_rgbAmbient[3];
-    float m_rgbDiffuse[3];
-    float m_rgbSpecular[3];
-    float m_Direction[3];    /* the direction the light travels (need not be unit) */
+  int m_bUseLight; /* non-zero: the light is on */
+  float m_rgbAmbient[3];
+  float m_rgbDiffuse[3];
+  float m_rgbSpecular[3];
+  float m_Direction[3]; /* the direction the light travels (need not be unit) */
 } RDirectLight;
 
 /* Intensity falls with distance d as 1 / (constant + linear d + quadratic d^2). */
 typedef struct RPointLight {
-    int m_bUseLight;
-    float m_rgbAmbient[3];
-    float m_rgbDiffuse[3];
-    float m_rgbSpecular[3];
-    float m_Position[3];     /* world coordinates */
-    float m_AttenuationConstant;
-    float m_AttenuationLinear;
-    float m_AttenuationQuadratic;
+  int m_bUseLight;
+  float m_rgbAmbient[3];
+  float m_rgbDiffuse[3];
+  float m_rgbSpecular[3];
+  float m_Position[3]; /* world coordinates */
+  float m_AttenuationConstant;
+  float m_AttenuationLinear;
+  float m_AttenuationQuadratic;
 } RPointLight;
 
 /* The four lights of a render context (RLightSwitchOn / RLightSwitchOff). */
-typedef enum RRenderLight {
-    kRAmbient = 0,
-    kRDirect1 = 1,
-    kRDirect2 = 2,
-    kRPoint = 3
-} RRenderLight;
+typedef enum RRenderLight { kRAmbient = 0, kRDirect1 = 1, kRDirect2 = 2, kRPoint = 3 } RRenderLight;
 
 struct RRender;
 struct RRenderPrivate;
@@ -130,49 +125,49 @@ typedef struct RPerformanceBar RPerformanceBar;
  * camera through the RCamera functions (or call RCameraUpdate after writing
  * the camera members directly). */
 typedef struct RRender {
-    /* The application's name for $APPNAME. Points at m_AppNameBuffer at
+  /* The application's name for $APPNAME. Points at m_AppNameBuffer at
      * creation, so both strcpy(rc->m_AppName, ...) (up to R_APPNAME_SIZE-1
      * characters) and rc->m_AppName = "..." work. */
-    char *m_AppName;
-    char m_AppNameBuffer[R_APPNAME_SIZE];
+  char *m_AppName;
+  char m_AppNameBuffer[R_APPNAME_SIZE];
 
-    /* Render lists (RGraphicAddToList). */
-    RGraphic *m_pRG_First;   /* 3D */
-    RGraphic *m_pRG_First2D; /* 2D overlay */
-    RNativeLine *m_pNL_First;
+  /* Render lists (RGraphicAddToList). */
+  RGraphic *m_pRG_First;   /* 3D */
+  RGraphic *m_pRG_First2D; /* 2D overlay */
+  RNativeLine *m_pNL_First;
 
-    /* Camera, spherical about the look-at point: dist >= 0.01,
+  /* Camera, spherical about the look-at point: dist >= 0.01,
      * theta in [-pi, pi] about y from the +z axis (anticlockwise seen from
      * above), phi in [-pi/2, pi/2] above the xz plane. */
-    AcmeReal m_CameraLookAt[3];
-    AcmeReal m_CameraDist;
-    AcmeReal m_CameraTheta;
-    AcmeReal m_CameraPhi;
-    AcmeReal m_CameraPos[3];  /* derived by RCameraUpdate */
-    AcmeReal m_CameraUp[3];   /* derived: unit, perpendicular to the view */
-    MeMatrix4 m_CameraMatrix; /* derived: world to camera TM (camera looks down -z) */
-    AcmeReal m_CameraFOV;     /* vertical field of view, radians */
+  AcmeReal m_CameraLookAt[3];
+  AcmeReal m_CameraDist;
+  AcmeReal m_CameraTheta;
+  AcmeReal m_CameraPhi;
+  AcmeReal m_CameraPos[3];  /* derived by RCameraUpdate */
+  AcmeReal m_CameraUp[3];   /* derived: unit, perpendicular to the view */
+  MeMatrix4 m_CameraMatrix; /* derived: world to camera TM (camera looks down -z) */
+  AcmeReal m_CameraFOV;     /* vertical field of view, radians */
 
-    /* Lighting (the guide's "Lighting"): changes to the ambient colour take
+  /* Lighting (the guide's "Lighting"): changes to the ambient colour take
      * effect next frame; after changing a light structure once RRun runs,
      * set its m_bForce...Update flag (the renderer clears it). */
-    float m_rgbAmbientLightColor[3];
-    int m_bUseAmbientLight;
-    RDirectLight m_DirectLight1;
-    RDirectLight m_DirectLight2;
-    RPointLight m_PointLight;
-    int m_bForceDirectLight1Update;
-    int m_bForceDirectLight2Update;
-    int m_bForcePointLightUpdate;
+  float m_rgbAmbientLightColor[3];
+  int m_bUseAmbientLight;
+  RDirectLight m_DirectLight1;
+  RDirectLight m_DirectLight2;
+  RPointLight m_PointLight;
+  int m_bForceDirectLight1Update;
+  int m_bForceDirectLight2Update;
+  int m_bForcePointLightUpdate;
 
-    float m_BackgroundColour[3];
+  float m_BackgroundColour[3];
 
-    /* Output size in pixels (-size WxH) and frames drawn so far. */
-    int m_nWidth;
-    int m_nHeight;
-    int m_nFrame;
+  /* Output size in pixels (-size WxH) and frames drawn so far. */
+  int m_nWidth;
+  int m_nHeight;
+  int m_nFrame;
 
-    struct RRenderPrivate *m_pPrivate; /* the implementation's state */
+  struct RRenderPrivate *m_pPrivate; /* the implementation's state */
 } RRender;
 
 ME_EXTERN_C_END

@@ -4,15 +4,13 @@
 #include <karma/MeViewer.h>
 #include <cstdio>
 
-int main()
-{
-    MeMatrix4 tm;
-    MeMatrix4TMMakeIdentity(tm);
-    MeMatrix4TMSetPosition(tm, 1, 2, 3);
-    MeVector3 p;
-    MeMatrix4TMGetPosition(p, tm);
-    if (p[0] != 1 || p[1] != 2 || p[2] != 3)
-        return 1;
-    std::printf("karma consumer ok (C++, MeReal is %zu bytes)\n", sizeof(MeReal));
-    return 0;
+int main() {
+  MeMatrix4 tm;
+  MeMatrix4TMMakeIdentity(tm);
+  MeMatrix4TMSetPosition(tm, 1, 2, 3);
+  MeVector3 p;
+  MeMatrix4TMGetPosition(p, tm);
+  if (p[0] != 1 || p[1] != 2 || p[2] != 3) return 1;
+  std::printf("karma consumer ok (C++, MeReal is %zu bytes)\n", sizeof(MeReal));
+  return 0;
 }

@@ -21,7 +21,7 @@ namespace {
 // out. (On a slope the test errs the safe way: a sphere resting on it has
 // its lowest point above the terrain under its centre.)
 constexpr double kSinkTolerance = 0.025;  // m
-constexpr int kSteps = 20 * 60;          // 20 s at CAR_STEP = 1/60 s
+constexpr int kSteps = 20 * 60;           // 20 s at CAR_STEP = 1/60 s
 
 bool Finite(const MeReal *v, int n) {
   for (int i = 0; i < n; ++i)
@@ -30,10 +30,10 @@ bool Finite(const MeReal *v, int n) {
 }
 
 struct Drive {
-  double worstWheelSink = -1e9;   // max over steps and wheels of terrain - lowest point
-  double worstChassisSink = -1e9; // max over steps and corners of terrain - corner
+  double worstWheelSink = -1e9;    // max over steps and wheels of terrain - lowest point
+  double worstChassisSink = -1e9;  // max over steps and corners of terrain - corner
   bool finite = true;
-  double restSink = -1e9;         // the same, standing still before the throttle (t = 0.85 s)
+  double restSink = -1e9;  // the same, standing still before the throttle (t = 0.85 s)
   double distance = 0, farthest = 0, topSpeed = 0, lowestUp = 1;
   long contacts = 0;
   double worstDirectionDot = 0;
@@ -89,12 +89,13 @@ Drive RunDrive(int steps) {
 
 TEST(CarTerrain, TwentySecondsOnTheTerrainWithoutSinkingOrNaNAndGetsSomewhere) {
   const Drive d = RunDrive(kSteps);
-  std::printf("[ figures  ] carterrain 20 s: path %.1f m, farthest %.1f m from the start, top speed %.2f "
-              "m/s; wheel sink at rest %.2f mm, worst %.2f mm; worst chassis corner %.2f m above the "
-              "terrain; lowest chassis up-axis y %.3f; %ld wheel contacts, worst |dir.n| or "
-              "|dir.hinge| %.2g\n",
-              d.distance, d.farthest, d.topSpeed, d.restSink * 1000, d.worstWheelSink * 1000,
-              -d.worstChassisSink, d.lowestUp, d.contacts, d.worstDirectionDot);
+  std::printf(
+      "[ figures  ] carterrain 20 s: path %.1f m, farthest %.1f m from the start, top speed %.2f "
+      "m/s; wheel sink at rest %.2f mm, worst %.2f mm; worst chassis corner %.2f m above the "
+      "terrain; lowest chassis up-axis y %.3f; %ld wheel contacts, worst |dir.n| or "
+      "|dir.hinge| %.2g\n",
+      d.distance, d.farthest, d.topSpeed, d.restSink * 1000, d.worstWheelSink * 1000, -d.worstChassisSink, d.lowestUp,
+      d.contacts, d.worstDirectionDot);
   EXPECT_EQ(d.stepsRun, kSteps);
   EXPECT_TRUE(d.finite) << "NaN or infinity after step " << d.stepsRun;
   EXPECT_LT(d.worstWheelSink, kSinkTolerance) << "a wheel sank into the terrain";

@@ -100,8 +100,7 @@ TEST(DirectParams, ThePendulumThatBlewUpIsToldFirst) {
   std::printf("gamma 5 written directly: the bob reached %g m from the pivot\n", (double)far);
   EXPECT_GT(far, 2);  // the blow-up happens, but not silently
   int gammaWarnings = 0;
-  for (const std::string &m : WarningCapture::log())
-    gammaWarnings += m.find("MdtWorldSetGamma") != std::string::npos;
+  for (const std::string &m : WarningCapture::log()) gammaWarnings += m.find("MdtWorldSetGamma") != std::string::npos;
   EXPECT_EQ(gammaWarnings, 1);
 }
 

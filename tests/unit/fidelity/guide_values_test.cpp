@@ -48,10 +48,11 @@ double PredictedSink(double epsilon) {
 TEST(GuideValues, CarTerrainEpsilon) {
   const double atDefault = StandingWheelSink((MeReal)0.01, 2);
   const double atTutorial = StandingWheelSink(CAR_EPSILON, 2);
-  std::printf("CarTerrain standing 2 s: a wheel sinks %.1f mm at epsilon 0.01 (predicted %.1f), "
-              "%.1f mm at %g (predicted %.1f)\n",
-              atDefault * 1e3, PredictedSink(0.01) * 1e3, atTutorial * 1e3, (double)CAR_EPSILON,
-              PredictedSink((double)CAR_EPSILON) * 1e3);
+  std::printf(
+      "CarTerrain standing 2 s: a wheel sinks %.1f mm at epsilon 0.01 (predicted %.1f), "
+      "%.1f mm at %g (predicted %.1f)\n",
+      atDefault * 1e3, PredictedSink(0.01) * 1e3, atTutorial * 1e3, (double)CAR_EPSILON,
+      PredictedSink((double)CAR_EPSILON) * 1e3);
   EXPECT_NEAR(atDefault, PredictedSink(0.01), 0.3 * PredictedSink(0.01));
   EXPECT_NEAR(atTutorial, PredictedSink((double)CAR_EPSILON), 0.3 * PredictedSink(0.01));
   EXPECT_GT(atDefault, 8 * atTutorial);
@@ -83,9 +84,9 @@ TEST(GuideValues, BallmanViscosity) {
   CheapDollAfter((MeReal)0.3, 480, guide);
   CheapDollAfter(kBallmanViscosity, 480, tutorial);
   CheapDollAfter((MeReal)0.3 * kBallmanStep / (MeReal)kBallmanSubsteps, 480, perImpulse);
-  std::printf("Ballman cheap friction, torso after 8 s: slip 0.3 at x = %.2f m, slip %.2f at x = "
-              "%.2f m, slip 0.3 h at x = %.2f m\n",
-              (double)guide[0], (double)kBallmanViscosity, (double)tutorial[0],
-              (double)perImpulse[0]);
+  std::printf(
+      "Ballman cheap friction, torso after 8 s: slip 0.3 at x = %.2f m, slip %.2f at x = "
+      "%.2f m, slip 0.3 h at x = %.2f m\n",
+      (double)guide[0], (double)kBallmanViscosity, (double)tutorial[0], (double)perImpulse[0]);
   EXPECT_GT(guide[0], tutorial[0] + 1);
 }

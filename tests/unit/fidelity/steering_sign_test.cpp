@@ -54,8 +54,7 @@ struct Bike {
     desired_vel = steeringInput * kWidth + theta;
     desired_vel = clip(desired_vel, -kPgap, kPgap);
     MdtCarWheelSetSteeringLimitedForceMotor(wheelJoint, kMaxSpeed * desired_vel, kMaxForce);
-    MdtLimitController(MdtHingeGetLimit(barJoint), -steeringInput * kWidth, kPgap, kMaxSpeed,
-                       kMaxForce);
+    MdtLimitController(MdtHingeGetLimit(barJoint), -steeringInput * kWidth, kPgap, kMaxSpeed, kMaxForce);
     MdtWorldStep(w, (MeReal)1 / 60);
   }
   // The turn of a body's x axis about world y (positive: from +x towards -z).

@@ -33,7 +33,8 @@ inline double Real(double v) { return static_cast<double>(static_cast<MeReal>(v)
 inline BodyState SyntheticBody(int f, int b) {
   BodyState s;
   const double t = 0.1 * f + 0.37 * b;
-  s.position = {Real(1.25 + 0.731 * b + 0.0137 * f), Real(2.5 - 0.0981 * f * f + 0.21 * b), Real(-0.333 * b + 0.071 * f)};
+  s.position = {Real(1.25 + 0.731 * b + 0.0137 * f), Real(2.5 - 0.0981 * f * f + 0.21 * b),
+                Real(-0.333 * b + 0.071 * f)};
   const double half = 0.5 * (0.3 + 0.17 * f + 0.41 * b);
   const double ax = 0.6, ay = 0.0, az = 0.8; /* unit axis */
   s.quaternion = {Real(std::cos(half)), Real(ax * std::sin(half)), Real(ay * std::sin(half) + 1e-3 * b),
@@ -71,11 +72,12 @@ inline Trajectory SyntheticTrajectory() {
 
 /* A fresh directory under the test temp dir, removed with its contents. */
 class TempDir {
-public:
+ public:
   explicit TempDir(const std::string &tag) {
     const std::filesystem::path base = std::filesystem::temp_directory_path();
     for (int attempt = 0;; ++attempt) {
-      path_ = base / ("karma_golden_" + tag + "_" + std::to_string(KARMA_TEST_GETPID()) + "_" + std::to_string(attempt));
+      path_ =
+          base / ("karma_golden_" + tag + "_" + std::to_string(KARMA_TEST_GETPID()) + "_" + std::to_string(attempt));
       if (std::filesystem::create_directories(path_)) break;
     }
   }
@@ -87,10 +89,10 @@ public:
   TempDir &operator=(const TempDir &) = delete;
   const std::filesystem::path &path() const { return path_; }
 
-private:
+ private:
   std::filesystem::path path_;
 };
 
-} // namespace karma::golden::test_support
+}  // namespace karma::golden::test_support
 
 #endif

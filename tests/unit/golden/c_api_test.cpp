@@ -36,8 +36,8 @@ TEST(KarmaTrajectoryCApi, WritesAFileThatReadsBackWithTheReportedHash) {
 
   const Trajectory t = ReadTrajectoryFile(path);
   EXPECT_EQ(t.header.program, "capi");
-  EXPECT_EQ(t.header.step, "main");          /* NULL step */
-  EXPECT_EQ(t.header.backend, "reference");  /* NULL backend */
+  EXPECT_EQ(t.header.step, "main");         /* NULL step */
+  EXPECT_EQ(t.header.backend, "reference"); /* NULL backend */
   EXPECT_EQ(t.header.precision, kBuildPrecision);
   EXPECT_EQ(t.frames.size(), 3u);
   EXPECT_EQ(t.finalHash, hash);
@@ -88,5 +88,5 @@ TEST(KarmaTrajectoryCApi, FrameFileNameTruncatesSafely) {
   EXPECT_STREQ(small, "frame");
 }
 
-} // namespace
-} // namespace karma::golden
+}  // namespace
+}  // namespace karma::golden

@@ -34,7 +34,7 @@ kg::Image Frame(int seed) {
 
 /* golden/ and actual/ each with trajectory.txt and frames 0 and 10. */
 class GoldenCheckTest : public ::testing::Test {
-protected:
+ protected:
   GoldenCheckTest() : dir_("check"), golden_(dir_.path() / "golden"), actual_(dir_.path() / "actual") {
     fs::create_directories(golden_);
     fs::create_directories(actual_);
@@ -51,7 +51,7 @@ protected:
   fs::path golden_, actual_;
 };
 
-} // namespace
+}  // namespace
 
 TEST_F(GoldenCheckTest, MatchingOutputMatches) {
   const kg::CheckResult r = Check();
@@ -114,9 +114,7 @@ TEST_F(GoldenCheckTest, EmptyGoldenDirectoryIsError) {
 }
 
 TEST_F(GoldenCheckTest, UnreadableGoldenTrajectoryIsError) {
-  {
-    std::ofstream(golden_ / kg::kTrajectoryFileName) << "not a trajectory\n";
-  }
+  { std::ofstream(golden_ / kg::kTrajectoryFileName) << "not a trajectory\n"; }
   const kg::CheckResult r = Check();
   EXPECT_EQ(r.status, kg::CheckStatus::Error) << r.report;
 }

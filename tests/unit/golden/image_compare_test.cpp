@@ -35,10 +35,11 @@ kg::Image Picture(int w = kW, int h = kH) {
 /* Adds `amount` to the red channel of the block [x0, x0+w) x [y0, y0+h). */
 void Bump(kg::Image &img, int x0, int y0, int w, int h, int amount, int channel = 0) {
   for (int y = y0; y < y0 + h; ++y)
-    for (int x = x0; x < x0 + w; ++x) img.Pixel(x, y)[channel] = static_cast<std::uint8_t>(img.Pixel(x, y)[channel] + amount);
+    for (int x = x0; x < x0 + w; ++x)
+      img.Pixel(x, y)[channel] = static_cast<std::uint8_t>(img.Pixel(x, y)[channel] + amount);
 }
 
-} // namespace
+}  // namespace
 
 TEST(ImageCompare, IdenticalImagesMatch) {
   const kg::ImageComparison c = kg::CompareImages(Picture(), Picture(), kg::kDefaultImageTolerances);
@@ -90,8 +91,8 @@ TEST(ImageCompare, ChannelToleranceIsInclusive) {
   const kg::ImageTolerances strictFraction{tol, 0.0};
 
   kg::Image atTolerance = Picture();
-  Bump(atTolerance, 5, 5, 1, 1, tol);        /* red */
-  Bump(atTolerance, 6, 5, 1, 1, -tol, 1);    /* green, downward */
+  Bump(atTolerance, 5, 5, 1, 1, tol);     /* red */
+  Bump(atTolerance, 6, 5, 1, 1, -tol, 1); /* green, downward */
   kg::ImageComparison c = kg::CompareImages(Picture(), atTolerance, strictFraction);
   EXPECT_EQ(c.differingPixels, 0u);
   EXPECT_EQ(c.maxChannelDifference, tol);
@@ -145,7 +146,7 @@ TEST(ImageCompare, CompareImageFilesWritesRedDiffImage) {
   const kg::Image expected = Picture();
   kg::Image actual = Picture();
   Bump(actual, 100, 30, 40, 40, 100);
-  Bump(actual, 5, 200, 2, 3, 9, 2); /* just over the tolerance */
+  Bump(actual, 5, 200, 2, 3, 9, 2);  /* just over the tolerance */
   Bump(actual, 300, 10, 2, 2, 8, 1); /* at the tolerance: not differing */
   const auto expectedPath = dir.path() / "frame_00010.golden.png";
   const auto actualPath = dir.path() / "frame_00010.png";
@@ -182,7 +183,8 @@ TEST(ImageCompare, CompareImageFilesWritesRedDiffImage) {
             explicitDiff);
   EXPECT_TRUE(std::filesystem::exists(explicitDiff));
   const auto passDiff = dir.path() / "pass.diff.png";
-  const kg::ImageComparison same = kg::CompareImageFiles(expectedPath, expectedPath, kg::kDefaultImageTolerances, passDiff);
+  const kg::ImageComparison same =
+      kg::CompareImageFiles(expectedPath, expectedPath, kg::kDefaultImageTolerances, passDiff);
   EXPECT_TRUE(same.passed);
   EXPECT_TRUE(same.diffImage.empty());
   EXPECT_FALSE(std::filesystem::exists(passDiff));

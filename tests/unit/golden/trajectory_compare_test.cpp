@@ -30,7 +30,7 @@ kg::Trajectory ThroughFile(const kg::Trajectory &t) {
   return kg::ReadTrajectory(in, "memory");
 }
 
-} // namespace
+}  // namespace
 
 TEST(TrajectoryCompare, IdenticalRunsMatch) {
   const kg::Trajectory a = ThroughFile(ts::SyntheticTrajectory());

@@ -72,7 +72,7 @@ std::string Join(const std::vector<std::string> &lines) {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 TEST(TrajectoryIo, RoundTripIsBitIdenticalAndHashesAgree) {
   std::uint64_t writerHash = 0;

@@ -17,7 +17,7 @@
 #include <vector>
 
 #if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
-#define KEA_ALLOC_TEST_COUNTS_MALLOC 1
+#  define KEA_ALLOC_TEST_COUNTS_MALLOC 1
 extern "C" {
 void *__libc_malloc(std::size_t);
 void *__libc_calloc(std::size_t, std::size_t);
@@ -142,7 +142,8 @@ std::vector<ContactProblem> Steps(const ContactProblem &base, int steps) {
   for (int s = 0; s < steps; ++s) {
     ContactProblem p = base;
     for (std::size_t i = 0; i < p.b.size(); ++i)
-      p.b[i] += static_cast<MeReal>(2e-3 * bMax * kea_test::Jitter(static_cast<unsigned>(s) + 1, static_cast<unsigned>(i)));
+      p.b[i] +=
+          static_cast<MeReal>(2e-3 * bMax * kea_test::Jitter(static_cast<unsigned>(s) + 1, static_cast<unsigned>(i)));
     all.push_back(std::move(p));
   }
   return all;

@@ -79,14 +79,12 @@ struct ContactProblem {
   int n = 0;
   std::vector<int> rowStart, col, findex;
   std::vector<MeReal> val, b, lo, hi, mu;
-  karma::kea::SparseLcpProblem sparse() const {
-    return {n, rowStart, col, val, b, lo, hi, findex, mu};
-  }
+  karma::kea::SparseLcpProblem sparse() const { return {n, rowStart, col, val, b, lo, hi, findex, mu}; }
 };
 
 // A = J M^-1 J^T + soft I in CSR; b = bias - J v - h J M^-1 f.
-inline ContactProblem Assemble(const std::vector<Body> &bodies, const std::vector<JRow> &rows, double h,
-                               double soft, bool friction) {
+inline ContactProblem Assemble(const std::vector<Body> &bodies, const std::vector<JRow> &rows, double h, double soft,
+                               bool friction) {
   ContactProblem p;
   p.n = static_cast<int>(rows.size());
   const auto n = rows.size();
@@ -98,7 +96,8 @@ inline ContactProblem Assemble(const std::vector<Body> &bodies, const std::vecto
     const Body &b = bodies[static_cast<std::size_t>(bi)];
     for (int d = 0; d < 3; ++d) {
       out[static_cast<std::size_t>(d)] = b.invMass * j[static_cast<std::size_t>(d)];
-      out[static_cast<std::size_t>(d + 3)] = b.invInertia[static_cast<std::size_t>(d)] * j[static_cast<std::size_t>(d + 3)];
+      out[static_cast<std::size_t>(d + 3)] =
+          b.invInertia[static_cast<std::size_t>(d)] * j[static_cast<std::size_t>(d + 3)];
     }
     return out;
   };
@@ -160,8 +159,8 @@ inline double Jitter(unsigned seed, unsigned i) {
 // A contact between body `upper` and body `lower` (-1 = ground) at point
 // `at`, normal +z: rows appended (normal, then friction x and y when
 // `friction`).
-inline void AddContact(std::vector<JRow> &rows, const std::vector<Vec3> &centres, int upper, int lower,
-                       const Vec3 &at, double depth, double mu, bool friction) {
+inline void AddContact(std::vector<JRow> &rows, const std::vector<Vec3> &centres, int upper, int lower, const Vec3 &at,
+                       double depth, double mu, bool friction) {
   const Vec3 axes[3] = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
   const int normalRow = static_cast<int>(rows.size());
   for (int k = 0; k < (friction ? 3 : 1); ++k) {
@@ -210,8 +209,8 @@ inline ContactProblem Stack(int boxes, unsigned seed, bool friction = true) {
   unsigned c = 0;
   for (int k = 0; k < boxes; ++k)
     for (int corner = 0; corner < 4; ++corner, ++c) {
-      const Vec3 at{centres[static_cast<std::size_t>(k)][0] + ((corner & 1) ? 0.5 : -0.5),
-                    (corner & 2) ? 0.5 : -0.5, double(k)};
+      const Vec3 at{centres[static_cast<std::size_t>(k)][0] + ((corner & 1) ? 0.5 : -0.5), (corner & 2) ? 0.5 : -0.5,
+                    double(k)};
       const double depth = 0.001 * (1 + Jitter(seed + 11, c)) / 2;
       AddContact(rows, centres, k, k - 1, at, depth, 0.5, friction);
     }

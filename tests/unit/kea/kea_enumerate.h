@@ -24,8 +24,9 @@ inline std::vector<double> EnumerateLcp(const karma::kea::LcpProblem &o, int *fo
     for (int j = 0; j < n; ++j) A(i, j) = o.A[static_cast<std::size_t>(i * n + j)];
   }
   auto bound = [](MeReal v) {
-    return v >= MEINFINITY ? std::numeric_limits<double>::infinity()
-                           : v <= -MEINFINITY ? -std::numeric_limits<double>::infinity() : double(v);
+    return v >= MEINFINITY    ? std::numeric_limits<double>::infinity()
+           : v <= -MEINFINITY ? -std::numeric_limits<double>::infinity()
+                              : double(v);
   };
   int combos = 1;
   for (int i = 0; i < n; ++i) combos *= 3;
@@ -39,9 +40,18 @@ inline std::vector<double> EnumerateLcp(const karma::kea::LcpProblem &o, int *fo
     for (int i = 0, code = c; i < n; ++i, code /= 3) {
       set[static_cast<std::size_t>(i)] = code % 3;
       const double lo = bound(o.lo[static_cast<std::size_t>(i)]), hi = bound(o.hi[static_cast<std::size_t>(i)]);
-      if (code % 3 == 1) { if (std::isinf(lo)) ok = false; else x(i) = lo; }
-      else if (code % 3 == 2) { if (std::isinf(hi)) ok = false; else x(i) = hi; }
-      else freeRows.push_back(i);
+      if (code % 3 == 1) {
+        if (std::isinf(lo))
+          ok = false;
+        else
+          x(i) = lo;
+      } else if (code % 3 == 2) {
+        if (std::isinf(hi))
+          ok = false;
+        else
+          x(i) = hi;
+      } else
+        freeRows.push_back(i);
     }
     if (!ok) continue;
     const int m = static_cast<int>(freeRows.size());
@@ -63,9 +73,15 @@ inline std::vector<double> EnumerateLcp(const karma::kea::LcpProblem &o, int *fo
     for (int i = 0; i < n && ok; ++i) {
       const double lo = bound(o.lo[static_cast<std::size_t>(i)]), hi = bound(o.hi[static_cast<std::size_t>(i)]);
       switch (set[static_cast<std::size_t>(i)]) {
-        case 0: ok = x(i) >= lo - tiny && x(i) <= hi + tiny; break;
-        case 1: ok = w(i) >= -tiny; break;
-        default: ok = w(i) <= tiny; break;
+        case 0:
+          ok = x(i) >= lo - tiny && x(i) <= hi + tiny;
+          break;
+        case 1:
+          ok = w(i) >= -tiny;
+          break;
+        default:
+          ok = w(i) <= tiny;
+          break;
       }
     }
     if (ok) {

@@ -55,11 +55,26 @@ Owned RandomBoxed(int n, unsigned seed) {
     o.b.push_back(static_cast<MeReal>(u(rng)));
     const double l = -std::fabs(u(rng)) * 0.5, h = std::fabs(u(rng)) * 0.5;
     switch (kind(rng)) {
-      case 0: o.lo.push_back(-kInf); o.hi.push_back(kInf); break;
-      case 1: o.lo.push_back(0); o.hi.push_back(kInf); break;
-      case 2: o.lo.push_back(static_cast<MeReal>(l)); o.hi.push_back(static_cast<MeReal>(h)); break;
-      case 3: o.lo.push_back(-kInf); o.hi.push_back(static_cast<MeReal>(h)); break;
-      default: o.lo.push_back(static_cast<MeReal>(l)); o.hi.push_back(kInf); break;
+      case 0:
+        o.lo.push_back(-kInf);
+        o.hi.push_back(kInf);
+        break;
+      case 1:
+        o.lo.push_back(0);
+        o.hi.push_back(kInf);
+        break;
+      case 2:
+        o.lo.push_back(static_cast<MeReal>(l));
+        o.hi.push_back(static_cast<MeReal>(h));
+        break;
+      case 3:
+        o.lo.push_back(-kInf);
+        o.hi.push_back(static_cast<MeReal>(h));
+        break;
+      default:
+        o.lo.push_back(static_cast<MeReal>(l));
+        o.hi.push_back(kInf);
+        break;
     }
   }
   return o;
@@ -94,7 +109,8 @@ TEST(KeaLcp, UnboundedSpdSystemIsTheLinearSolve) {
     const KeaResult r = KeaSolve(o.problem(), opt);
     EXPECT_EQ(r.status, KeaStatus::Solved) << KeaStatusName(r.status);
     ASSERT_EQ(r.lambda.size(), 4u);
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(r.lambda[static_cast<std::size_t>(i)], x(i), kTol * (1 + x.cwiseAbs().maxCoeff()));
+    for (int i = 0; i < 4; ++i)
+      EXPECT_NEAR(r.lambda[static_cast<std::size_t>(i)], x(i), kTol * (1 + x.cwiseAbs().maxCoeff()));
     if (method == KeaMethod::ActiveSet) {
       EXPECT_EQ(r.iterations, 1);
     }

@@ -59,7 +59,8 @@ void Assemble(Owned &o, const std::vector<std::pair<int, int>> &rowBodies, int b
   t.clear();
   for (int d = 0; d < 6 * bodies; ++d) t.emplace_back(d, d, m(rng));
   Minv.setFromTriplets(t.begin(), t.end());
-  Eigen::SparseMatrix<double, Eigen::RowMajor> A = J * Minv * Eigen::SparseMatrix<double, Eigen::RowMajor>(J.transpose());
+  Eigen::SparseMatrix<double, Eigen::RowMajor> A =
+      J * Minv * Eigen::SparseMatrix<double, Eigen::RowMajor>(J.transpose());
   for (int i = 0; i < n; ++i) A.coeffRef(i, i) += diagonal;
   A.makeCompressed();
   o.n = n;
@@ -70,8 +71,8 @@ void Assemble(Owned &o, const std::vector<std::pair<int, int>> &rowBodies, int b
   o.dense.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
   for (int i = 0; i < n; ++i)
     for (int k = o.rowStart[static_cast<std::size_t>(i)]; k < o.rowStart[static_cast<std::size_t>(i) + 1]; ++k)
-      o.dense[static_cast<std::size_t>(i) * static_cast<std::size_t>(n) + static_cast<std::size_t>(o.col[static_cast<std::size_t>(k)])] =
-          o.val[static_cast<std::size_t>(k)];
+      o.dense[static_cast<std::size_t>(i) * static_cast<std::size_t>(n) +
+              static_cast<std::size_t>(o.col[static_cast<std::size_t>(k)])] = o.val[static_cast<std::size_t>(k)];
 }
 
 // Random bounds as in kea_lcp_test.cpp: unbounded, contact, box, one-sided.
@@ -85,11 +86,26 @@ void RandomBounds(Owned &o, std::mt19937 &rng) {
     o.b.push_back(static_cast<MeReal>(u(rng)));
     const double l = -std::fabs(u(rng)) * 0.5, h = std::fabs(u(rng)) * 0.5;
     switch (kind(rng)) {
-      case 0: o.lo.push_back(-kInf); o.hi.push_back(kInf); break;
-      case 1: o.lo.push_back(0); o.hi.push_back(kInf); break;
-      case 2: o.lo.push_back(static_cast<MeReal>(l)); o.hi.push_back(static_cast<MeReal>(h)); break;
-      case 3: o.lo.push_back(-kInf); o.hi.push_back(static_cast<MeReal>(h)); break;
-      default: o.lo.push_back(static_cast<MeReal>(l)); o.hi.push_back(kInf); break;
+      case 0:
+        o.lo.push_back(-kInf);
+        o.hi.push_back(kInf);
+        break;
+      case 1:
+        o.lo.push_back(0);
+        o.hi.push_back(kInf);
+        break;
+      case 2:
+        o.lo.push_back(static_cast<MeReal>(l));
+        o.hi.push_back(static_cast<MeReal>(h));
+        break;
+      case 3:
+        o.lo.push_back(-kInf);
+        o.hi.push_back(static_cast<MeReal>(h));
+        break;
+      default:
+        o.lo.push_back(static_cast<MeReal>(l));
+        o.hi.push_back(kInf);
+        break;
     }
   }
 }
@@ -245,7 +261,8 @@ TEST(KeaSparse, AgreesWithDenseWithFriction) {
   int solved = 0, total = 0;
   for (int contacts : {2, 10, 30}) {
     for (unsigned seed = 1; seed <= 6; ++seed) {
-      const Owned o = RandomFriction(contacts, std::max(2, contacts / 2), 300u * static_cast<unsigned>(contacts) + seed);
+      const Owned o =
+          RandomFriction(contacts, std::max(2, contacts / 2), 300u * static_cast<unsigned>(contacts) + seed);
       const int n = o.n;
       KeaOptions opt;
       opt.warnings = false;
@@ -257,13 +274,15 @@ TEST(KeaSparse, AgreesWithDenseWithFriction) {
       ++solved;
       const double scale = 1 + MaxAbs(dense.lambda);
       for (int i = 0; i < n; ++i) {
-        EXPECT_NEAR(sparse.lambda[static_cast<std::size_t>(i)], dense.lambda[static_cast<std::size_t>(i)], 10 * kTol * scale)
+        EXPECT_NEAR(sparse.lambda[static_cast<std::size_t>(i)], dense.lambda[static_cast<std::size_t>(i)],
+                    10 * kTol * scale)
             << "contacts=" << contacts << " seed=" << seed << " row " << i;
         const int j = o.findex[static_cast<std::size_t>(i)];
         if (j < 0) {
           EXPECT_GE(sparse.lambda[static_cast<std::size_t>(i)], -kTol);
         } else {
-          const double limit = o.mu[static_cast<std::size_t>(i)] * std::max(0.0, double(sparse.lambda[static_cast<std::size_t>(j)]));
+          const double limit =
+              o.mu[static_cast<std::size_t>(i)] * std::max(0.0, double(sparse.lambda[static_cast<std::size_t>(j)]));
           EXPECT_LE(std::fabs(sparse.lambda[static_cast<std::size_t>(i)]), limit + kTol * (1 + limit));
         }
       }

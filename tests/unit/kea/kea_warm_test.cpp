@@ -81,8 +81,8 @@ TEST(KeaWarmStart, PerturbedProblemConvergesInFewSolves) {
     ASSERT_EQ(w.status, KeaStatus::Solved) << t.name;
     ASSERT_EQ(c.status, KeaStatus::Solved) << t.name;
     // A few solves, about half the cold ones or fewer.
-    const std::string counts = t.name + ": warm " + std::to_string(w.iterations) + " solves, cold " +
-                               std::to_string(c.iterations);
+    const std::string counts =
+        t.name + ": warm " + std::to_string(w.iterations) + " solves, cold " + std::to_string(c.iterations);
     EXPECT_LE(w.iterations, 6) << counts;
     EXPECT_LE(2 * w.iterations, c.iterations + 1) << counts;
     // Both answers solve the same LCP to its tolerance.

@@ -89,13 +89,13 @@ TEST(MeHSV, PrimaryAndSecondaryColours) {
 TEST(MeHSV, GreyWrapAndClamp) {
   expectRgb(0, 0, mr(0.4), 0.4, 0.4, 0.4);  // s = 0: grey of value v
   expectRgb(200, 0, mr(0.7), 0.7, 0.7, 0.7);
-  expectRgb(360, 1, 1, 1, 0, 0);   // 360 wraps to red
+  expectRgb(360, 1, 1, 1, 0, 0);  // 360 wraps to red
   expectRgb(720, 1, 1, 1, 0, 0);
   expectRgb(480, 1, 1, 0, 1, 0);   // 480 = 120: green
   expectRgb(-120, 1, 1, 0, 0, 1);  // -120 = 240: blue
   expectRgb(-mr(1e-9), 1, 1, 1, 0, 0);
-  expectRgb(60, 2, 3, 1, 1, 0);     // s, v clamped to 1
-  expectRgb(60, -1, -1, 0, 0, 0);   // s, v clamped to 0
+  expectRgb(60, 2, 3, 1, 1, 0);            // s, v clamped to 1
+  expectRgb(60, -1, -1, 0, 0, 0);          // s, v clamped to 0
   expectRgb(std::nan(""), 1, 1, 1, 0, 0);  // NaN hue counts as 0
 }
 

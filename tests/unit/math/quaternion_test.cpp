@@ -10,9 +10,8 @@ namespace {
 // q and -q are one rotation: compare up to sign.
 void expectSameRotation(const MeReal *a, const MeReal *b, double tol) {
   const double d = MeVector4Dot(a, b);
-  EXPECT_NEAR(std::fabs(d), 1, tol) << "q1 = (" << a[0] << ", " << a[1] << ", " << a[2] << ", " << a[3]
-                                    << "), q2 = (" << b[0] << ", " << b[1] << ", " << b[2] << ", " << b[3]
-                                    << ")";
+  EXPECT_NEAR(std::fabs(d), 1, tol) << "q1 = (" << a[0] << ", " << a[1] << ", " << a[2] << ", " << a[3] << "), q2 = ("
+                                    << b[0] << ", " << b[1] << ", " << b[2] << ", " << b[3] << ")";
 }
 
 }  // namespace

@@ -20,8 +20,7 @@ Box3 ModelBox(McdGeometryID g, TM &tm) {
   return b;
 }
 
-void ExpectBox(const Box3 &b, MeReal x0, MeReal y0, MeReal z0, MeReal x1, MeReal y1, MeReal z1,
-               double eps = tol(10)) {
+void ExpectBox(const Box3 &b, MeReal x0, MeReal y0, MeReal z0, MeReal x1, MeReal y1, MeReal z1, double eps = tol(10)) {
   EXPECT_NEAR(b.mn[0], x0, eps);
   EXPECT_NEAR(b.mn[1], y0, eps);
   EXPECT_NEAR(b.mn[2], z0, eps);
@@ -85,10 +84,9 @@ TEST(McdAabb, ConvexTriangleListAndAggregate) {
   TM tm(0, 0, 5);
   tm.rotate(kY, ME_PI / 4);
   const MeReal r2 = (MeReal)std::sqrt(2.0);
-  ExpectBox(ModelBox(McdConvexMeshCreateHull(fw, cube, 8, 0), tm), -r2, -1, 5 - r2, r2, 1, 5 + r2,
-            tol(10, 256));
-  ExpectBox(ModelBox(McdConvexMeshCreateHull(fw, cube, 8, (MeReal)0.5), tm), -r2 - 0.5f, -1.5f,
-            4.5f - r2, r2 + 0.5f, 1.5f, 5.5f + r2, tol(10, 256));
+  ExpectBox(ModelBox(McdConvexMeshCreateHull(fw, cube, 8, 0), tm), -r2, -1, 5 - r2, r2, 1, 5 + r2, tol(10, 256));
+  ExpectBox(ModelBox(McdConvexMeshCreateHull(fw, cube, 8, (MeReal)0.5), tm), -r2 - 0.5f, -1.5f, 4.5f - r2, r2 + 0.5f,
+            1.5f, 5.5f + r2, tol(10, 256));
   // A triangle list's box [0,2]x[0,4]x[-1,1], moved by (1, 1, 1).
   MeVector3 mn = {0, 0, -1}, mx = {2, 4, 1};
   auto cb = [](McdModelPair *, McdUserTriangle *, MeVector3, MeReal, int) -> int { return 0; };

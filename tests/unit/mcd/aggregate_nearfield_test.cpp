@@ -89,7 +89,8 @@ TEST(McdAggregateNearfield, NestedAndAggregateAgainstAggregate) {
   // on the stool's seat (convex mesh against box).
   McdGeometryID block = McdAggregateCreate(fw, 1);
   MeVector3 c[8];
-  for (int i = 0; i < 8; ++i) MeVector3Set(c[i], (i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f);
+  for (int i = 0; i < 8; ++i)
+    MeVector3Set(c[i], (i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f);
   McdGeometryID cube = McdConvexMeshCreateHull(fw, c, 8, 0);
   McdAggregateAddElement(block, cube, lifted);
   Placed b(block, 0, 0, (MeReal)(0.99 + 1.05 + 0.5 - 0.01));  // 0.01 into the seat top
@@ -115,15 +116,17 @@ TEST(McdAggregateNearfield, RandomPosesSaneAndMirrored) {
   Framework fw(16, 64);
   Stool stool(fw);
   MeVector3 c[8];
-  for (int i = 0; i < 8; ++i) MeVector3Set(c[i], (i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.3f : -0.3f, (i & 4) ? 0.4f : -0.4f);
-  McdGeometryID others[] = {McdSphereCreate(fw, (MeReal)0.5), McdBoxCreate(fw, 1, 1, 1),
+  for (int i = 0; i < 8; ++i)
+    MeVector3Set(c[i], (i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.3f : -0.3f, (i & 4) ? 0.4f : -0.4f);
+  McdGeometryID others[] = {McdSphereCreate(fw, (MeReal)0.5),     McdBoxCreate(fw, 1, 1, 1),
                             McdConvexMeshCreateHull(fw, c, 8, 0), McdCylinderCreate(fw, (MeReal)0.3, 1),
-                            McdSphylCreate(fw, (MeReal)0.2, 1), stool.g};
+                            McdSphylCreate(fw, (MeReal)0.2, 1),   stool.g};
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
   int touching = 0;
   for (int trial = 0; trial < 120; ++trial) {
-    Placed a(stool.g, 0, 0, 0), b(others[trial % 6], (MeReal)(1.3 * u(rng)), (MeReal)(1.3 * u(rng)), (MeReal)(1.2 * u(rng)));
+    Placed a(stool.g, 0, 0, 0),
+        b(others[trial % 6], (MeReal)(1.3 * u(rng)), (MeReal)(1.3 * u(rng)), (MeReal)(1.2 * u(rng)));
     a.rotate((MeReal)u(rng), (MeReal)u(rng), (MeReal)u(rng) + 2, (MeReal)(3 * u(rng)));
     b.rotate((MeReal)u(rng) + 2, (MeReal)u(rng), (MeReal)u(rng), (MeReal)(3 * u(rng)));
     Hit h(a.model, b.model);

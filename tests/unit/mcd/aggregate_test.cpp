@@ -28,8 +28,7 @@ TEST(McdAggregate, ChildInstancesFollowTheElements) {
 
   // The guide's rendering idiom: give children TM storage, update, read.
   static MeMatrix4 childTM[5];
-  for (int i = 0; i < 5; ++i)
-    McdGeometryInstanceSetTransformPtr(McdGeometryInstanceGetChild(parent, i), childTM[i]);
+  for (int i = 0; i < 5; ++i) McdGeometryInstanceSetTransformPtr(McdGeometryInstanceGetChild(parent, i), childTM[i]);
   TM body(10, 0, 0);
   const MeVector3 z = {0, 0, 1};
   body.rotate(z, ME_PI / 2);
@@ -40,8 +39,7 @@ TEST(McdAggregate, ChildInstancesFollowTheElements) {
   EXPECT_NEAR(childTM[0][3][2], 1, tol(1));
   EXPECT_NEAR(childTM[1][3][0], 9, tol(10));
   EXPECT_NEAR(childTM[1][3][1], 1, tol(1));
-  EXPECT_EQ(McdGeometryInstanceGetTransformPtr(McdGeometryInstanceGetChild(parent, 1)),
-            (MeMatrix4Ptr)childTM[1]);
+  EXPECT_EQ(McdGeometryInstanceGetTransformPtr(McdGeometryInstanceGetChild(parent, 1)), (MeMatrix4Ptr)childTM[1]);
   // The child's AABB is cached too; the model's is the union.
   MeVector3 mn, mx;
   McdGeometryInstanceGetAABB(McdGeometryInstanceGetChild(parent, 1), mn, mx);
@@ -72,8 +70,8 @@ TEST(McdAggregate, ChildrenWithoutPointersStillHaveTransforms) {
   TM tm(1, 0, 0);
   McdModelSetTransformPtr(m, tm);
   McdModelUpdate(m);
-  MeMatrix4Ptr child = McdGeometryInstanceGetTransformPtr(
-      McdGeometryInstanceGetChild(McdModelGetGeometryInstance(m), 0));
+  MeMatrix4Ptr child =
+      McdGeometryInstanceGetTransformPtr(McdGeometryInstanceGetChild(McdModelGetGeometryInstance(m), 0));
   ASSERT_NE(child, nullptr);
   EXPECT_EQ(child[3][0], 1);
   EXPECT_EQ(child[3][1], 2);

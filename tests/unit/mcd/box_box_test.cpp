@@ -49,8 +49,7 @@ TEST(McdBoxBox, BoxRestingOnBoxHasFourContactsAtTheCorners) {
     EXPECT_NEAR(h.c[i].normal[2], 1, kEps);
     EXPECT_NEAR(h.c[i].position[2], 0.995, kEps);
   }
-  const std::set<std::pair<long, long>> want = {{-5000, -7000}, {-5000, 13000}, {15000, -7000},
-                                                {15000, 13000}};
+  const std::set<std::pair<long, long>> want = {{-5000, -7000}, {-5000, 13000}, {15000, -7000}, {15000, 13000}};
   EXPECT_EQ(corners(h), want);
   EXPECT_NEAR(h.r.normal[2], 1, kEps);
   expectMirrored(top.model, base.model);
@@ -71,8 +70,7 @@ TEST(McdBoxBox, OverhangingBoxContactsAtTheCornersOfTheOverlap) {
   Placed top(McdBoxCreate(fw, 2, 2, 2), (MeReal)1.5, 0, (MeReal)1.98);  // x in [0.5, 2.5]
   Hit h(top.model, base.model);
   ASSERT_EQ(h.count(), 4);
-  const std::set<std::pair<long, long>> want = {{5000, -10000}, {5000, 10000}, {20000, -10000},
-                                                {20000, 10000}};
+  const std::set<std::pair<long, long>> want = {{5000, -10000}, {5000, 10000}, {20000, -10000}, {20000, 10000}};
   EXPECT_EQ(corners(h), want);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(h.c[i].separation, -0.02, kEps);
   // Same-size boxes exactly stacked: the four shared corners.
@@ -93,8 +91,7 @@ TEST(McdBoxBox, TurnedBoxGivesFourOfTheOctagonAndReducesToTheBuffer) {
   // by |x|, |y| <= 2 into an octagon with vertices (+-2, +-0.546) and
   // (+-0.546, +-2). Four alternate vertices are kept (contact_reduce.h):
   // the square of circumradius |(2, 0.546)| = 2.073, area 2 * 2.073^2 = 8.6.
-  Placed top(McdBoxCreate(fw, (MeReal)3.6, (MeReal)3.6, 2), 0, 0, (MeReal)1.99, {0, 0, 1},
-             (MeReal)(ME_PI / 4));
+  Placed top(McdBoxCreate(fw, (MeReal)3.6, (MeReal)3.6, 2), 0, 0, (MeReal)1.99, {0, 0, 1}, (MeReal)(ME_PI / 4));
   Hit h(top.model, base.model);
   ASSERT_EQ(h.count(), 4);
   double angle[4];
@@ -110,15 +107,13 @@ TEST(McdBoxBox, TurnedBoxGivesFourOfTheOctagonAndReducesToTheBuffer) {
   // A shorter buffer keeps the deepest, then the farthest: two opposite ones.
   Hit two(top.model, base.model, 2);
   ASSERT_EQ(two.count(), 2);
-  EXPECT_NEAR(std::hypot(two.c[0].position[0] - two.c[1].position[0],
-                         two.c[0].position[1] - two.c[1].position[1]),
+  EXPECT_NEAR(std::hypot(two.c[0].position[0] - two.c[1].position[0], two.c[0].position[1] - two.c[1].position[1]),
               2 * 2.0732, 2e-3);
   // Small turned box fully on the face: its 4 corners.
   Placed small(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)1.99, {0, 0, 1}, (MeReal)(ME_PI / 4));
   Hit s(small.model, base.model);
   ASSERT_EQ(s.count(), 4);
-  for (int i = 0; i < 4; ++i)
-    EXPECT_NEAR(std::hypot(s.c[i].position[0], s.c[i].position[1]), std::sqrt(2.0), 1e-5);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(std::hypot(s.c[i].position[0], s.c[i].position[1]), std::sqrt(2.0), 1e-5);
 }
 
 TEST(McdBoxBox, DeepOverlapAndTiltedOntoAnEdge) {
@@ -149,8 +144,7 @@ TEST(McdBoxBox, CornerOnAFaceGivesOneContact) {
   // A unit-half cube turned about (1, -1, 0) by acos(1/sqrt 3): a body
   // diagonal vertical, so a corner sqrt 3 below the centre, 0.01 deep.
   const double r3 = std::sqrt(3.0);
-  Placed cube(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)(1 + r3 - 0.01), {1, -1, 0},
-              (MeReal)std::acos(1 / r3));
+  Placed cube(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)(1 + r3 - 0.01), {1, -1, 0}, (MeReal)std::acos(1 / r3));
   Hit h(cube.model, base.model);
   ASSERT_EQ(h.count(), 1);
   EXPECT_NEAR(h.c[0].separation, -0.01, 1e-5);
@@ -170,8 +164,7 @@ TEST(McdBoxBox, EdgeAgainstEdgeGivesOneContact) {
   // Lower box turned 45 degrees about y: top edge along y at z = sqrt 2.
   // Upper box turned 45 degrees about x: bottom edge along x at z - sqrt 2.
   Placed low(McdBoxCreate(fw, 2, 2, 2), 0, 0, 0, {0, 1, 0}, (MeReal)(ME_PI / 4));
-  Placed up(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)(2 * r2 - 0.01), {1, 0, 0},
-            (MeReal)(ME_PI / 4));
+  Placed up(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)(2 * r2 - 0.01), {1, 0, 0}, (MeReal)(ME_PI / 4));
   Hit h(up.model, low.model);
   ASSERT_EQ(h.count(), 1);
   EXPECT_NEAR(h.c[0].separation, -0.01, 1e-5);
@@ -232,9 +225,9 @@ TEST(McdBoxBox, StackedCubesAtEveryYawGiveFaceContacts) {
         // On both squares' common area.
         const double x = c.position[0], y = c.position[1], t = deg * ME_PI / 180;
         EXPECT_LE(std::fmax(std::fabs(x), std::fabs(y)), 0.5 + 1e-5);
-        EXPECT_LE(std::fmax(std::fabs(x * std::cos(t) + y * std::sin(t)),
-                            std::fabs(-x * std::sin(t) + y * std::cos(t))),
-                  0.5 + 1e-5);
+        EXPECT_LE(
+            std::fmax(std::fabs(x * std::cos(t) + y * std::sin(t)), std::fabs(-x * std::sin(t) + y * std::cos(t))),
+            0.5 + 1e-5);
         // One side is the reference face (dims 2), never edge on edge (1, 1).
         EXPECT_TRUE((c.dims & 0xFF) == 2 || ((c.dims >> 8) & 0xFF) == 2) << deg << " degrees";
       }
@@ -243,9 +236,8 @@ TEST(McdBoxBox, StackedCubesAtEveryYawGiveFaceContacts) {
       double area = 0;
       std::vector<std::pair<double, double>> p;
       for (int i = 0; i < h.count(); ++i) p.push_back({h.c[i].position[0], h.c[i].position[1]});
-      std::sort(p.begin(), p.end(), [](auto a, auto b) {
-        return std::atan2(a.second, a.first) < std::atan2(b.second, b.first);
-      });
+      std::sort(p.begin(), p.end(),
+                [](auto a, auto b) { return std::atan2(a.second, a.first) < std::atan2(b.second, b.first); });
       for (std::size_t i = 0; i < p.size(); ++i) {
         const auto &a = p[i], &b = p[(i + 1) % p.size()];
         area += 0.5 * (a.first * b.second - a.second * b.first);
@@ -280,8 +272,8 @@ TEST(McdBoxBox, SlightlyTiltedStacksKeepFaceContacts) {
     for (int i = 0; i < h.count(); ++i) {
       const McdContact &c = h.c[i];
       const bool lowFace = std::fabs(c.normal[2] - 1) < 1e-6;
-      const bool upFace = std::fabs(c.normal[0] + r[2][0]) < 1e-6 &&
-                          std::fabs(c.normal[1] + r[2][1]) < 1e-6;  // up's -z axis, negated
+      const bool upFace =
+          std::fabs(c.normal[0] + r[2][0]) < 1e-6 && std::fabs(c.normal[1] + r[2][1]) < 1e-6;  // up's -z axis, negated
       EXPECT_TRUE(lowFace || upFace) << deg << " degrees";
       EXPECT_NEAR(c.normal[2], 1, 1e-3) << deg << " degrees";
       EXPECT_LE(c.separation, 0) << deg << " degrees";

@@ -6,7 +6,7 @@
 int mcd_c_api_order(void);
 
 int mcd_c_api_order(void) {
-    MdtBodyID body = 0;
-    McdModelID model = 0;
-    return McdModelGetBody(model) == body;
+  MdtBodyID body = 0;
+  McdModelID model = 0;
+  return McdModelGetBody(model) == body;
 }

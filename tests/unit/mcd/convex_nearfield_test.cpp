@@ -213,9 +213,12 @@ TEST(McdConvexNearfield, RandomPosesSaneAndMirrored) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   for (auto &p : pts) MeVector3Set(p, (MeReal)u(rng), (MeReal)u(rng), (MeReal)u(rng));
-  McdGeometryID geoms[] = {Cube(fw, (MeReal)0.6), McdConvexMeshCreateHull(fw, pts, 12, 0),
-                           McdBoxCreate(fw, 1, (MeReal)1.5, (MeReal)0.7), McdCylinderCreate(fw, (MeReal)0.5, (MeReal)1.2),
-                           McdSphylCreate(fw, (MeReal)0.3, 1), McdSphereCreate(fw, (MeReal)0.6)};
+  McdGeometryID geoms[] = {Cube(fw, (MeReal)0.6),
+                           McdConvexMeshCreateHull(fw, pts, 12, 0),
+                           McdBoxCreate(fw, 1, (MeReal)1.5, (MeReal)0.7),
+                           McdCylinderCreate(fw, (MeReal)0.5, (MeReal)1.2),
+                           McdSphylCreate(fw, (MeReal)0.3, 1),
+                           McdSphereCreate(fw, (MeReal)0.6)};
   ASSERT_NE(geoms[1], nullptr);
   int touching = 0;
   for (int trial = 0; trial < 300; ++trial) {

@@ -20,8 +20,7 @@ const double kOverlap = 1e-3;
 McdGeometryID cubeHull(McdFrameworkID fw, double h) {
   MeVector3 c[8];
   for (int i = 0; i < 8; ++i)
-    MeVector3Set(c[i], (MeReal)((i & 1) ? h : -h), (MeReal)((i & 2) ? h : -h),
-                 (MeReal)((i & 4) ? h : -h));
+    MeVector3Set(c[i], (MeReal)((i & 1) ? h : -h), (MeReal)((i & 2) ? h : -h), (MeReal)((i & 4) ? h : -h));
   return McdConvexMeshCreateHull(fw, c, 8, 0);
 }
 
@@ -61,8 +60,7 @@ MeVector3 gUp = {0, 0, 1};
 
 int MEAPI Floor(McdModelPair *, McdUserTriangle *t, MeVector3, MeReal, int max) {
   const int idx[2][3] = {{0, 1, 2}, {0, 2, 3}};
-  const int flags[2] = {kMcdTriangleStandard & ~kMcdTriangleUseEdge2,
-                        kMcdTriangleStandard & ~kMcdTriangleUseEdge0};
+  const int flags[2] = {kMcdTriangleStandard & ~kMcdTriangleUseEdge2, kMcdTriangleStandard & ~kMcdTriangleUseEdge0};
   for (int i = 0; i < 2 && i < max; ++i) {
     for (int k = 0; k < 3; ++k) t[i].vertices[k] = &gCorner[idx[i][k]];
     t[i].normal = &gUp;
@@ -88,8 +86,7 @@ TEST(McdFaceManifold, OctagonalPrismOnPlaneAndBoxKeepsFour) {
   MeVector3 c[16];
   for (int i = 0; i < 16; ++i) {
     const double a = ME_PI / 4 * (i % 8);
-    MeVector3Set(c[i], (MeReal)(0.5 * std::cos(a)), (MeReal)(0.5 * std::sin(a)),
-                 (MeReal)(i < 8 ? -0.25 : 0.25));
+    MeVector3Set(c[i], (MeReal)(0.5 * std::cos(a)), (MeReal)(0.5 * std::sin(a)), (MeReal)(i < 8 ? -0.25 : 0.25));
   }
   McdGeometryID prism = McdConvexMeshCreateHull(fw, c, 16, 0);
   Placed plane(McdPlaneCreate(fw), 0, 0, 0);
@@ -105,8 +102,7 @@ TEST(McdFaceManifold, OctagonalPrismOnPlaneAndBoxKeepsFour) {
   for (int i = 0; i < 4; ++i) angle[i] = std::atan2(h.contacts[i].position[1], h.contacts[i].position[0]);
   std::sort(angle, angle + 4);
   double area = 0;
-  for (int i = 0; i < 4; ++i)
-    area += 0.5 * 0.25 * std::sin(angle[(i + 1) % 4] - angle[i] + (i == 3 ? 2 * ME_PI : 0));
+  for (int i = 0; i < 4; ++i) area += 0.5 * 0.25 * std::sin(angle[(i + 1) % 4] - angle[i] + (i == 3 ? 2 * ME_PI : 0));
   EXPECT_GT(area, 0.35);
 }
 

@@ -20,8 +20,7 @@ struct Body {
   McdModelID model;
   std::unique_ptr<TM> tm{new TM};
   double x, y, z, yaw, tx, ty;
-  Body(McdGeometryID g, double x0, double y0, double z0, double yaw0 = 0, double tx0 = 0,
-       double ty0 = 0)
+  Body(McdGeometryID g, double x0, double y0, double z0, double yaw0 = 0, double tx0 = 0, double ty0 = 0)
       : model(McdModelCreate(g)), x(x0), y(y0), z(z0), yaw(yaw0), tx(tx0), ty(ty0) {
     McdModelSetTransformPtr(model, *tm);
     place(0, 0, 0, 0, 0, 0);
@@ -69,9 +68,7 @@ std::map<MeU32, std::array<double, 3>> idsOf(const Result &r, const std::string 
   std::map<MeU32, std::array<double, 3>> ids;
   for (const McdContact &c : r.c) {
     EXPECT_NE(c.feature, 0u) << what;
-    EXPECT_TRUE(ids.emplace(c.feature, std::array<double, 3>{c.position[0], c.position[1],
-                                                             c.position[2]})
-                    .second)
+    EXPECT_TRUE(ids.emplace(c.feature, std::array<double, 3>{c.position[0], c.position[1], c.position[2]}).second)
         << what << ": id " << c.feature << " repeated";
   }
   return ids;
@@ -80,17 +77,24 @@ std::map<MeU32, std::array<double, 3>> idsOf(const Result &r, const std::string 
 // The perturbations: shifts of 0.2 mm along each axis (up and down), turns
 // of 0.01 degree about each axis, and a few combinations.
 const double kShift = 2e-4, kTurn = 1.745e-4;
-const double kMoves[][6] = {{kShift, 0, 0, 0, 0, 0},  {-kShift, 0, 0, 0, 0, 0}, {0, kShift, 0, 0, 0, 0},
-                            {0, -kShift, 0, 0, 0, 0}, {0, 0, kShift, 0, 0, 0},  {0, 0, -kShift, 0, 0, 0},
-                            {0, 0, 0, kTurn, 0, 0},   {0, 0, 0, -kTurn, 0, 0},  {0, 0, 0, 0, kTurn, 0},
-                            {0, 0, 0, 0, -kTurn, 0},  {0, 0, 0, 0, 0, kTurn},   {0, 0, 0, 0, 0, -kTurn},
+const double kMoves[][6] = {{kShift, 0, 0, 0, 0, 0},
+                            {-kShift, 0, 0, 0, 0, 0},
+                            {0, kShift, 0, 0, 0, 0},
+                            {0, -kShift, 0, 0, 0, 0},
+                            {0, 0, kShift, 0, 0, 0},
+                            {0, 0, -kShift, 0, 0, 0},
+                            {0, 0, 0, kTurn, 0, 0},
+                            {0, 0, 0, -kTurn, 0, 0},
+                            {0, 0, 0, 0, kTurn, 0},
+                            {0, 0, 0, 0, -kTurn, 0},
+                            {0, 0, 0, 0, 0, kTurn},
+                            {0, 0, 0, 0, 0, -kTurn},
                             {kShift, -kShift, kShift, kTurn, -kTurn, kTurn},
                             {-kShift, kShift, -kShift, -kTurn, kTurn, -kTurn}};
 
 // `moving` touches `fixed` at its base pose; every perturbation keeps the
 // set of ids, and each contact moves by at most `travel`.
-void expectStable(Body &moving, McdModelID fixed, int wantCount, const std::string &what,
-                  double travel = 2e-3) {
+void expectStable(Body &moving, McdModelID fixed, int wantCount, const std::string &what, double travel = 2e-3) {
   moving.place(0, 0, 0, 0, 0, 0);
   const Result base = intersect(moving.model, fixed);
   ASSERT_EQ(base.touch, 1) << what;
@@ -120,8 +124,7 @@ void expectStable(Body &moving, McdModelID fixed, int wantCount, const std::stri
 McdGeometryID cubeHull(McdFrameworkID fw, double h) {
   MeVector3 c[8];
   for (int i = 0; i < 8; ++i)
-    MeVector3Set(c[i], (MeReal)((i & 1) ? h : -h), (MeReal)((i & 2) ? h : -h),
-                 (MeReal)((i & 4) ? h : -h));
+    MeVector3Set(c[i], (MeReal)((i & 1) ? h : -h), (MeReal)((i & 2) ? h : -h), (MeReal)((i & 4) ? h : -h));
   return McdConvexMeshCreateHull(fw, c, 8, 0);
 }
 
@@ -221,8 +224,7 @@ MeVector3 gUp = {0, 0, 1};
 
 int MEAPI Floor(McdModelPair *, McdUserTriangle *t, MeVector3, MeReal, int max) {
   const int idx[2][3] = {{0, 1, 2}, {0, 2, 3}};
-  const int flags[2] = {kMcdTriangleStandard & ~kMcdTriangleUseEdge2,
-                        kMcdTriangleStandard & ~kMcdTriangleUseEdge0};
+  const int flags[2] = {kMcdTriangleStandard & ~kMcdTriangleUseEdge2, kMcdTriangleStandard & ~kMcdTriangleUseEdge0};
   for (int i = 0; i < 2 && i < max; ++i) {
     for (int k = 0; k < 3; ++k) t[i].vertices[k] = &gCorner[idx[i][k]];
     t[i].normal = &gUp;

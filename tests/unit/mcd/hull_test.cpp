@@ -13,20 +13,20 @@ namespace {
 std::vector<std::array<MeReal, 3>> CubeCloud() {
   std::vector<std::array<MeReal, 3>> p;
   for (int k = 0; k < 8; ++k) p.push_back({(MeReal)(k & 1), (MeReal)((k >> 1) & 1), (MeReal)((k >> 2) & 1)});
-  p.push_back({0.5f, 0.5f, 0.5f});   // centre
-  p.push_back({0.2f, 0.7f, 0.4f});   // interior
-  p.push_back({0.5f, 0.5f, 1});      // face centre
-  p.push_back({0.5f, 0, 0});         // edge midpoint
-  p.push_back({1, 1, 1});            // repeated corner
-  p.push_back({0.25f, 0.75f, 0});    // on the bottom face
+  p.push_back({0.5f, 0.5f, 0.5f});  // centre
+  p.push_back({0.2f, 0.7f, 0.4f});  // interior
+  p.push_back({0.5f, 0.5f, 1});     // face centre
+  p.push_back({0.5f, 0, 0});        // edge midpoint
+  p.push_back({1, 1, 1});           // repeated corner
+  p.push_back({0.25f, 0.75f, 0});   // on the bottom face
   return p;
 }
 
 TEST(McdHull, CubeWithExtraPointsHasEightVerticesAndSixFaces) {
   Framework fw;
   auto cloud = CubeCloud();
-  McdGeometryID g = McdConvexMeshCreateHull(
-      fw, reinterpret_cast<const MeVector3 *>(cloud.data()), (int)cloud.size(), 0);
+  McdGeometryID g =
+      McdConvexMeshCreateHull(fw, reinterpret_cast<const MeVector3 *>(cloud.data()), (int)cloud.size(), 0);
   ASSERT_NE(g, nullptr);
   EXPECT_EQ(McdGeometryGetTypeId(g), kMcdGeometryTypeConvexMesh);
   EXPECT_EQ(McdConvexMeshGetVertexCount(g), 8);

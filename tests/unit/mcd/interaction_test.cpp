@@ -93,8 +93,8 @@ TEST(McdInteraction, SphereSphereBothOrders) {
   ASSERT_EQ(ab.r.contactCount, 1);
   ASSERT_EQ(ba.r.contactCount, 1);
   EXPECT_NEAR(ab.contacts[0].separation, -0.5, tol(2));
-  EXPECT_EQ(ab.contacts[0].normal[0], -1);  // from b towards a
-  EXPECT_EQ(ba.contacts[0].normal[0], 1);   // from a towards b
+  EXPECT_EQ(ab.contacts[0].normal[0], -1);                // from b towards a
+  EXPECT_EQ(ba.contacts[0].normal[0], 1);                 // from a towards b
   EXPECT_NEAR(ab.contacts[0].position[0], 1.75, tol(2));  // midway between x = 1.5 and 2
   EXPECT_EQ(ab.contacts[0].dims, (MeI16)(2 | (2 << 8)));
   Body far(small, 10, 0, 0);
@@ -203,7 +203,7 @@ TEST(McdInteraction, UserInteractionIsMirroredAutomatically) {
   {
     Query t(box.model, can.model);  // the other order
     EXPECT_EQ(gHello, 1);
-    EXPECT_EQ(gFirstSeen, can.model);  // hello saw the interaction's order
+    EXPECT_EQ(gFirstSeen, can.model);      // hello saw the interaction's order
     EXPECT_EQ(t.pair->model1, box.model);  // but the pair is the caller's again
     ASSERT_EQ(t.r.contactCount, 1);
     EXPECT_EQ(t.contacts[0].normal[0], -1);
@@ -243,7 +243,6 @@ TEST(McdInteraction, GuideDirectTestWithCallocPair) {
   McdGoodbye(pair);
   free(pair);
 }
-
 
 TEST(McdInteraction, RandomPosesGiveUnitNormalsAndMirroredResults) {
   Framework fw;

@@ -90,8 +90,7 @@ TEST(McdMass, HullOfACubeIsTheBox) {
   // A 2 x 2 x 2 cube whose centre is at (1, 2, 3).
   std::vector<MeReal> pts;
   MeVector3 corners[8];
-  for (int k = 0; k < 8; ++k)
-    MeVector3Set(corners[k], (k & 1) ? 2 : 0, (k & 2) ? 3 : 1, (k & 4) ? 4 : 2);
+  for (int k = 0; k < 8; ++k) MeVector3Set(corners[k], (k & 1) ? 2 : 0, (k & 2) ? 3 : 1, (k & 4) ? 4 : 2);
   Mass p(McdConvexMeshCreateHull(fw, corners, 8, 0), 2);
   ASSERT_TRUE(p.ok);
   EXPECT_NEAR(p.m, 16, tol(16));
@@ -141,8 +140,7 @@ TEST(McdMass, AggregateUsesRotationAndParallelAxes) {
   // Box inertia (1/3, 5/6, 5/6) in its frame; turned about z, x and y swap.
   const double isph = 0.4 * ms * 0.25;
   const double shift = mb * (1 - zc) * (1 - zc) + ms * (1 + zc) * (1 + zc);
-  expectDiagonal(p.I, 5.0 / 6 + isph + shift, 1.0 / 3 + isph + shift, 5.0 / 6 + isph,
-                 tol(4, 256));
+  expectDiagonal(p.I, 5.0 / 6 + isph + shift, 1.0 / 3 + isph + shift, 5.0 / 6 + isph, tol(4, 256));
 }
 
 TEST(McdMass, StoolAggregateMatchesHandSum) {

@@ -34,9 +34,7 @@ struct Framework {
 };
 
 // Relative tolerance: `ulps` MeReal epsilons times max(1, scale).
-inline double tol(double scale, double ulps = 64) {
-  return ulps * (double)ME_REAL_EPSILON * (scale < 1 ? 1 : scale);
-}
+inline double tol(double scale, double ulps = 64) { return ulps * (double)ME_REAL_EPSILON * (scale < 1 ? 1 : scale); }
 
 // A heap TM (the API keeps pointers) at position p, rotated by R (or identity).
 struct TM {

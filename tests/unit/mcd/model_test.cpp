@@ -44,7 +44,7 @@ TEST(McdModel, TransformPointerIsKeptNotCopied) {
   EXPECT_EQ(mx[0], 1);
   MeMatrix4TMSetPosition(tm.m, 5, 0, 0);  // moving the matrix moves the model...
   McdModelGetAABB(m, mn, mx);
-  EXPECT_EQ(mx[0], 1);                     // ...once it is updated
+  EXPECT_EQ(mx[0], 1);  // ...once it is updated
   McdModelUpdate(m);
   McdModelGetAABB(m, mn, mx);
   EXPECT_EQ(mn[0], 4);

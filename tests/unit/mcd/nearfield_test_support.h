@@ -22,8 +22,7 @@ struct Placed {
     McdModelSetTransformPtr(model, tm);
     McdModelUpdate(model);
   }
-  Placed(McdGeometryID g, MeReal x, MeReal y, MeReal z, std::array<MeReal, 3> axis, MeReal angle)
-      : Placed(g, x, y, z) {
+  Placed(McdGeometryID g, MeReal x, MeReal y, MeReal z, std::array<MeReal, 3> axis, MeReal angle) : Placed(g, x, y, z) {
     const MeVector3 a = {axis[0], axis[1], axis[2]};
     tm.rotate(a, angle);
     McdModelUpdate(model);
@@ -92,8 +91,7 @@ inline double support(McdModelID m, const D3 &d) {
       return s;
     }
     case kMcdGeometryTypeCylinder:
-      return dot(c, d) + McdCylinderGetHeight(g) / 2 * along +
-             McdCylinderGetRadius(g) * std::sqrt(dot(perp, perp));
+      return dot(c, d) + McdCylinderGetHeight(g) / 2 * along + McdCylinderGetRadius(g) * std::sqrt(dot(perp, perp));
     case kMcdGeometryTypeSphyl:
       return dot(c, d) + McdSphylGetHeight(g) / 2 * along + McdSphylGetRadius(g);
     default:
@@ -147,7 +145,10 @@ inline double bruteSeparation(McdModelID m1, McdModelID m2, D3 hint = {0, 0, 0})
   auto tryDir = [&](const D3 &n) {
     if (dot(n, n) < 1e-20) return;
     const double s = sepAlong(m1, m2, n);
-    if (s > bestS) { bestS = s; best = unit(n); }
+    if (s > bestS) {
+      bestS = s;
+      best = unit(n);
+    }
   };
   tryDir(hint);
   std::vector<D3> k;
@@ -172,13 +173,18 @@ inline double bruteSeparation(McdModelID m1, McdModelID m2, D3 hint = {0, 0, 0})
     double bt = 0, bs = -1e30;
     for (int i = 0; i < M; ++i) {
       const double s = sepAlong(m1, m2, at(2 * M_PI * i / M));
-      if (s > bs) { bs = s; bt = 2 * M_PI * i / M; }
+      if (s > bs) {
+        bs = s;
+        bt = 2 * M_PI * i / M;
+      }
     }
     double lo = bt - 2 * M_PI / M, hi = bt + 2 * M_PI / M;
     for (int it = 0; it < 80; ++it) {
       const double m1t = lo + (hi - lo) * 0.381966, m2t = hi - (hi - lo) * 0.381966;
-      if (sepAlong(m1, m2, at(m1t)) < sepAlong(m1, m2, at(m2t))) lo = m1t;
-      else hi = m2t;
+      if (sepAlong(m1, m2, at(m1t)) < sepAlong(m1, m2, at(m2t)))
+        lo = m1t;
+      else
+        hi = m2t;
     }
     tryDir(at((lo + hi) / 2));
   }

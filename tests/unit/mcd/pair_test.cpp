@@ -85,8 +85,8 @@ TEST(McdTriangleList, QueryClampsAnOverlongCallback) {
   EXPECT_EQ(w.count(), 1u);
   EXPECT_TRUE(w.lastMentions("returned 8 triangles"));
   EXPECT_TRUE(w.lastMentions("triangleMaxCount is 5"));
-  EXPECT_EQ(kMcdTriangleStandard, kMcdTriangleUseSmallestPenetration | kMcdTriangleTwoSided |
-                                      kMcdTriangleUseEdge0 | kMcdTriangleUseEdge1 | kMcdTriangleUseEdge2);
+  EXPECT_EQ(kMcdTriangleStandard, kMcdTriangleUseSmallestPenetration | kMcdTriangleTwoSided | kMcdTriangleUseEdge0 |
+                                      kMcdTriangleUseEdge1 | kMcdTriangleUseEdge2);
 }
 
 }  // namespace

@@ -16,10 +16,14 @@ enum Shape { kSphere, kBox, kCylinder, kSphyl };
 
 McdGeometryID make(McdFrameworkID fw, Shape s, Lcg &u) {
   switch (s) {
-    case kSphere: return McdSphereCreate(fw, u(0.3, 1));
-    case kBox: return McdBoxCreate(fw, u(0.4, 2), u(0.4, 2), u(0.4, 2));
-    case kCylinder: return McdCylinderCreate(fw, u(0.3, 1), u(0.5, 2));
-    default: return McdSphylCreate(fw, u(0.2, 0.7), u(0, 2));
+    case kSphere:
+      return McdSphereCreate(fw, u(0.3, 1));
+    case kBox:
+      return McdBoxCreate(fw, u(0.4, 2), u(0.4, 2), u(0.4, 2));
+    case kCylinder:
+      return McdCylinderCreate(fw, u(0.3, 1), u(0.5, 2));
+    default:
+      return McdSphylCreate(fw, u(0.2, 0.7), u(0, 2));
   }
 }
 
@@ -51,10 +55,8 @@ TEST_P(PrimRandom, RandomPosesAgreeWithBruteForce) {
   int touching = 0, apart = 0;
   for (int trial = 0; trial < 300; ++trial) {
     McdGeometryID ga = make(fw, pc.a, u), gb = make(fw, pc.b, u);
-    Placed A(ga, u(-1, 1), u(-1, 1), u(-1, 1), {u(-1, 1), u(-1, 1), u(0.1, 1)},
-             u(0, 6.28));
-    Placed B(gb, u(-1, 1), u(-1, 1), u(-1, 1), {u(-1, 1), u(0.1, 1), u(-1, 1)},
-             u(0, 6.28));
+    Placed A(ga, u(-1, 1), u(-1, 1), u(-1, 1), {u(-1, 1), u(-1, 1), u(0.1, 1)}, u(0, 6.28));
+    Placed B(gb, u(-1, 1), u(-1, 1), u(-1, 1), {u(-1, 1), u(0.1, 1), u(-1, 1)}, u(0, 6.28));
     Hit f(A.model, B.model), r(B.model, A.model);
     ASSERT_EQ(f.touch, r.touch) << "trial " << trial;
     ASSERT_EQ(f.count(), r.count()) << "trial " << trial;
@@ -114,8 +116,8 @@ TEST_P(PrimRandom, RandomPosesAgreeWithBruteForce) {
 }
 
 const PairCase kCases[] = {{kSphere, kBox, true, 0, false},   {kSphere, kCylinder, true, 0, false},
-                           {kSphere, kSphyl, true, 0, false},  {kSphyl, kSphyl, true, 0, false},
-                           {kSphyl, kBox, false, 0, false},    {kBox, kBox, false, 0, true}};
+                           {kSphere, kSphyl, true, 0, false}, {kSphyl, kSphyl, true, 0, false},
+                           {kSphyl, kBox, false, 0, false},   {kBox, kBox, false, 0, true}};
 
 std::string CaseName(const ::testing::TestParamInfo<PairCase> &i) {
   static const char *const names[] = {"Sphere", "Box", "Cylinder", "Sphyl"};
@@ -157,8 +159,8 @@ TEST(McdNearfieldRandom, CylinderAndSphylOnATiltedPlane) {
 // Degenerate poses: coincident centres, parallel and identical axes.
 TEST(McdNearfieldRandom, DegeneratePosesGiveNoNaN) {
   Framework fw(8, 8);
-  McdGeometryID shapes[4] = {McdSphereCreate(fw, 1), McdBoxCreate(fw, 1, 1, 1),
-                             McdCylinderCreate(fw, 1, 1), McdSphylCreate(fw, (MeReal)0.5, 1)};
+  McdGeometryID shapes[4] = {McdSphereCreate(fw, 1), McdBoxCreate(fw, 1, 1, 1), McdCylinderCreate(fw, 1, 1),
+                             McdSphylCreate(fw, (MeReal)0.5, 1)};
   McdGeometryID pointSphyl = McdSphylCreate(fw, (MeReal)0.5, 0);
   Placed ground(McdPlaneCreate(fw), 0, 0, 0);
   for (McdGeometryID a : shapes)

@@ -10,8 +10,7 @@ namespace {
 
 const double kEps = 2e-6;
 
-void expectContact(const Hit &h, double x, double y, double z, double nx, double ny, double nz,
-                   double sep, int dims) {
+void expectContact(const Hit &h, double x, double y, double z, double nx, double ny, double nz, double sep, int dims) {
   ASSERT_EQ(h.touch, 1);
   ASSERT_EQ(h.count(), 1);
   const McdContact &c = h.c[0];
@@ -119,9 +118,8 @@ TEST(McdSphereCylinder, SideCapRimDeepAndSeparated) {
   {  // rim (edge): d = (0.3, 0, 0.4) from (1, 0, 1)... in the direction (0.6, 0.8) of x-y
     Placed s(r6, (MeReal)(1.3 * 0.6), (MeReal)(1.3 * 0.8), (MeReal)-1.4);
     const double n[3] = {0.6 * 0.6, 0.6 * 0.8, -0.8};
-    expectContact(Hit(s.model, cyl.model), (0.78 - 0.6 * n[0] + 0.6) / 2,
-                  (1.04 - 0.6 * n[1] + 0.8) / 2, (-1.4 - 0.6 * n[2] - 1) / 2, n[0], n[1], n[2],
-                  -0.1, 2 | (1 << 8));
+    expectContact(Hit(s.model, cyl.model), (0.78 - 0.6 * n[0] + 0.6) / 2, (1.04 - 0.6 * n[1] + 0.8) / 2,
+                  (-1.4 - 0.6 * n[2] - 1) / 2, n[0], n[1], n[2], -0.1, 2 | (1 << 8));
     expectMirror(s.model, cyl.model);
   }
   {  // centre inside, nearer the side (gap 0.2) than the caps (gap 1)
@@ -139,7 +137,7 @@ TEST(McdSphereCylinder, SideCapRimDeepAndSeparated) {
     EXPECT_NEAR(MeVector3Magnitude(h.c[0].normal), 1, kEps);
     EXPECT_NEAR(h.c[0].separation, -1.5, kEps);
   }
-  {  // separated beyond the rim though inside both slabs' extensions' AABB
+  {                                             // separated beyond the rim though inside both slabs' extensions' AABB
     Placed s(r5, (MeReal)1.4, 0, (MeReal)1.4);  // |d| = 0.566
     EXPECT_EQ(Hit(s.model, cyl.model).touch, 0);
     s.move(0, 0, (MeReal)1.51);

@@ -81,7 +81,8 @@ TEST_F(FloorFixture, BoxFourContactsAcrossTheDiagonal) {
   expectMirrored(box.model, floor->model, kEps);
   // A hull cube, a standing cylinder and a lying sphyl on the same floor.
   MeVector3 c[8];
-  for (int i = 0; i < 8; ++i) MeVector3Set(c[i], (i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f);
+  for (int i = 0; i < 8; ++i)
+    MeVector3Set(c[i], (i & 1) ? 0.5f : -0.5f, (i & 2) ? 0.5f : -0.5f, (i & 4) ? 0.5f : -0.5f);
   Placed hull(McdConvexMeshCreateHull(fw, c, 8, 0), 0, 0, (MeReal)0.45);
   EXPECT_EQ(Hit(hull.model, floor->model).count(), 4);
   Placed can(McdCylinderCreate(fw, (MeReal)0.5, 1), 0, 0, (MeReal)0.45);
@@ -96,7 +97,7 @@ TEST_F(FloorFixture, BoxFourContactsAcrossTheDiagonal) {
 }
 
 TEST_F(FloorFixture, EdgeFlagsChangeTheNormalAtAnEdge) {
-  gTriangles = gClaim = 1;  // T0 alone; its edge 0 runs along y = -5
+  gTriangles = gClaim = 1;                                            // T0 alone; its edge 0 runs along y = -5
   Placed ball(McdSphereCreate(fw, 1), 0, (MeReal)-5.6, (MeReal)0.6);  // over the edge, outside
   gFlags[0] = kMcdTriangleStandard;
   Hit sharp(ball.model, floor->model);
@@ -191,7 +192,8 @@ TEST_F(FloorFixture, TurnedListAndRandomPoses) {
   EXPECT_NEAR(h.contacts[0].separation, -0.2, kEps);
   // Random poses of every shape near the turned floor: sane and mirrored.
   MeVector3 c[8];
-  for (int i = 0; i < 8; ++i) MeVector3Set(c[i], (i & 1) ? 0.4f : -0.4f, (i & 2) ? 0.6f : -0.6f, (i & 4) ? 0.3f : -0.3f);
+  for (int i = 0; i < 8; ++i)
+    MeVector3Set(c[i], (i & 1) ? 0.4f : -0.4f, (i & 2) ? 0.6f : -0.6f, (i & 4) ? 0.3f : -0.3f);
   McdGeometryID geoms[] = {McdSphereCreate(fw, (MeReal)0.5), McdBoxCreate(fw, 1, (MeReal)0.6, (MeReal)1.4),
                            McdCylinderCreate(fw, (MeReal)0.4, 1), McdSphylCreate(fw, (MeReal)0.3, 1),
                            McdConvexMeshCreateHull(fw, c, 8, 0)};

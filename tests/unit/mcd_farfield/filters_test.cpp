@@ -234,11 +234,11 @@ TEST(FarfieldCulling, CulledPairsActAsDisabled) {
   MeReal min[3], max[3];
   SetBox(min, max, 0, 0, 0, 1, 1, 1);
   const ProxyId a = space->InsertWithCulling(nullptr, min, max, t, 0, 7);
-  const ProxyId b = space->InsertWithCulling(nullptr, min, max, t, 1, 7);  // culled with a
-  const ProxyId c = space->InsertWithCulling(nullptr, min, max, t, 1, 8);  // other ID
+  const ProxyId b = space->InsertWithCulling(nullptr, min, max, t, 1, 7);      // culled with a
+  const ProxyId c = space->InsertWithCulling(nullptr, min, max, t, 1, 8);      // other ID
   const ProxyId d = space->InsertWithCulling(nullptr, min, max, other, 1, 7);  // other table
-  const ProxyId e = space->Insert(nullptr, min, max);  // no parameters
-  const ProxyId f = space->InsertWithCulling(nullptr, min, max, t, 2, 7);  // flag clear
+  const ProxyId e = space->Insert(nullptr, min, max);                          // no parameters
+  const ProxyId f = space->InsertWithCulling(nullptr, min, max, t, 2, 7);      // flag clear
   space->EndChanges();
   EXPECT_FALSE(space->PairIsEnabled(a, b));
   EXPECT_FALSE(space->PairIsEnabled(b, a));

@@ -24,8 +24,8 @@ Hit segment(McdModelID m, MeReal ax, MeReal ay, MeReal az, MeReal bx, MeReal by,
   return h;
 }
 
-void expectHit(const Hit &h, McdModelID m, double px, double py, double pz, double nx, double ny,
-               double nz, double distance) {
+void expectHit(const Hit &h, McdModelID m, double px, double py, double pz, double nx, double ny, double nz,
+               double distance) {
   ASSERT_TRUE(h.found);
   EXPECT_EQ(h.r.model, m);
   EXPECT_NEAR(h.r.position[0], px, kTol);
@@ -43,9 +43,9 @@ TEST(LineSegment, Sphere) {
   expectHit(segment(m, 0, 0, 0, 10, 0, 0), m, 4, 0, 0, -1, 0, 0, 4);
   // Off-centre chord: enters where y = 0.6, x = 5 - 0.8.
   expectHit(segment(m, 0, (MeReal)0.6, 0, 10, (MeReal)0.6, 0), m, 4.2, 0.6, 0, -0.8, 0.6, 0, 4.2);
-  EXPECT_FALSE(segment(m, 0, 0, 0, 3, 0, 0).found);          // too short
-  EXPECT_FALSE(segment(m, 0, 2, 0, 10, 2, 0).found);         // passes above
-  EXPECT_FALSE(segment(m, 10, 0, 0, 20, 0, 0).found);        // points away
+  EXPECT_FALSE(segment(m, 0, 0, 0, 3, 0, 0).found);    // too short
+  EXPECT_FALSE(segment(m, 0, 2, 0, 10, 2, 0).found);   // passes above
+  EXPECT_FALSE(segment(m, 10, 0, 0, 20, 0, 0).found);  // points away
 }
 
 TEST(LineSegment, BoxAxisAlignedAndRotated) {
@@ -68,8 +68,7 @@ TEST(LineSegment, CylinderSideAndEnd) {
   // Along the axis but outside the radius: misses.
   EXPECT_FALSE(segment(m, 2, 0, 5, 2, 0, -5).found);
   // Slanted through the rim region: enters the side at x = 1, z = 0.5.
-  expectHit(segment(m, 3, 0, (MeReal)1.5, -3, 0, (MeReal)-1.5), m, 1, 0, 0.5, 1, 0, 0,
-            std::sqrt(4.0 + 1.0));
+  expectHit(segment(m, 3, 0, (MeReal)1.5, -3, 0, (MeReal)-1.5), m, 1, 0, 0.5, 1, 0, 0, std::sqrt(4.0 + 1.0));
 }
 
 TEST(LineSegment, SphylCapAndSide) {
@@ -79,8 +78,7 @@ TEST(LineSegment, SphylCapAndSide) {
   expectHit(segment(m, 3, 0, (MeReal)0.5, -3, 0, (MeReal)0.5), m, 0.5, 0, 0.5, 1, 0, 0, 2.5);
   // Into the rounded end at 45 degrees in the xz plane through its centre.
   const double c = std::sqrt(0.5);
-  expectHit(segment(m, 3, 0, 4, 0, 0, 1), m, 0.5 * c, 0, 1 + 0.5 * c, c, 0, c,
-            std::sqrt(18.0) - 0.5);
+  expectHit(segment(m, 3, 0, 4, 0, 0, 1), m, 0.5 * c, 0, 1 + 0.5 * c, c, 0, c, std::sqrt(18.0) - 0.5);
 }
 
 TEST(LineSegment, PlaneIsSolidBelow) {
@@ -95,13 +93,11 @@ TEST(LineSegment, PlaneIsSolidBelow) {
 TEST(LineSegment, ConvexCubeMatchesTheBox) {
   Scene s;
   MeVector3 corners[8];
-  for (int i = 0; i < 8; ++i)
-    MeVector3Set(corners[i], (i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1);
+  for (int i = 0; i < 8; ++i) MeVector3Set(corners[i], (i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1);
   McdGeometryID hull = McdConvexMeshCreateHull(s.fw(), corners, 8, 0);
   ASSERT_NE(hull, nullptr);
   McdModelID m = s.place(hull, 0, 0, 0);
-  expectHit(segment(m, 5, (MeReal)0.5, (MeReal)0.2, -5, (MeReal)0.5, (MeReal)0.2), m, 1, 0.5,
-            0.2, 1, 0, 0, 4);
+  expectHit(segment(m, 5, (MeReal)0.5, (MeReal)0.2, -5, (MeReal)0.5, (MeReal)0.2), m, 1, 0.5, 0.2, 1, 0, 0, 4);
   expectHit(segment(m, (MeReal)0.3, -4, 0, (MeReal)0.3, 4, 0), m, 0.3, -1, 0, 0, -1, 0, 3);
   EXPECT_FALSE(segment(m, 5, 2, 0, -5, 2, 0).found);
 }

@@ -31,8 +31,7 @@ class Scene {
   McdFrameworkID fw() const { return fw_; }
 
   // A model of g at position p (rotation R rows, identity when null).
-  McdModelID place(McdGeometryID g, MeReal x, MeReal y, MeReal z,
-                   const MeMatrix3 *R = nullptr) {
+  McdModelID place(McdGeometryID g, MeReal x, MeReal y, MeReal z, const MeMatrix3 *R = nullptr) {
     tms_.push_back(std::make_unique<Tm>());
     MeMatrix4Ptr tm = tms_.back()->m;
     MeMatrix4TMMakeIdentity(tm);

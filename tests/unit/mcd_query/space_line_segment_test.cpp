@@ -33,9 +33,7 @@ struct Row {
   }
 };
 
-int MEAPI notTheFirstBall(McdModelID m, void *data) {
-  return m != static_cast<Row *>(data)->ball[0];
-}
+int MEAPI notTheFirstBall(McdModelID m, void *data) { return m != static_cast<Row *>(data)->ball[0]; }
 
 TEST(SpaceLineSegment, FirstAllAndFiltered) {
   Row row;
@@ -55,9 +53,7 @@ TEST(SpaceLineSegment, FirstAllAndFiltered) {
   EXPECT_EQ(all[1].model, row.ball[1]);
 
   McdLineSegIntersectResult filtered;
-  ASSERT_EQ(McdSpaceGetLineSegFirstEnabledIntersection(row.space, a, b, notTheFirstBall, &row,
-                                                      &filtered),
-            1);
+  ASSERT_EQ(McdSpaceGetLineSegFirstEnabledIntersection(row.space, a, b, notTheFirstBall, &row, &filtered), 1);
   EXPECT_EQ(filtered.model, row.ball[1]);
   EXPECT_NEAR(filtered.distance, 5, 1e-5);
 

@@ -90,4 +90,3 @@ TEST(CarWheel, WithoutFastSpinTheAxleVisiblyBends) {
   const double with = spinningWheelDeviation(true, &finite2);
   EXPECT_GT(without, 5 * with);
 }
-

@@ -50,8 +50,7 @@ TEST(Contact, BoxOnFourContactsCarriesItsWeight) {
   MdtBodyEnable(box);
   MdtContactID c[4];
   for (int i = 0; i < 4; ++i) {
-    const MeVector3 at = {(i & 1) ? (MeReal)0.5 : -(MeReal)0.5, 0,
-                          (i & 2) ? (MeReal)0.5 : -(MeReal)0.5};
+    const MeVector3 at = {(i & 1) ? (MeReal)0.5 : -(MeReal)0.5, 0, (i & 2) ? (MeReal)0.5 : -(MeReal)0.5};
     c[i] = groundContact(w, box, at);
   }
   for (int s = 0; s < 200; ++s) MdtWorldStep(w, (MeReal)0.01);
@@ -199,8 +198,7 @@ TEST(ContactGroup, CarriesWeightAndReportsNormalForce) {
   for (int i = 0; i < 4; ++i) {
     MdtContactID c = MdtContactGroupCreateContact(grp);
     ASSERT_NE(c, nullptr);
-    MdtContactSetPosition(c, (i & 1) ? (MeReal)0.5 : -(MeReal)0.5, 0,
-                          (i & 2) ? (MeReal)0.5 : -(MeReal)0.5);
+    MdtContactSetPosition(c, (i & 1) ? (MeReal)0.5 : -(MeReal)0.5, 0, (i & 2) ? (MeReal)0.5 : -(MeReal)0.5);
     MdtContactSetNormal(c, 0, 1, 0);
   }
   MdtContactGroupEnable(grp);
@@ -208,9 +206,7 @@ TEST(ContactGroup, CarriesWeightAndReportsNormalForce) {
   for (int s = 0; s < 100; ++s) MdtWorldStep(w, (MeReal)0.01);
   EXPECT_NEAR(MdtContactGroupGetNormalForce(grp), 3 * g, 3 * g * 0.005);
   int n = 0;
-  for (MdtContactID c = MdtContactGroupGetFirstContact(grp); c;
-       c = MdtContactGroupGetNextContact(grp, c))
-    ++n;
+  for (MdtContactID c = MdtContactGroupGetFirstContact(grp); c; c = MdtContactGroupGetNextContact(grp, c)) ++n;
   EXPECT_EQ(n, 4);
   // The body sees the group's contacts.
   n = 0;

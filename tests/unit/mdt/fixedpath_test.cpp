@@ -25,14 +25,12 @@ TEST(FixedPath, PendulumTopFollowsACircularPath) {
   double worst = 0, gap = 0;
   for (int i = 0; i < 1200; ++i) {
     const double t = i * (double)h;
-    MdtFixedPathSetPosition(j, 1, (MeReal)(R * std::cos(omega * t)), 0,
-                            (MeReal)(R * std::sin(omega * t)));
+    MdtFixedPathSetPosition(j, 1, (MeReal)(R * std::cos(omega * t)), 0, (MeReal)(R * std::sin(omega * t)));
     MdtFixedPathSetVelocity(j, 1, (MeReal)(-R * omega * std::sin(omega * t)), 0,
                             (MeReal)(R * omega * std::cos(omega * t)));
     MdtWorldStep(w, h);
     const double t1 = t + (double)h;
-    const MeVector3 target = {(MeReal)(R * std::cos(omega * t1)), 0,
-                              (MeReal)(R * std::sin(omega * t1))};
+    const MeVector3 target = {(MeReal)(R * std::cos(omega * t1)), 0, (MeReal)(R * std::sin(omega * t1))};
     MeVector3 p;
     MdtFixedPathGetPosition(j, 0, p);
     worst = std::max(worst, (double)MeVector3Distance(p, target));

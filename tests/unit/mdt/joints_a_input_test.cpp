@@ -108,12 +108,9 @@ TEST(JointsAInput, WrongTypeIsRejected) {
 
 TEST(JointsAInput, TypesAndNames) {
   OneBody s;
-  EXPECT_EQ(MdtConstraintGetType(MdtPrismaticQuaConstraint(MdtPrismaticCreate(s.w))),
-            MdtConstraintTypePrismatic);
-  EXPECT_EQ(MdtConstraintGetType(MdtUniversalQuaConstraint(MdtUniversalCreate(s.w))),
-            MdtConstraintTypeUniversal);
-  EXPECT_EQ(MdtConstraintGetType(MdtFixedPathQuaConstraint(MdtFixedPathCreate(s.w))),
-            MdtConstraintTypeFixedPath);
+  EXPECT_EQ(MdtConstraintGetType(MdtPrismaticQuaConstraint(MdtPrismaticCreate(s.w))), MdtConstraintTypePrismatic);
+  EXPECT_EQ(MdtConstraintGetType(MdtUniversalQuaConstraint(MdtUniversalCreate(s.w))), MdtConstraintTypeUniversal);
+  EXPECT_EQ(MdtConstraintGetType(MdtFixedPathQuaConstraint(MdtFixedPathCreate(s.w))), MdtConstraintTypeFixedPath);
   EXPECT_STREQ(MdtConstraintTypeName(MdtConstraintTypePrismatic), "Prismatic");
   EXPECT_STREQ(MdtConstraintTypeName(MdtConstraintTypeUniversal), "Universal");
   EXPECT_STREQ(MdtConstraintTypeName(MdtConstraintTypeAngular3), "Angular3");

@@ -31,8 +31,7 @@ inline double relativeAngle(MdtBodyID a, MdtBodyID b) {
   MeVector4 p, q;
   MdtBodyGetQuaternion(a, p);
   MdtBodyGetQuaternion(b, q);
-  const double dot = std::fabs((double)p[0] * q[0] + (double)p[1] * q[1] +
-                               (double)p[2] * q[2] + (double)p[3] * q[3]);
+  const double dot = std::fabs((double)p[0] * q[0] + (double)p[1] * q[1] + (double)p[2] * q[2] + (double)p[3] * q[3]);
   return 2 * std::acos(dot > 1 ? 1 : dot);
 }
 

@@ -23,8 +23,7 @@ TEST(JointsBCommon, LifeCycleUserDataSortKeysAndForces) {
   MdtBodyID c = makeBody(w, 0, 1, 0);  // a second body for the wheel
   const MdtConstraintID all[5] = {
       MdtCarWheelQuaConstraint(MdtCarWheelCreate(w)), MdtSpringQuaConstraint(MdtSpringCreate(w)),
-      MdtSpring6QuaConstraint(MdtSpring6Create(w)),
-      MdtRPROJointQuaConstraint(MdtRPROJointCreate(w)),
+      MdtSpring6QuaConstraint(MdtSpring6Create(w)), MdtRPROJointQuaConstraint(MdtRPROJointCreate(w)),
       MdtSkeletalQuaConstraint(MdtSkeletalCreate(w))};
   int tag[5];
   for (int i = 0; i < 5; ++i) {
@@ -94,8 +93,7 @@ TEST(JointsBCommon, WronglyTypedHandlesAndNullsWarn) {
   EXPECT_EQ(MdtConstraintDCastSkeletal(hc), nullptr);
   EXPECT_EQ(MdtConstraintDCastCarWheel(hc), nullptr);
   MdtSpringSetStiffness((MdtSpringID)(void *)h, 1);
-  EXPECT_NE(warnings.last().find("MdtSpringSetStiffness: the constraint is of type Hinge"),
-            std::string::npos);
+  EXPECT_NE(warnings.last().find("MdtSpringSetStiffness: the constraint is of type Hinge"), std::string::npos);
   MdtSkeletalReset((MdtSkeletalID)(void *)h);
   EXPECT_NE(warnings.last().find("MdtSkeletalReset"), std::string::npos);
   MdtRPROJointSetLinearStrength(nullptr, 1, 1, 1);

@@ -22,8 +22,7 @@ inline void setDiagonalInertia(MdtBodyID b, MeReal x, MeReal y, MeReal z) {
 }
 
 // A body-frame direction of `b` written in another body's frame.
-inline void directionIn(MdtBodyID b, MdtBodyID frame, MeReal x, MeReal y, MeReal z,
-                        MeVector3 out) {
+inline void directionIn(MdtBodyID b, MdtBodyID frame, MeReal x, MeReal y, MeReal z, MeVector3 out) {
   MeVector3 world;
   bodyDirection(b, x, y, z, world);
   MeMatrix4 tm;

@@ -27,9 +27,7 @@ struct World {
 };
 
 // Relative tolerance of a few MeReal ulps times `ulps`.
-inline double tol(double scale, double ulps = 8) {
-  return ulps * (double)ME_REAL_EPSILON * (scale < 1 ? 1 : scale);
-}
+inline double tol(double scale, double ulps = 8) { return ulps * (double)ME_REAL_EPSILON * (scale < 1 ? 1 : scale); }
 
 // Distance between a constraint's two attachment points (world frame).
 inline double anchorGap(MdtConstraintID c) {
@@ -47,8 +45,8 @@ inline bool bodyFinite(MdtBodyID b) {
   MdtBodyGetLinearVelocity(b, v);
   MdtBodyGetAngularVelocity(b, w);
   MdtBodyGetQuaternion(b, q);
-  return MeVector3AllFinite(x) && MeVector3AllFinite(v) && MeVector3AllFinite(w) &&
-         std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]) && std::isfinite(q[3]);
+  return MeVector3AllFinite(x) && MeVector3AllFinite(v) && MeVector3AllFinite(w) && std::isfinite(q[0]) &&
+         std::isfinite(q[1]) && std::isfinite(q[2]) && std::isfinite(q[3]);
 }
 
 }  // namespace mdt_test

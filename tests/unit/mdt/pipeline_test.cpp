@@ -24,8 +24,8 @@ MdtBodyID bodyAt(MdtWorldID w, MeReal x, MeReal y, MeReal z) {
 // height y between two bodies), normal +y, penetrations depth0 + i * spread
 // (hand-made contacts keep their depth, so a non-zero depth keeps pushing:
 // only the capping tests use one).
-MdtContactGroupID squareGroup(MdtWorldID w, MdtBodyID b0, MdtBodyID b1, MeReal y,
-                              MeReal depth0, MdtContactType type, MeReal spread = 0) {
+MdtContactGroupID squareGroup(MdtWorldID w, MdtBodyID b0, MdtBodyID b1, MeReal y, MeReal depth0, MdtContactType type,
+                              MeReal spread = 0) {
   MdtContactGroupID grp = MdtContactGroupCreate(w);
   MdtContactGroupSetBodies(grp, b0, b1);
   MeVector3 c;
@@ -198,8 +198,7 @@ struct Stack {
   // Which contacts of a group still carried force in the last step.
   static std::vector<bool> carrying(MdtContactGroupID grp) {
     std::vector<bool> out;
-    for (MdtContactID c = MdtContactGroupGetFirstContact(grp); c;
-         c = MdtContactGroupGetNextContact(grp, c))
+    for (MdtContactID c = MdtContactGroupGetFirstContact(grp); c; c = MdtContactGroupGetNextContact(grp, c))
       out.push_back(MdtContactGetNormalForce(c) > 0);
     return out;
   }
@@ -306,11 +305,9 @@ std::vector<MdtBodyID> buildScene(MdtWorldID w, bool reversed) {
       MdtBSJointSetPosition(j, (MeReal)0.6 * (MeReal)i - (MeReal)0.3, 2, 0);
       c = MdtBSJointQuaConstraint(j);
     } else {
-      MdtContactGroupID grp = squareGroup(w, bodies[(size_t)i], nullptr, 0, 0,
-                                          MdtContactTypeFriction2D);
+      MdtContactGroupID grp = squareGroup(w, bodies[(size_t)i], nullptr, 0, 0, MdtContactTypeFriction2D);
       MdtContactGroupDisable(grp);
-      for (MdtContactID k2 = MdtContactGroupGetFirstContact(grp); k2;
-           k2 = MdtContactGroupGetNextContact(grp, k2)) {
+      for (MdtContactID k2 = MdtContactGroupGetFirstContact(grp); k2; k2 = MdtContactGroupGetNextContact(grp, k2)) {
         MdtContactParamsSetFriction(MdtContactGetParams(k2), 3);
         MdtContactParamsSetRestitution(MdtContactGetParams(k2), (MeReal)0.3);
       }

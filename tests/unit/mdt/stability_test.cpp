@@ -82,8 +82,7 @@ ChainResult runChain(int links, double ratio, double seconds, MeReal stabilisati
 
 TEST(Stability, HangingChainMassRatio100) {
   const ChainResult r = runChain(8, 100, 60);
-  std::printf("chain 100:1  worst joint gap %.3g m, energy growth %.3g J\n", r.worstGap,
-              r.energyGrowth);
+  std::printf("chain 100:1  worst joint gap %.3g m, energy growth %.3g J\n", r.worstGap, r.energyGrowth);
   EXPECT_TRUE(r.finite);
   EXPECT_LT(r.worstGap, 0.01);
   EXPECT_LE(r.energyGrowth, 1e-3);  // constraint error correction and epsilon only dissipate
@@ -91,8 +90,7 @@ TEST(Stability, HangingChainMassRatio100) {
 
 TEST(Stability, HangingChainMassRatio1000StaysFinite) {
   const ChainResult r = runChain(8, 1000, 60);
-  std::printf("chain 1000:1 worst joint gap %.3g m, energy growth %.3g J\n", r.worstGap,
-              r.energyGrowth);
+  std::printf("chain 1000:1 worst joint gap %.3g m, energy growth %.3g J\n", r.worstGap, r.energyGrowth);
   EXPECT_TRUE(r.finite);
   EXPECT_LT(r.worstGap, 0.05);  // beyond the guide's advised 100:1: bounded, not accurate
 }
@@ -102,8 +100,8 @@ TEST(Stability, WithoutStabilisationTheHeavyChainBlowsUp) {
   // (w^2 ~ tension * lever / inertia) is faster than 2/h at h = 0.01, and the
   // plain velocity-level step feeds it energy until the joints come apart.
   const ChainResult r = runChain(8, 100, 10, 0);
-  std::printf("chain 100:1 without stabilisation: worst joint gap %.3g m, energy growth %.3g J\n",
-              r.worstGap, r.energyGrowth);
+  std::printf("chain 100:1 without stabilisation: worst joint gap %.3g m, energy growth %.3g J\n", r.worstGap,
+              r.energyGrowth);
   EXPECT_GT(r.worstGap, 0.05);
 }
 
@@ -167,8 +165,8 @@ TEST(Stability, RedundantConstraintsOnOnePair) {
   // (whose error is the velocity-level step's, ~ r w^2 h^2 / (2 gamma)).
   const RedundantResult alone = runRedundant(false);
   const RedundantResult both = runRedundant(true);
-  std::printf("hinge alone: gap %.3g m; hinge + 2 ball joints: gap %.3g m, energy growth %.3g J\n",
-              alone.worstGap, both.worstGap, both.energyGrowth);
+  std::printf("hinge alone: gap %.3g m; hinge + 2 ball joints: gap %.3g m, energy growth %.3g J\n", alone.worstGap,
+              both.worstGap, both.energyGrowth);
   EXPECT_EQ(both.unsolved, 0);
   EXPECT_TRUE(both.finite);
   EXPECT_LT(both.worstGap, 1.5 * alone.worstGap + 1e-4);
@@ -217,8 +215,7 @@ TEST(Stability, PendulumBehavesTheSameAtLengthScales) {
   const double small = scaledPeriod((MeReal)0.01);
   const double unit = scaledPeriod(1);
   const double large = scaledPeriod(100);
-  std::printf("scaled periods: L=0.01 %.5f, L=1 %.5f, L=100 %.5f (2 pi = %.5f)\n", small, unit,
-              large, 2 * M_PI);
+  std::printf("scaled periods: L=0.01 %.5f, L=1 %.5f, L=100 %.5f (2 pi = %.5f)\n", small, unit, large, 2 * M_PI);
   EXPECT_NEAR(small, unit, 0.01 * unit);
   EXPECT_NEAR(large, unit, 0.01 * unit);
   EXPECT_NEAR(unit, 2 * M_PI, 0.01 * 2 * M_PI);

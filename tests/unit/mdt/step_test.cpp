@@ -229,8 +229,7 @@ std::vector<unsigned char> runScene() {
   }
   std::vector<unsigned char> out;
   for (int s = 0; s < 300; ++s) {
-    for (int i = 0; i < 6; ++i)
-      MdtBodyAddForceAtPosition(bodies[i], 1, 0, (MeReal)(0.1 * i), 0, 1, 0);
+    for (int i = 0; i < 6; ++i) MdtBodyAddForceAtPosition(bodies[i], 1, 0, (MeReal)(0.1 * i), 0, 1, 0);
     MdtWorldStep(w, (MeReal)(1.0 / 60));
   }
   for (MdtBodyID b : bodies) {

@@ -75,7 +75,7 @@ void Build() {
   RPerformanceBarCreate(rc);
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, const char *argv[]) {
   MeCommandLineOptions *opts = MeCommandLineOptionsCreate(argc, argv);

@@ -55,22 +55,24 @@ TEST(Ase, BrokenFilesNameTheLine) {
   struct Case {
     std::string text;
     const char *mention;
-  } cases[] = {{"*COMMENT nothing here\n", "no *MESH"},
-               {replace("A:    0 B:    1 C:    4", "A:    0 B:    1 C:    9"), "face corner 9 is not a vertex"},
-               {replace("*MESH_NUMFACES 6", "*MESH_NUMFACES 7"), "*MESH_NUMFACES says 7"},
-               {replace("*MESH_NUMFACES 6", "*MESH_NUMFACES 5"), "more faces than *MESH_NUMFACES"},
-               {replace("*MESH_VERTEX    4	 0.0", "*MESH_VERTEX    4	 zero"), "bad *MESH_VERTEX"},
-               {replace("*MESH_VERTEX    4", "*MESH_VERTEX    7"), "index 7 out of range"},
-               {replace("*MESH_TFACE 3	3	0	4", "*MESH_TFACE 3	3	0	8"), "texture corner 8"},
-               {replace("*MESH_NUMVERTEX 5", "*MESH_NUMVERTEX 99999999999"), "bad *MESH_NUMVERTEX"},
-               {replace("*MESH_NUMVERTEX 5", "*MESH_NUMVERTEX -5"), "bad *MESH_NUMVERTEX"},
-               {replace("A:    0 B:    2 C:    1", "A    0 B    2 C    1"), "bad *MESH_FACE"},
-               {replace("*MESH_VERTEXNORMAL 1	0.0	0.0	-2.0", "*MESH_VERTEXNORMAL 1	0.0	0.0	-2.0\n*MESH_VERTEXNORMAL 1 0 0 1"),
-                "outside a face's three"},
-               // Found by the libFuzzer target: a normal of a previous mesh's face.
-               {good + "*MESH {\n*MESH_VERTEXNORMAL 0 0 0 1\n", "outside a face's three"},
-               {replace("*MESH_NUMFACES 6", "*MESH_NUMFACES 6\n*MESH_NUMFACES 2"), "given twice"},
-               {replace("*MESH_NUMVERTEX 5", "*MESH_NUMVERTEX 5\n*MESH_NUMVERTEX 9"), "given twice"}};
+  } cases[] = {
+      {"*COMMENT nothing here\n", "no *MESH"},
+      {replace("A:    0 B:    1 C:    4", "A:    0 B:    1 C:    9"), "face corner 9 is not a vertex"},
+      {replace("*MESH_NUMFACES 6", "*MESH_NUMFACES 7"), "*MESH_NUMFACES says 7"},
+      {replace("*MESH_NUMFACES 6", "*MESH_NUMFACES 5"), "more faces than *MESH_NUMFACES"},
+      {replace("*MESH_VERTEX    4	 0.0", "*MESH_VERTEX    4	 zero"), "bad *MESH_VERTEX"},
+      {replace("*MESH_VERTEX    4", "*MESH_VERTEX    7"), "index 7 out of range"},
+      {replace("*MESH_TFACE 3	3	0	4", "*MESH_TFACE 3	3	0	8"), "texture corner 8"},
+      {replace("*MESH_NUMVERTEX 5", "*MESH_NUMVERTEX 99999999999"), "bad *MESH_NUMVERTEX"},
+      {replace("*MESH_NUMVERTEX 5", "*MESH_NUMVERTEX -5"), "bad *MESH_NUMVERTEX"},
+      {replace("A:    0 B:    2 C:    1", "A    0 B    2 C    1"), "bad *MESH_FACE"},
+      {replace("*MESH_VERTEXNORMAL 1	0.0	0.0	-2.0",
+               "*MESH_VERTEXNORMAL 1	0.0	0.0	-2.0\n*MESH_VERTEXNORMAL 1 0 0 1"),
+       "outside a face's three"},
+      // Found by the libFuzzer target: a normal of a previous mesh's face.
+      {good + "*MESH {\n*MESH_VERTEXNORMAL 0 0 0 1\n", "outside a face's three"},
+      {replace("*MESH_NUMFACES 6", "*MESH_NUMFACES 6\n*MESH_NUMFACES 2"), "given twice"},
+      {replace("*MESH_NUMVERTEX 5", "*MESH_NUMVERTEX 5\n*MESH_NUMVERTEX 9"), "given twice"}};
   for (const Case &c : cases) {
     std::vector<RObjectVertex> v;
     std::string error;
@@ -125,7 +127,7 @@ TEST(Ase, LoadScalesAndCreateNormalises) {
     EXPECT_NEAR(lo, -1, 1e-6) << axis;
     EXPECT_NEAR(hi, 1, 1e-6) << axis;
   }
-  RGraphic *k = RGraphicCreate(rc, path.data(), 1, 1, 1, c, nullptr, 0, 1); // keep aspect: z 1.5 of 2
+  RGraphic *k = RGraphicCreate(rc, path.data(), 1, 1, 1, c, nullptr, 0, 1);  // keep aspect: z 1.5 of 2
   extent(k, 2, lo, hi);
   EXPECT_NEAR(hi - lo, 1.5, 1e-6);
   extent(k, 0, lo, hi);
@@ -149,4 +151,4 @@ TEST(Ase, MissingAndMalformedFilesGiveNull) {
   RRenderContextDestroy(rc);
 }
 
-} // namespace
+}  // namespace

@@ -12,7 +12,7 @@ namespace {
 constexpr double kTol = 1e-5;
 
 class Camera : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     rc = MakeContext("prog -null");
     ASSERT_NE(rc, nullptr);
@@ -43,7 +43,7 @@ TEST_F(Camera, DefaultLooksAtTheOriginFromTenAlongZ) {
 
 TEST_F(Camera, SetViewQuarterTurnPutsTheCameraOnX) {
   RCameraSetView(rc, 5, ME_HALF_PI, 0);
-  ExpectPosition(5, 0, 0); // theta = pi/2: sin 1, cos 0
+  ExpectPosition(5, 0, 0);  // theta = pi/2: sin 1, cos 0
 }
 
 TEST_F(Camera, SetViewGeneralCase) {
@@ -95,12 +95,12 @@ TEST_F(Camera, GuideRainbowChainMoves) {
 }
 
 TEST_F(Camera, PansMoveLookAtAndCameraTogether) {
-  RCameraPanX(rc, 2); // right = (1, 0, 0) at theta = 0
+  RCameraPanX(rc, 2);  // right = (1, 0, 0) at theta = 0
   ExpectLookAt(2, 0, 0);
   ExpectPosition(2, 0, 10);
-  RCameraPanY(rc, 1); // up = (0, 1, 0) at phi = 0
+  RCameraPanY(rc, 1);  // up = (0, 1, 0) at phi = 0
   ExpectLookAt(2, 1, 0);
-  RCameraPanZ(rc, 3); // forward = (0, 0, -1)
+  RCameraPanZ(rc, 3);  // forward = (0, 0, -1)
   ExpectLookAt(2, 1, -3);
   ExpectPosition(2, 1, 7);
   // At theta = pi/2 the right vector is (0, 0, -1).
@@ -131,7 +131,7 @@ TEST_F(Camera, MatrixTakesTheCameraToTheOriginAndTheLookAtDownMinusZ) {
 
 TEST_F(Camera, UpdateAfterWritingMembersDirectly) {
   rc->m_CameraDist = 2;
-  rc->m_CameraTheta = ME_PI; // behind: -z
+  rc->m_CameraTheta = ME_PI;  // behind: -z
   rc->m_CameraPhi = 0;
   RCameraUpdate(rc);
   EXPECT_NEAR(rc->m_CameraPos[2], -2, kTol);
@@ -160,4 +160,4 @@ TEST(CameraBadInput, NonFiniteAnglesFallBackToZero) {
   RRenderContextDestroy(rc);
 }
 
-} // namespace
+}  // namespace

@@ -14,7 +14,7 @@ namespace {
 const float kRed[4] = {1, 0, 0, 1};
 
 class Graphics : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     rc = MakeContext("prog -null");
     ASSERT_NE(rc, nullptr);
@@ -50,7 +50,7 @@ void ExpectWellFormed(const RGraphic *g) {
     const double e2[3] = {v[2].m_X - v[0].m_X, v[2].m_Y - v[0].m_Y, v[2].m_Z - v[0].m_Z};
     const double c[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
     const double clen = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    if (clen < 1e-6) continue; // degenerate (the sphere's poles)
+    if (clen < 1e-6) continue;  // degenerate (the sphere's poles)
     const double nsum[3] = {double(v[0].m_NX) + v[1].m_NX + v[2].m_NX, double(v[0].m_NY) + v[1].m_NY + v[2].m_NY,
                             double(v[0].m_NZ) + v[1].m_NZ + v[2].m_NZ};
     EXPECT_GT(c[0] * nsum[0] + c[1] * nsum[1] + c[2] * nsum[2], 0) << "triangle " << i / 3 << " winds clockwise";
@@ -75,7 +75,7 @@ TEST(GraphicData, CreateEmptyLaysOutHeaderThenVertices) {
   EXPECT_GE(v, h + sizeof(RObjectHeader));
   EXPECT_LT(v, h + sizeof(RObjectHeader) + 16);
   EXPECT_EQ(v % 16, 0u);
-  g->m_pVertices[8].m_X = 3; // all nine are usable
+  g->m_pVertices[8].m_X = 3;  // all nine are usable
   RGraphicDestroy(g);
   RGraphicDestroy(nullptr);
 }
@@ -172,8 +172,8 @@ TEST_F(Graphics, CylinderConeFrustumTorusStayInTheirBounds) {
   float zmin = 1e9f, zmax = -1e9f;
   for (int i = 0; i < cone->m_pObject->m_nNumVertices; ++i)
     zmin = std::min(zmin, cone->m_pVertices[i].m_Z), zmax = std::max(zmax, cone->m_pVertices[i].m_Z);
-  EXPECT_FLOAT_EQ(zmin, -0.5f); // base at -lheight
-  EXPECT_FLOAT_EQ(zmax, 2.0f);  // apex at uheight
+  EXPECT_FLOAT_EQ(zmin, -0.5f);  // base at -lheight
+  EXPECT_FLOAT_EQ(zmax, 2.0f);   // apex at uheight
   RGraphic *fr = RGraphicFrustumCreate(rc, 1, 0.5, -1, 1, 6, kRed, nullptr);
   ExpectWellFormed(fr);
   EXPECT_EQ(fr->m_pObject->m_nNumVertices, 6 * 12);
@@ -181,10 +181,10 @@ TEST_F(Graphics, CylinderConeFrustumTorusStayInTheirBounds) {
   ExpectWellFormed(torus);
   for (int i = 0; i < torus->m_pObject->m_nNumVertices; ++i) {
     const RObjectVertex &v = torus->m_pVertices[i];
-    const double rho = std::hypot(v.m_X, v.m_Y); // distance from the axis
+    const double rho = std::hypot(v.m_X, v.m_Y);  // distance from the axis
     EXPECT_GE(rho, 1 - 1e-5);
     EXPECT_LE(rho, 2 + 1e-5);
-    EXPECT_NEAR(std::hypot(rho - 1.5, double(v.m_Z)), 0.5, 1e-5); // on the tube
+    EXPECT_NEAR(std::hypot(rho - 1.5, double(v.m_Z)), 0.5, 1e-5);  // on the tube
   }
   EXPECT_EQ(Count(false), 4);
 }
@@ -252,13 +252,13 @@ TEST_F(Graphics, TextMakesOneQuadPerVisibleCharacter) {
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(t->m_pObject->m_nNumVertices, 4 * 6);
   EXPECT_EQ(rc->m_pRG_First2D, t);
-  EXPECT_EQ(t->m_pObject->m_nTextureID, R_MAX_TEXTURES); // the built-in font
+  EXPECT_EQ(t->m_pObject->m_nTextureID, R_MAX_TEXTURES);  // the built-in font
   EXPECT_EQ(t->m_pVertices[0].m_X, 5);
   EXPECT_EQ(t->m_pVertices[0].m_Y, 7);
-  const RObjectVertex &d = t->m_pVertices[18]; // 'd' starts line 2
+  const RObjectVertex &d = t->m_pVertices[18];  // 'd' starts line 2
   EXPECT_EQ(d.m_X, 5);
   EXPECT_EQ(d.m_Y, 7 + R_TEXT_CHAR_HEIGHT);
-  EXPECT_GT(t->m_pVertices[6].m_X, 5); // 'b' after 'a'
+  EXPECT_GT(t->m_pVertices[6].m_X, 5);  // 'b' after 'a'
 }
 
 TEST_F(Graphics, BadSizesGiveNullWithAWarning) {
@@ -306,4 +306,4 @@ TEST(StripConversion, KeepsTheWindingOfEveryTriangleAndGrows) {
   RGraphicDestroy(g);
 }
 
-} // namespace
+}  // namespace

@@ -8,7 +8,7 @@ using viewer_test::MakeContext;
 namespace {
 
 class GuideForms : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     rc = MakeContext("prog -null");
     ASSERT_NE(rc, nullptr);
@@ -17,7 +17,7 @@ protected:
   RRender *rc = nullptr;
 };
 
-} // namespace
+}  // namespace
 
 extern "C" int ViewerCApiCheck(RRender *rc);
 
@@ -25,7 +25,7 @@ namespace {
 
 TEST_F(GuideForms, GuideColourArgumentsWorkFromCInEitherPrecision) {
   EXPECT_EQ(ViewerCApiCheck(rc), 8);
-  EXPECT_EQ(rc->m_pRG_First->m_pObject->m_ColorAmbient[1], 1); // the last SetColor, white
+  EXPECT_EQ(rc->m_pRG_First->m_pObject->m_ColorAmbient[1], 1);  // the last SetColor, white
 }
 
 TEST_F(GuideForms, GuideColourArgumentsWorkFromCxx) {
@@ -43,4 +43,4 @@ TEST_F(GuideForms, GuideColourArgumentsWorkFromCxx) {
   EXPECT_NE(RNLineCreate(rc, s, e, red, nullptr), nullptr);
 }
 
-} // namespace
+}  // namespace

@@ -27,7 +27,7 @@ TEST(ParseText, SubstitutesEveryVariable) {
   EXPECT_EQ(Parse(rc, "$ACTION1 - toggle options menu"), "Tab - toggle options menu");
   EXPECT_EQ(Parse(rc, "$MOUSE - apply mouse force"), "Mouse - apply mouse force");
   EXPECT_EQ(Parse(rc, "welcome to $APPNAME!"), "welcome to RainbowChain!");
-  rc->m_AppName = const_cast<char *>("Other"); // assigning the pointer works too
+  rc->m_AppName = const_cast<char *>("Other");  // assigning the pointer works too
   EXPECT_EQ(Parse(rc, "$APPNAME"), "Other");
   RRenderSetActionNKey(rc, 3, 'k');
   EXPECT_EQ(Parse(rc, "$ACTION3"), "k");
@@ -59,7 +59,7 @@ TEST(ParseText, TextGraphicsAreParsedFirst) {
   char text[] = "$ACTION2";
   RGraphic *g = RGraphicTextCreate(rc, text, 0, 0, white);
   ASSERT_NE(g, nullptr);
-  EXPECT_EQ(g->m_pObject->m_nNumVertices, 6 * 6); // "Return"
+  EXPECT_EQ(g->m_pObject->m_nNumVertices, 6 * 6);  // "Return"
   RRenderContextDestroy(rc);
 }
 
@@ -73,7 +73,7 @@ TEST(Help, PanelListsParsedLinesAndTogglesThePause) {
   RRenderToggleUserHelp(rc);
   EXPECT_TRUE(rc->m_pPrivate->paused);
   std::vector<RGraphic *> g = karma::viewer::HelpOverlay(rc);
-  EXPECT_EQ(g.size(), 1u + 1u + 3u); // panel, title, lines
+  EXPECT_EQ(g.size(), 1u + 1u + 3u);  // panel, title, lines
   for (RGraphic *x : g) RGraphicDestroy(x);
   karma::viewer::PressKey(rc, karma::viewer::kKeyF1);
   EXPECT_FALSE(rc->m_pPrivate->paused);
@@ -88,10 +88,10 @@ TEST(HelpDeathTest, TheHelpPausesTheTickUntilF1) {
   EXPECT_EXIT(
       {
         RRender *rc = MakeContext("prog -null -frames 5 -keys \"3:key F1\"");
-        RRenderToggleUserHelp(rc); // as RainbowChain does: start with the help shown
+        RRenderToggleUserHelp(rc);  // as RainbowChain does: start with the help shown
         RRun(rc, LogTick, nullptr);
       },
       ::testing::ExitedWithCode(0), "^tick 3\ntick 4\n$");
 }
 
-} // namespace
+}  // namespace

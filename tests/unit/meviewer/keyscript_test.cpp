@@ -16,9 +16,10 @@ namespace {
 TEST(KeyScript, ParsesEveryVerbCommentsAndSeparators) {
   std::vector<KeyEvent> e;
   std::string error;
-  ASSERT_TRUE(ParseKeyScript("10:press Up; 12:release up # a comment; ignored\n"
-                             " 11 : key q\n5:action 2;7:mouse 320, 240 ,5; 9:mouse -3,4; 20:quit; ;",
-                             e, error))
+  ASSERT_TRUE(
+      ParseKeyScript("10:press Up; 12:release up # a comment; ignored\n"
+                     " 11 : key q\n5:action 2;7:mouse 320, 240 ,5; 9:mouse -3,4; 20:quit; ;",
+                     e, error))
       << error;
   ASSERT_EQ(e.size(), 7u);
   // Sorted by frame, stable within a frame.
@@ -91,12 +92,11 @@ void MEAPI Mouse(RRender *, int x, int y, int b, void *) {
 
 TEST(Controls, ScriptedInputRunsTheCallbacksFrameByFrame) {
   TempDir dir("keys");
-  {
-    std::ofstream(dir.path() / "more.keys") << "# from a file, after -keys\n4:key d\n4:key q\n";
-  }
-  RRender *rc = MakeContext("prog -null -keys \"0:key Up; 1:press w; 2:press w; 2:release w; 3:key w; "
-                            "1:key Return; 2:action 4; 3:mouse 7,8,1; 5:key Escape\" -keyfile " +
-                            (dir.path() / "more.keys").string());
+  { std::ofstream(dir.path() / "more.keys") << "# from a file, after -keys\n4:key d\n4:key q\n"; }
+  RRender *rc = MakeContext(
+      "prog -null -keys \"0:key Up; 1:press w; 2:press w; 2:release w; 3:key w; "
+      "1:key Return; 2:action 4; 3:mouse 7,8,1; 5:key Escape\" -keyfile " +
+      (dir.path() / "more.keys").string());
   ASSERT_NE(rc, nullptr);
   static int two = 2, four = 4, five = 5;
   RRenderSetUpCallBack(rc, Up);
@@ -105,7 +105,7 @@ TEST(Controls, ScriptedInputRunsTheCallbacksFrameByFrame) {
   RRenderSetActionNCallBack(rc, 2, Action, &two);
   RRenderSetActionNCallBack(rc, 4, Action, &four);
   RRenderSetActionNCallBack(rc, 5, Action, &five);
-  RRenderSetActionNKey(rc, 5, 'q'); // 'q' now presses action 5
+  RRenderSetActionNKey(rc, 5, 'q');  // 'q' now presses action 5
   RRenderSetMouseCallBack(rc, Mouse, nullptr);
   gLog.clear();
   const char *expected[] = {"up ", "up2 action2 ", "action4 ", "up2 mouse7,8,1 ", "right action5 ", ""};
@@ -113,9 +113,9 @@ TEST(Controls, ScriptedInputRunsTheCallbacksFrameByFrame) {
     rc->m_nFrame = frame;
     gLog.clear();
     karma::viewer::ProcessInput(rc);
-    EXPECT_EQ(gLog, expected[frame]) << "frame " << frame; // w held at frame 2: no second press
+    EXPECT_EQ(gLog, expected[frame]) << "frame " << frame;  // w held at frame 2: no second press
   }
-  EXPECT_TRUE(rc->m_pPrivate->quit); // Escape at frame 5
+  EXPECT_TRUE(rc->m_pPrivate->quit);  // Escape at frame 5
   RRenderContextDestroy(rc);
 }
 
@@ -145,4 +145,4 @@ TEST(ControlsDeathTest, RunAppliesEachFramesEventsBeforeItsTick) {
       ::testing::ExitedWithCode(0), "tick 1\naction2 at frame 2\ntick 2\ntick 3\n$");
 }
 
-} // namespace
+}  // namespace

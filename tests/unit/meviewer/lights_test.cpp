@@ -16,7 +16,7 @@ using viewer_test::Messages;
 namespace {
 
 class Lights : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     rc = MakeContext("prog -size 64x64");
     ASSERT_NE(rc, nullptr);
@@ -42,25 +42,25 @@ protected:
 };
 
 TEST_F(Lights, DirectionalLightChangesWaitForTheirFlag) {
-  const auto lit = Centre(); // 0.7 diffuse, facing the light: about 178
+  const auto lit = Centre();  // 0.7 diffuse, facing the light: about 178
   EXPECT_NEAR(lit[0], 178, 3);
-  rc->m_DirectLight1.m_rgbDiffuse[0] = 0; // no flag: not applied
+  rc->m_DirectLight1.m_rgbDiffuse[0] = 0;  // no flag: not applied
   EXPECT_EQ(Centre(), lit);
   rc->m_bForceDirectLight1Update = 1;
   const auto changed = Centre();
   EXPECT_LT(changed[0], 5);
   EXPECT_EQ(changed[1], lit[1]);
-  EXPECT_EQ(rc->m_bForceDirectLight1Update, 0); // cleared by the renderer
+  EXPECT_EQ(rc->m_bForceDirectLight1Update, 0);  // cleared by the renderer
 }
 
 TEST_F(Lights, AmbientAppliesNextFrame) {
   RLightSwitchOff(rc, kRDirect1);
   EXPECT_EQ(rc->m_bForceDirectLight1Update, 1);
-  EXPECT_EQ(Centre()[1], 0); // no light at all
+  EXPECT_EQ(Centre()[1], 0);  // no light at all
   rc->m_bUseAmbientLight = 1;
   rc->m_rgbAmbientLightColor[1] = 0.5f;
   rc->m_rgbAmbientLightColor[0] = rc->m_rgbAmbientLightColor[2] = 0;
-  const auto c = Centre(); // ambient 0.5 times material ambient 1
+  const auto c = Centre();  // ambient 0.5 times material ambient 1
   EXPECT_NEAR(c[1], 128, 2);
   EXPECT_EQ(c[0], 0);
 }
@@ -69,11 +69,12 @@ TEST_F(Lights, PointLightFallsOffWithAttenuation) {
   RLightSwitchOff(rc, kRDirect1);
   RSwitchLightOn(rc, kRPoint);
   RPointLight &p = rc->m_PointLight;
-  p.m_Position[0] = 0, p.m_Position[1] = 0, p.m_Position[2] = 7; // 4 in front of the sphere's surface
+  p.m_Position[0] = 0, p.m_Position[1] = 0, p.m_Position[2] = 7;  // 4 in front of the sphere's surface
   p.m_rgbSpecular[0] = p.m_rgbSpecular[1] = p.m_rgbSpecular[2] = 0;
-  const int full = Centre()[0]; // attenuation 1: diffuse 1 head-on
+  const int full = Centre()[0];  // attenuation 1: diffuse 1 head-on
   EXPECT_GE(full, 250);
-  p.m_AttenuationConstant = 1, p.m_AttenuationLinear = 0, p.m_AttenuationQuadratic = 0.25f; // 1 / (1 + 0.25 * 16) = 0.2
+  p.m_AttenuationConstant = 1, p.m_AttenuationLinear = 0,
+  p.m_AttenuationQuadratic = 0.25f;  // 1 / (1 + 0.25 * 16) = 0.2
   rc->m_bForcePointLightUpdate = 1;
   EXPECT_NEAR(Centre()[0], 51, 2);
 }
@@ -88,7 +89,7 @@ TEST(LightsBadInput, UnknownLightWarns) {
   RRenderContextDestroy(rc);
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -109,13 +110,13 @@ TEST(Drawing, VertexEditsShowNextFrameAndTheMatrixIsCopied) {
     return int(img.pixels[(32 * 64 + 32) * 3]);
   };
   const int background = int(0.2f * 255 + 0.5f);
-  EXPECT_GT(centre(), background + 20); // the square covers the centre
-  for (int i = 0; i < sq->m_pObject->m_nNumVertices; ++i) sq->m_pVertices[i].m_X += 50; // move it away
+  EXPECT_GT(centre(), background + 20);                                                  // the square covers the centre
+  for (int i = 0; i < sq->m_pObject->m_nNumVertices; ++i) sq->m_pVertices[i].m_X += 50;  // move it away
   EXPECT_NEAR(centre(), background, 1);
-  MeMatrix4TMSetPosition(tm, -50, 0, 0); // the transform brings it back
+  MeMatrix4TMSetPosition(tm, -50, 0, 0);  // the transform brings it back
   EXPECT_GT(centre(), background + 20);
   EXPECT_EQ(sq->m_pObject->m_Matrix[3][0], -50);
   RRenderContextDestroy(rc);
 }
 
-} // namespace
+}  // namespace

@@ -85,4 +85,4 @@ TEST(LiveInput, EveryKeyNameReadsBackInAScript) {
   }
 }
 
-} // namespace
+}  // namespace

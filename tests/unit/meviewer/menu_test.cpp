@@ -18,7 +18,7 @@ void MEAPI OnValue(MeReal v) { gValues.push_back(double(v)); }
 void MEAPI OnToggle(MeBool on) { gToggles.push_back(on); }
 
 class Menus : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     gValues.clear(), gToggles.clear();
     rc = MakeContext("prog -null");
@@ -49,11 +49,11 @@ TEST_F(Menus, Action1KeyOpensAndClosesTheDefaultMenu) {
 TEST_F(Menus, ValuesStepWithinBoundsAndCallBackOnChange) {
   using namespace karma::viewer;
   RMenuDisplay(main);
-  Tap(kKeyDown); // friction
-  Tap(kKeyRight), Tap(kKeyRight), Tap(kKeyRight); // 0.75, 1, stays 1
-  Tap(kKeyLeft);                                  // 0.75
+  Tap(kKeyDown);                                   // friction
+  Tap(kKeyRight), Tap(kKeyRight), Tap(kKeyRight);  // 0.75, 1, stays 1
+  Tap(kKeyLeft);                                   // 0.75
   EXPECT_EQ(gValues, (std::vector<double>{0.75, 1, 0.75}));
-  Tap(kKeyUp); // gravity
+  Tap(kKeyUp);  // gravity
   Tap(kKeyReturn), Tap(kKeyLeft);
   EXPECT_EQ(gToggles, (std::vector<int>{0, 1}));
 }
@@ -61,14 +61,14 @@ TEST_F(Menus, ValuesStepWithinBoundsAndCallBackOnChange) {
 TEST_F(Menus, SubmenusOpenWithReturnAndEscapeGoesBack) {
   using namespace karma::viewer;
   RMenuDisplay(main);
-  Tap(kKeyUp); // wraps to the last entry: "more"
+  Tap(kKeyUp);  // wraps to the last entry: "more"
   Tap(kKeyReturn);
   EXPECT_EQ(Shown(), sub);
   Tap(kKeyLeft);
   EXPECT_EQ(gValues, (std::vector<double>{-5}));
   Tap(kKeyEscape);
   EXPECT_EQ(Shown(), main);
-  EXPECT_FALSE(rc->m_pPrivate->quit); // Escape closed a menu, not the program
+  EXPECT_FALSE(rc->m_pPrivate->quit);  // Escape closed a menu, not the program
   Tap(kKeyEscape);
   EXPECT_EQ(Shown(), nullptr);
   Tap(kKeyEscape);
@@ -81,11 +81,11 @@ TEST_F(Menus, DestroyingAMenuDetachesItEverywhere) {
   EXPECT_EQ(Shown(), nullptr);
   RMenuDisplay(main);
   Tap(karma::viewer::kKeyUp);
-  Tap(karma::viewer::kKeyReturn); // the submenu entry now does nothing
+  Tap(karma::viewer::kKeyReturn);  // the submenu entry now does nothing
   EXPECT_EQ(Shown(), main);
   RMenuDestroy(main);
   EXPECT_EQ(rc->m_pPrivate->defaultMenu, nullptr);
-  Tap(karma::viewer::kKeyTab); // no default menu: nothing opens
+  Tap(karma::viewer::kKeyTab);  // no default menu: nothing opens
   EXPECT_EQ(Shown(), nullptr);
 }
 
@@ -101,22 +101,22 @@ TEST_F(Menus, AnAction1CallbackTakesTheKeyFromTheMenu) {
 TEST_F(Menus, OverlayShowsTitleAndEveryEntry) {
   RMenuDisplay(main);
   const std::vector<RGraphic *> g = karma::viewer::MenuOverlay(rc);
-  EXPECT_EQ(g.size(), 1u + 1u + 3u); // panel, title, three entries
+  EXPECT_EQ(g.size(), 1u + 1u + 3u);  // panel, title, three entries
   for (RGraphic *x : g) RGraphicDestroy(x);
-  EXPECT_EQ(rc->m_pRG_First2D, nullptr); // nothing left in the program's list
+  EXPECT_EQ(rc->m_pRG_First2D, nullptr);  // nothing left in the program's list
 }
 
 TEST(MenusBadInput, NullsAndBadRangesWarn) {
   Messages m;
   RRender *rc = MakeContext("prog -null");
   RMenu *menu = RMenuCreate(rc, "m");
-  RMenuAddValueEntry(menu, "bad", OnValue, 0, 1, 0.1, 0.5); // lo > hi
+  RMenuAddValueEntry(menu, "bad", OnValue, 0, 1, 0.1, 0.5);  // lo > hi
   RMenuAddSubmenuEntry(menu, "self", menu);
   RMenuDisplay(nullptr);
   EXPECT_EQ(RMenuCreate(nullptr, "x"), nullptr);
   RMenuDestroy(nullptr);
   EXPECT_GE(Messages::Warnings().size(), 4u) << Messages::All();
-  RRenderContextDestroy(rc); // frees the menu
+  RRenderContextDestroy(rc);  // frees the menu
 }
 
 void MEAPI PrintValue(MeReal v) { std::fprintf(stderr, "value %g\n", double(v)); }
@@ -134,4 +134,4 @@ TEST(MenusDeathTest, AScriptChangesAMenuValueInsideRRun) {
       ::testing::ExitedWithCode(0), "value 1.5\nvalue 3\n$");
 }
 
-} // namespace
+}  // namespace

@@ -60,7 +60,7 @@ void MEAPI ProfiledTick(RRender *, void *) {
 
 RMainLoopCallBack gTick = nullptr;
 
-std::string gModel; // -model FILE for the ase scene
+std::string gModel;  // -model FILE for the ase scene
 
 bool Build(const std::string &s) {
   Place(tm[0], -1.1, 0.4, 0, 0, 0);
@@ -91,7 +91,7 @@ bool Build(const std::string &s) {
     AcmeReal o[3] = {-2, -1, 0}, e[3] = {2, 1, 0}, o2[3] = {-2, 1, 0}, e2[3] = {0, 0, 0};
     RGraphicLineCreate(rc, o, e, kRed, nullptr);
     RGraphic *l = RGraphicLineCreate(rc, o, e, kGreen, nullptr);
-    RGraphicLineMoveEnds(l, o2, e2); // the moved end must show
+    RGraphicLineMoveEnds(l, o2, e2);  // the moved end must show
   } else if (s == "nativeline") {
     const AcmeReal s0[3] = {-2, -1, 0}, e0[3] = {2, 1, 0}, c[4] = {1, 1, 0, 1}, c2[4] = {0, 1, 1, 1};
     const AcmeReal s1[3] = {-2, 1, 0}, e1[3] = {2, -1, 0};
@@ -120,7 +120,8 @@ bool Build(const std::string &s) {
     RLightSwitchOff(rc, kRDirect2);
     RLightSwitchOn(rc, kRPoint);
     rc->m_PointLight.m_Position[0] = 0, rc->m_PointLight.m_Position[1] = 1.5f, rc->m_PointLight.m_Position[2] = 0;
-    rc->m_PointLight.m_rgbDiffuse[0] = 0.3f, rc->m_PointLight.m_rgbDiffuse[1] = 0.4f, rc->m_PointLight.m_rgbDiffuse[2] = 1;
+    rc->m_PointLight.m_rgbDiffuse[0] = 0.3f, rc->m_PointLight.m_rgbDiffuse[1] = 0.4f,
+    rc->m_PointLight.m_rgbDiffuse[2] = 1;
     rc->m_PointLight.m_AttenuationConstant = 0.2f;
     rc->m_PointLight.m_AttenuationQuadratic = 0.3f;
     Place(tm[1], 0, 0, -2, 0, 0);
@@ -150,7 +151,8 @@ bool Build(const std::string &s) {
     }
     if (s == "light_point") {
       RLightSwitchOn(rc, kRPoint);
-      rc->m_PointLight.m_Position[0] = 1.5f, rc->m_PointLight.m_Position[1] = 0.5f, rc->m_PointLight.m_Position[2] = 1.5f;
+      rc->m_PointLight.m_Position[0] = 1.5f, rc->m_PointLight.m_Position[1] = 0.5f,
+      rc->m_PointLight.m_Position[2] = 1.5f;
       rc->m_PointLight.m_AttenuationConstant = 0.5f;
       rc->m_PointLight.m_AttenuationLinear = 0.2f;
       rc->m_PointLight.m_AttenuationQuadratic = 0.2f;
@@ -210,9 +212,7 @@ bool Build(const std::string &s) {
 
 void MEAPI_CDECL Cleanup() { RRenderContextDestroy(rc); }
 
-
-
-} // namespace
+}  // namespace
 
 int main(int argc, const char *argv[]) {
   MeCommandLineOptions *opts = MeCommandLineOptionsCreate(argc, argv);
@@ -233,8 +233,7 @@ int main(int argc, const char *argv[]) {
     return 2;
   }
   // An empty trajectory: one frame, no bodies.
-  KarmaTrajectoryInfo info = {"meviewer", sceneName.c_str(), backend.c_str(), "one still frame",
-                              (MeReal)1 / 60, 0};
+  KarmaTrajectoryInfo info = {"meviewer", sceneName.c_str(), backend.c_str(), "one still frame", (MeReal)1 / 60, 0};
   KarmaTrajectoryWriter *w = KarmaTrajectoryWriterCreate(path.empty() ? nullptr : path.c_str(), &info);
   const bool ok = w && KarmaTrajectoryWriterBeginFrame(w, 0, 0) && KarmaTrajectoryWriterEndFrame(w);
   if (!KarmaTrajectoryWriterDestroy(w) || !ok) {

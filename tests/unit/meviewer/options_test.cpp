@@ -19,7 +19,7 @@ struct Parsed {
   bool ok;
   ViewerOptions options;
   std::string error;
-  std::vector<std::string> left; // arguments left after eating
+  std::vector<std::string> left;  // arguments left after eating
 };
 
 Parsed Parse(const char *commandLine, const char *overrides = nullptr, bool eat = true) {
@@ -82,12 +82,12 @@ TEST(Options, OverridesWin) {
 }
 
 TEST(Options, MalformedValuesAreRefusedNamingTheOption) {
-  Messages m; // the command-line reader warns too
+  Messages m;  // the command-line reader warns too
   struct Case {
     const char *line, *mention;
   } cases[] = {{"prog -frames abc", "-frames"}, {"prog -frames -2", "-frames"}, {"prog -every 0", "-every"},
-               {"prog -size 10x10", "-size"},    {"prog -size 320", "-size"},    {"prog -size x240", "-size"},
-               {"prog -out", "-out"},            {"prog -frames", "-frames"}};
+               {"prog -size 10x10", "-size"},   {"prog -size 320", "-size"},    {"prog -size x240", "-size"},
+               {"prog -out", "-out"},           {"prog -frames", "-frames"}};
   for (const Case &c : cases) {
     const Parsed p = Parse(c.line);
     EXPECT_FALSE(p.ok) << c.line;
@@ -107,7 +107,8 @@ TEST(Options, MisspeltOptionsAreNamedWithASuggestion) {
   ASSERT_NE(rc, nullptr);
   EXPECT_TRUE(Messages::Warned("unknown option '-frame' (did you mean -frames?")) << Messages::All();
   bool noted = false;
-  for (const std::string &i : Messages::Infos()) noted = noted || i.find("'-wibble' is not a viewer option") != std::string::npos;
+  for (const std::string &i : Messages::Infos())
+    noted = noted || i.find("'-wibble' is not a viewer option") != std::string::npos;
   EXPECT_TRUE(noted);
   EXPECT_FALSE(Messages::Warned("-platform"));
   RRenderContextDestroy(rc);
@@ -146,8 +147,8 @@ TEST(Options, OutputDirectoryIsCreated) {
 
 TEST(Options, HelpListsEveryOption) {
   const std::string help = karma::viewer::HelpText();
-  for (const char *o : {"-gl", "-d3d", "-null", "-bench", "-profile", "-frames", "-out", "-every", "-bmp", "-size",
-                        "-help"})
+  for (const char *o :
+       {"-gl", "-d3d", "-null", "-bench", "-profile", "-frames", "-out", "-every", "-bmp", "-size", "-help"})
     EXPECT_NE(help.find(std::string("  ") + o), std::string::npos) << o;
 }
 
@@ -155,10 +156,10 @@ TEST(OptionsDeathTest, HelpPrintsAndExitsWithZero) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(
       {
-        dup2(2, 1); // the help goes to stdout; let the matcher see it
+        dup2(2, 1);  // the help goes to stdout; let the matcher see it
         MakeContext("prog -help");
       },
       ::testing::ExitedWithCode(0), "-frames N");
 }
 
-} // namespace
+}  // namespace

@@ -35,7 +35,7 @@ TEST(PerformanceBar, OnePerContextAndSegmentsFromTheLastFrame) {
       lo = std::min(lo, r->m_pVertices[i].m_X), hi = std::max(hi, r->m_pVertices[i].m_X);
     return hi - lo;
   };
-  const float perMs = 300.0f / (1000.0f / 60.0f); // the bar is 300 units for 1/60 s
+  const float perMs = 300.0f / (1000.0f / 60.0f);  // the bar is 300 units for 1/60 s
   EXPECT_NEAR(width(g[1]), 3 * perMs, 1e-3);
   EXPECT_NEAR(width(g[2]), 5 * perMs, 1e-3);
   EXPECT_NEAR(width(g[3]), 1 * perMs, 1e-3);
@@ -53,4 +53,4 @@ TEST(PerformanceBar, NullContextWarns) {
   EXPECT_TRUE(Messages::Warned("RPerformanceBarCreate"));
 }
 
-} // namespace
+}  // namespace

@@ -41,7 +41,7 @@ void RunChild(const std::string &commandLine, int quitAt = -1) {
 }
 
 class RunDeathTest : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override { GTEST_FLAG_SET(death_test_style, "threadsafe"); }
 };
 
@@ -123,4 +123,4 @@ TEST_F(RunDeathTest, GuideTickAndRunFormsFromCxx) {
   EXPECT_EXIT(RRun(MakeContext("prog -null -frames 2"), Tick, &n), ::testing::ExitedWithCode(0), "");
 }
 
-} // namespace
+}  // namespace

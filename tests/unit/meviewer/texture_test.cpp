@@ -40,7 +40,7 @@ std::vector<std::uint8_t> MakeBmp(int width, int height, int bpp = 24, std::uint
     const int fileRow = height < 0 ? y : h - 1 - y;
     for (int x = 0; x < width && bpp == 24; ++x) {
       std::uint8_t *p = b.data() + 54 + stride * std::size_t(fileRow) + 3 * std::size_t(x);
-      p[0] = 7, p[1] = std::uint8_t(y), p[2] = std::uint8_t(x); // B, G, R
+      p[0] = 7, p[1] = std::uint8_t(y), p[2] = std::uint8_t(x);  // B, G, R
     }
   }
   return b;
@@ -59,7 +59,7 @@ TEST(Bmp, Reads24Bit128And256BottomUpAndTopDown) {
       EXPECT_EQ(img.width, size);
       EXPECT_EQ(img.height, size);
       EXPECT_EQ(img.channels, 3);
-      const std::uint8_t *p = img.pixels.data() + (std::size_t(5) * std::size_t(size) + 9) * 3; // (9, 5)
+      const std::uint8_t *p = img.pixels.data() + (std::size_t(5) * std::size_t(size) + 9) * 3;  // (9, 5)
       EXPECT_EQ(p[0], 9);
       EXPECT_EQ(p[1], 5);
       EXPECT_EQ(p[2], 7);
@@ -70,13 +70,11 @@ TEST(Bmp, RefusesWrongSizesDepthsCompressionAndNonBmp) {
   struct Case {
     std::vector<std::uint8_t> bytes;
     const char *reason;
-  } cases[] = {{MakeBmp(64, 64), "must be 128x128 or 256x256"},
-               {MakeBmp(128, 256), "must be 128x128 or 256x256"},
-               {MakeBmp(128, 128, 32), "must be 24-bit"},
-               {MakeBmp(128, 128, 8), "must be 24-bit"},
-               {MakeBmp(128, 128, 24, 1), "uncompressed"},
-               {std::vector<std::uint8_t>{'P', 'N', 'G', 0}, "not a BMP"},
-               {std::vector<std::uint8_t>{}, "not a BMP"}};
+  } cases[] = {
+      {MakeBmp(64, 64), "must be 128x128 or 256x256"}, {MakeBmp(128, 256), "must be 128x128 or 256x256"},
+      {MakeBmp(128, 128, 32), "must be 24-bit"},       {MakeBmp(128, 128, 8), "must be 24-bit"},
+      {MakeBmp(128, 128, 24, 1), "uncompressed"},      {std::vector<std::uint8_t>{'P', 'N', 'G', 0}, "not a BMP"},
+      {std::vector<std::uint8_t>{}, "not a BMP"}};
   for (const Case &c : cases) {
     Image img;
     std::string error;
@@ -136,7 +134,7 @@ TEST(Textures, IdsAreSharedByNameAndLimitedTo25) {
   RGraphic *g = RGraphicCreateEmpty(3);
   g->m_pObject->m_nTextureID = 2;
   EXPECT_EQ(RGraphicSetTexture(rc, g, extra), -1);
-  EXPECT_EQ(g->m_pObject->m_nTextureID, -1); // untextured fallback
+  EXPECT_EQ(g->m_pObject->m_nTextureID, -1);  // untextured fallback
   RGraphicDestroy(g);
   RRenderContextDestroy(rc);
 }
@@ -191,4 +189,4 @@ TEST(Textures, SearchPathStartsWithTheWorkingDirectory) {
   EXPECT_EQ(path[0], ".");
 }
 
-} // namespace
+}  // namespace

@@ -16,7 +16,7 @@ using viewer_test::TempDir;
 namespace {
 
 class PathGuard {
-public:
+ public:
   explicit PathGuard(const std::string &path) : old_(std::getenv("PATH") ? std::getenv("PATH") : "") {
     ::setenv("PATH", path.c_str(), 1);
   }
@@ -24,7 +24,7 @@ public:
   PathGuard(const PathGuard &) = delete;
   PathGuard &operator=(const PathGuard &) = delete;
 
-private:
+ private:
   std::string old_;
 };
 
@@ -58,7 +58,7 @@ void MakeFakeFfmpeg(const TempDir &dir) {
 }
 
 class VideoDeathTest : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override { GTEST_FLAG_SET(death_test_style, "threadsafe"); }
 };
 
@@ -103,4 +103,4 @@ TEST_F(VideoDeathTest, AnMp4FromTheOutDirectoryKeepsTheFrames) {
   EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / "frame_00001.bmp"));
 }
 
-} // namespace
+}  // namespace

@@ -16,7 +16,7 @@ namespace viewer_test {
 
 // While alive, warnings and infos are recorded instead of printed.
 class Messages {
-public:
+ public:
   Messages() {
     Warnings().clear(), Infos().clear();
     prevWarning_ = MeSetWarningHandler(&OnWarning);
@@ -48,7 +48,7 @@ public:
     return s;
   }
 
-private:
+ private:
   static void MEAPI OnWarning(int, const char *m) { Warnings().emplace_back(m); }
   static void MEAPI OnInfo(int, const char *m) { Infos().emplace_back(m); }
   MeMessageHandler prevWarning_, prevInfo_;
@@ -67,11 +67,11 @@ inline RRender *MakeContext(const std::string &commandLine) {
 // child, which runs the test body again, finds the same directory. Removed
 // on destruction.
 class TempDir {
-public:
+ public:
   explicit TempDir(const std::string &tag) {
     const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::current_path() / "meviewer-scratch" /
-            (tag + "-" + (info ? std::string(info->name()) : "x"));
+    path_ =
+        std::filesystem::current_path() / "meviewer-scratch" / (tag + "-" + (info ? std::string(info->name()) : "x"));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -84,10 +84,10 @@ public:
   const std::filesystem::path &path() const { return path_; }
   std::string str() const { return path_.string(); }
 
-private:
+ private:
   std::filesystem::path path_;
 };
 
-} // namespace viewer_test
+}  // namespace viewer_test
 
 #endif

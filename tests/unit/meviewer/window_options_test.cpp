@@ -22,20 +22,24 @@ namespace {
 [[maybe_unused]] const int kNoDisplayForTheTests = ::unsetenv("DISPLAY");
 
 class DisplayGuard {
-public:
+ public:
   explicit DisplayGuard(const char *value) {
     if (const char *old = std::getenv("DISPLAY")) had_ = true, old_ = old;
-    if (value) ::setenv("DISPLAY", value, 1);
-    else ::unsetenv("DISPLAY");
+    if (value)
+      ::setenv("DISPLAY", value, 1);
+    else
+      ::unsetenv("DISPLAY");
   }
   ~DisplayGuard() {
-    if (had_) ::setenv("DISPLAY", old_.c_str(), 1);
-    else ::unsetenv("DISPLAY");
+    if (had_)
+      ::setenv("DISPLAY", old_.c_str(), 1);
+    else
+      ::unsetenv("DISPLAY");
   }
   DisplayGuard(const DisplayGuard &) = delete;
   DisplayGuard &operator=(const DisplayGuard &) = delete;
 
-private:
+ private:
   bool had_ = false;
   std::string old_;
 };
@@ -97,4 +101,4 @@ TEST(WindowOptions, NoDisplayFallsBackToOffscreenWithAWarning) {
   RRenderContextDestroy(rc);
 }
 
-} // namespace
+}  // namespace

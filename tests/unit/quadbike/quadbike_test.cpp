@@ -72,9 +72,7 @@ class QuadBike : public ::testing::Test {
     return std::atan2(-(double)tm[2], (double)tm[0]);
   }
   // The sprung weight the four springs carry: everything but the wheels.
-  static double SprungWeight() {
-    return (kChassis + kLimb /* handlebars */ + int(NUM_LIMBS) * kLimb) * kG;
-  }
+  static double SprungWeight() { return (kChassis + kLimb /* handlebars */ + int(NUM_LIMBS) * kLimb) * kG; }
 };
 
 TEST_F(QuadBike, RestsOnItsFourWheelsAtThePredictedRideHeight) {
@@ -98,10 +96,10 @@ TEST_F(QuadBike, RestsOnItsFourWheelsAtThePredictedRideHeight) {
     EXPECT_GT(h, 0.0) << "wheel " << i << " carries load";
   }
   Position(quadBike.chassisBody, chassis);
-  std::printf("sprung weight %.1f N: predicted spring compression %.5f m, mean %.5f m\n",
-              SprungWeight(), sag, meanHeight);
-  std::printf("chassis ride height: predicted %.5f m, measured %.5f m, speed %.2e m/s\n",
-              predictedY, chassis[1], Speed());
+  std::printf("sprung weight %.1f N: predicted spring compression %.5f m, mean %.5f m\n", SprungWeight(), sag,
+              meanHeight);
+  std::printf("chassis ride height: predicted %.5f m, measured %.5f m, speed %.2e m/s\n", predictedY, chassis[1],
+              Speed());
   EXPECT_NEAR(meanHeight, sag, 0.1 * sag);     // within 10 % (1.6 mm)
   EXPECT_NEAR(chassis[1], predictedY, 0.003);  // within 3 mm, contact give included
   EXPECT_LT(Speed(), 0.01);
@@ -123,9 +121,10 @@ TEST_F(QuadBike, MovesForwardUnderThrottle) {
   const double mass = kChassis + 4 * kWheel + kLimb + int(NUM_LIMBS) * kLimb + 4 * kWheelI / (r * r);
   const double predicted = force / mass * seconds;
   const double v = ForwardSpeed();
-  std::printf("throttle 0.6 for %.0f s: forward speed %.3f m/s (predicted %.3f), moved %.3f m in x, "
-              "%.4f m in z\n",
-              seconds, v, predicted, end[0] - start[0], end[2] - start[2]);
+  std::printf(
+      "throttle 0.6 for %.0f s: forward speed %.3f m/s (predicted %.3f), moved %.3f m in x, "
+      "%.4f m in z\n",
+      seconds, v, predicted, end[0] - start[0], end[2] - start[2]);
   EXPECT_NEAR(v, predicted, 0.05 * predicted);
   EXPECT_GT(end[0] - start[0], 0.4 * predicted * seconds);
   EXPECT_LT(std::fabs(end[2] - start[2]), 0.05);  // straight ahead
@@ -186,8 +185,7 @@ double SteeredTurn(double steering, double *yawRate, double *kinematic, double *
   }
   // The kinematic yaw rate of a bike rolling without slip: v tan(phi) / L
   // (L = 1.25 m, the wheelbase; phi the front wheels' mean steering angle).
-  const double wheelbase =
-      (double)(quadBikeData.wheelOffset[FRONT_LEFT][0] - quadBikeData.wheelOffset[BACK_LEFT][0]);
+  const double wheelbase = (double)(quadBikeData.wheelOffset[FRONT_LEFT][0] - quadBikeData.wheelOffset[BACK_LEFT][0]);
   MeVector3 v, w;
   MdtBodyGetLinearVelocity(quadBike.chassisBody, v);
   MdtBodyGetAngularVelocity(quadBike.chassisBody, w);
@@ -197,10 +195,10 @@ double SteeredTurn(double steering, double *yawRate, double *kinematic, double *
   *angleR = -(double)MdtCarWheelGetSteeringAngle(quadBike.wheelJoint[FRONT_RIGHT]);
   *yawRate = (double)w[1];
   *kinematic = (double)MeVector3Magnitude(v) * std::tan((*angleL + *angleR) / 2) / wheelbase;
-  std::printf("steering %+.0f for 1.5 s, now at %.2f m/s: heading turned %+.3f rad; yaw rate %+.3f rad/s "
-              "(rolling without slip: %+.3f); front wheels steered %+.3f and %+.3f rad (command %+.1f)\n",
-              steering, (double)MeVector3Magnitude(v), turned, *yawRate, *kinematic, *angleL, *angleR,
-              0.5 * steering);
+  std::printf(
+      "steering %+.0f for 1.5 s, now at %.2f m/s: heading turned %+.3f rad; yaw rate %+.3f rad/s "
+      "(rolling without slip: %+.3f); front wheels steered %+.3f and %+.3f rad (command %+.1f)\n",
+      steering, (double)MeVector3Magnitude(v), turned, *yawRate, *kinematic, *angleL, *angleR, 0.5 * steering);
   QuadBikeDestroy();
   return turned;
 }
@@ -257,10 +255,11 @@ void RideKeepsTheRiderOn(int useTriList) {
   const MeReal *tm = (const MeReal *)MdtBodyGetTransformPtr(quadBike.chassisBody);
   MeVector3 v;
   MdtBodyGetLinearVelocity(quadBike.chassisBody, v);
-  std::printf("%s ride, 7 s: largest joint error %.5f m (at %.2f s); head at least %.3f m above the "
-              "chassis; bike ends at (%.2f, %.2f, %.2f), up axis y %.3f, speed %.2e m/s\n",
-              useTriList ? "height field" : "flat", worst, worstAt, minHead, (double)p[0], (double)p[1],
-              (double)p[2], (double)tm[5], (double)MeVector3Magnitude(v));
+  std::printf(
+      "%s ride, 7 s: largest joint error %.5f m (at %.2f s); head at least %.3f m above the "
+      "chassis; bike ends at (%.2f, %.2f, %.2f), up axis y %.3f, speed %.2e m/s\n",
+      useTriList ? "height field" : "flat", worst, worstAt, minHead, (double)p[0], (double)p[1], (double)p[2],
+      (double)tm[5], (double)MeVector3Magnitude(v));
   // On the flat the brakes hold the bike. On a slope it creeps: the wheel
   // contacts' friction is the guide's slip model (PASTE_02: force = slip
   // velocity / slip), which yields in proportion to the load.

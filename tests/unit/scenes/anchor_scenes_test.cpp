@@ -14,9 +14,8 @@ using karma::scenes::SceneFigures;
 
 SceneFigures runAndReport(AnchorScene &scene) {
   const SceneFigures f = scene.run();
-  std::printf("%s: %d steps, finite %d, max speed %.2f m/s, penetration %.2f mm; %s\n",
-              scene.name(), f.steps, f.finite ? 1 : 0, f.maxSpeed, f.penetration * 1e3,
-              f.detail.c_str());
+  std::printf("%s: %d steps, finite %d, max speed %.2f m/s, penetration %.2f mm; %s\n", scene.name(), f.steps,
+              f.finite ? 1 : 0, f.maxSpeed, f.penetration * 1e3, f.detail.c_str());
   return f;
 }
 
@@ -94,9 +93,8 @@ TEST(AnchorScenes, Pile1000LandsWithNothingLost) {
   constexpr int kSteps = 150;
   for (int i = 0; i < kSteps; ++i) scene->step();
   const SceneFigures f = scene->finish();
-  std::printf("%s: %d of %d steps, finite %d, max speed %.2f m/s, penetration %.2f mm; %s\n",
-              scene->name(), f.steps, scene->steps(), f.finite ? 1 : 0, f.maxSpeed,
-              f.penetration * 1e3, f.detail.c_str());
+  std::printf("%s: %d of %d steps, finite %d, max speed %.2f m/s, penetration %.2f mm; %s\n", scene->name(), f.steps,
+              scene->steps(), f.finite ? 1 : 0, f.maxSpeed, f.penetration * 1e3, f.detail.c_str());
   EXPECT_EQ(f.steps, kSteps);
   EXPECT_TRUE(f.stable()) << f.detail;
   EXPECT_LE(f.penetration, 0.010);

@@ -50,8 +50,8 @@ Counts CountDuring(karma::scenes::AnchorScene &scene, int steps) {
 void ExpectNoAllocationOnceSettled(std::unique_ptr<karma::scenes::AnchorScene> scene, int settle) {
   for (int i = 0; i < settle; ++i) scene->step();
   const Counts c = CountDuring(*scene, 100);
-  std::printf("%s: %ld operator new and %ld MeMemoryAPI calls in 100 settled steps\n", scene->name(),
-              c.newCalls, c.memoryApiCalls);
+  std::printf("%s: %ld operator new and %ld MeMemoryAPI calls in 100 settled steps\n", scene->name(), c.newCalls,
+              c.memoryApiCalls);
   EXPECT_EQ(c.newCalls, 0);
   EXPECT_EQ(c.memoryApiCalls, 0);
 }

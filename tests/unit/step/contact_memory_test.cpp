@@ -8,11 +8,11 @@
 
 namespace {
 
+using karma_test::WarningCapture;
 using step_test::Contacts;
 using step_test::kG;
 using step_test::kH;
 using step_test::Scene;
-using karma_test::WarningCapture;
 
 // A 1 m box of `mass` kg resting on the ground, settled for `steps`.
 McdModelID RestingBox(Scene &s, MeReal mass, int steps) {

@@ -7,8 +7,8 @@
 
 namespace {
 
-using step_test::Scene;
 using karma_test::WarningCapture;
+using step_test::Scene;
 
 TEST(SolveWarnings, AnExactSolverAtItsCapWarnsOnceASecondNotOnceAStep) {
   Scene s;

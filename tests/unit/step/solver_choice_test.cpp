@@ -6,8 +6,8 @@
 
 namespace {
 
-using step_test::Scene;
 using karma_test::WarningCapture;
+using step_test::Scene;
 
 // A column of `boxes` 1 m cubes standing at x, settled for a second.
 void Column(Scene &s, int boxes, MeReal x) {

@@ -48,8 +48,7 @@ TEST(Speculative, TheStackWithMillimetreGapsSettlesCalmly) {
     fastestDown = std::max(fastestDown, -(double)v[1]);
     if (i > 30) fastestUp = std::max(fastestUp, (double)v[1]);
   }
-  std::printf("stack21, first 3 s: top box fastest %.3f m/s down; after 0.5 s %.3f m/s up\n",
-              fastestDown, fastestUp);
+  std::printf("stack21, first 3 s: top box fastest %.3f m/s down; after 0.5 s %.3f m/s up\n", fastestDown, fastestUp);
   EXPECT_GT(fastestDown, 0.62);
   EXPECT_LT(fastestDown, 0.72);
   EXPECT_LT(fastestUp, 0.05);
@@ -72,8 +71,7 @@ TEST(Speculative, AFastBallDoesNotPassAThinWall) {
     Scene::position(ball, p);
     farthest = std::max(farthest, p[0]);
   }
-  std::printf("ball at 100 m/s: farthest centre x %.4f m (wall face at %.3f)\n", (double)farthest,
-              (double)face);
+  std::printf("ball at 100 m/s: farthest centre x %.4f m (wall face at %.3f)\n", (double)farthest, (double)face);
   EXPECT_LT(farthest, face - r + (MeReal)0.005);
   MeVector3 v;
   Scene::velocity(ball, v);

@@ -67,8 +67,7 @@ struct Scene {
 inline int Contacts(McdModelID m, MdtContactID *out, int max) {
   MdtBodyID b = McdModelGetBody(m);
   int n = 0;
-  for (MdtContactID c = MdtBodyGetFirstContact(b); c && n < max; c = MdtBodyGetNextContact(b, c))
-    out[n++] = c;
+  for (MdtContactID c = MdtBodyGetFirstContact(b); c && n < max; c = MdtBodyGetNextContact(b, c)) out[n++] = c;
   return n;
 }
 

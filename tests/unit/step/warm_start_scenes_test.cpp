@@ -28,8 +28,7 @@ TEST(WarmStart, PgsAtFiftySweepsKeepsTheTwentyOneBoxStackStanding) {
   MdtWorldSetKeaMethod(scene->world(), MdtKeaMethodPGS);
   MdtWorldSetKeaMaxIterations(scene->world(), 50);
   const karma::scenes::SceneFigures f = scene->run();  // 1200 steps: 20 s
-  std::printf("stack21 with PGS, 50 sweeps: %s, penetration %.2f mm\n", f.detail.c_str(),
-              f.penetration * 1e3);
+  std::printf("stack21 with PGS, 50 sweeps: %s, penetration %.2f mm\n", f.detail.c_str(), f.penetration * 1e3);
   EXPECT_TRUE(f.stable()) << f.detail;
   EXPECT_LT(TopDrift(f), 0.005);
   EXPECT_LT(f.penetration, 0.01);

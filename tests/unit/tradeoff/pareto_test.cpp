@@ -52,8 +52,8 @@ TEST(TradeoffPareto, RowsFrontsAndTheirSummary) {
     if (pgs > 0) r.setting.method = MdtKeaMethodPGS, r.setting.iterations = pgs;
     return r;
   };
-  std::vector<ResultRow> rows = {row("a", 10, 1.0, 1.0 / 60, 10), row("a", 12, 0.9, 1.0 / 60, 0),
-                                 row("a", 20, 0.05, 1.0 / 120, 10), row("a", 50, 0.04, 1.0 / 120, 0),
+  std::vector<ResultRow> rows = {row("a", 10, 1.0, 1.0 / 60, 10),       row("a", 12, 0.9, 1.0 / 60, 0),
+                                 row("a", 20, 0.05, 1.0 / 120, 10),     row("a", 50, 0.04, 1.0 / 120, 0),
                                  row("a", 1, 1e-6, 1.0 / 60, 0, "ode"), row("b", 1, 1e-6, 1.0 / 60, 0)};
   karma::tradeoff::MarkFronts(rows, "a");
   EXPECT_TRUE(rows[0].frontDrift && rows[1].frontDrift && rows[2].frontDrift && rows[3].frontDrift);

@@ -44,11 +44,35 @@ ResultRow SampleRow(double us, double drift, bool held) {
 std::string TempPath(const char *name) { return ::testing::TempDir() + name; }
 
 TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
-  const std::vector<std::string> expected = {
-      "scene", "precision", "engine", "setting", "solver", "epsilon", "gamma", "h", "tolerance", "cap", "repeats",
-      "us_per_step", "us_min", "us_max", "us_per_frame", "steps", "drift_m", "joint_error_m", "penetration_m", "energy_error_J",
-      "momentum_error_Ns", "residual", "unsolved_steps", "max_speed_mps", "scene_error", "held", "front_drift",
-      "front_scene", "detail"};
+  const std::vector<std::string> expected = {"scene",
+                                             "precision",
+                                             "engine",
+                                             "setting",
+                                             "solver",
+                                             "epsilon",
+                                             "gamma",
+                                             "h",
+                                             "tolerance",
+                                             "cap",
+                                             "repeats",
+                                             "us_per_step",
+                                             "us_min",
+                                             "us_max",
+                                             "us_per_frame",
+                                             "steps",
+                                             "drift_m",
+                                             "joint_error_m",
+                                             "penetration_m",
+                                             "energy_error_J",
+                                             "momentum_error_Ns",
+                                             "residual",
+                                             "unsolved_steps",
+                                             "max_speed_mps",
+                                             "scene_error",
+                                             "held",
+                                             "front_drift",
+                                             "front_scene",
+                                             "detail"};
   EXPECT_EQ(CsvColumns(), expected);
   const std::string path = TempPath("tradeoff_test.csv");
   std::vector<ResultRow> rows = {SampleRow(100, 0.01, true), SampleRow(50, 0.2, false)};
@@ -134,9 +158,10 @@ TEST(TradeoffReport, AMissingGnuplotIsFound) {
 
 TEST(TradeoffPeers, PeerBenchRowsGiveTheSceneError) {
   ResultRow r;
-  ASSERT_TRUE(ParsePeerRow("| car (300) | ode-step | 12.2 [12.0–13.1] | 1.00 | 0.89 | yes | v 16.100 m/s (analytic "
-                           "16.180), x 40.250 m (analytic 40.450), height 0.582 m | 16.10 | 1.2 |",
-                           r));
+  ASSERT_TRUE(
+      ParsePeerRow("| car (300) | ode-step | 12.2 [12.0–13.1] | 1.00 | 0.89 | yes | v 16.100 m/s (analytic "
+                   "16.180), x 40.250 m (analytic 40.450), height 0.582 m | 16.10 | 1.2 |",
+                   r));
   EXPECT_EQ(r.scene, "car");
   EXPECT_EQ(r.engine, "ode-step");
   EXPECT_DOUBLE_EQ(r.median(), 12.2);
@@ -144,22 +169,25 @@ TEST(TradeoffPeers, PeerBenchRowsGiveTheSceneError) {
   EXPECT_DOUBLE_EQ(r.high(), 13.1);
   EXPECT_TRUE(r.held);
   EXPECT_NEAR(r.sceneError, 0.2, 1e-9);
-  ASSERT_TRUE(ParsePeerRow("| stack21 (1200) | bullet | 1,921 [1,900–2,000] | 1.00 | 0.89 | **no**: check | top box "
-                           "drift 120.00 mm, height 6.0000 m | 3.10 | 1.2 |",
-                           r));
+  ASSERT_TRUE(
+      ParsePeerRow("| stack21 (1200) | bullet | 1,921 [1,900–2,000] | 1.00 | 0.89 | **no**: check | top box "
+                   "drift 120.00 mm, height 6.0000 m | 3.10 | 1.2 |",
+                   r));
   EXPECT_DOUBLE_EQ(r.median(), 1921);
   EXPECT_FALSE(r.held);
   // The top box starts at 6.17 m; closing the 20 gaps of 1 mm takes it to
   // 6.15 m: it sank 0.15 m more, more than its 0.12 m drift.
   EXPECT_NEAR(r.sceneError, 0.15, 1e-9);
-  ASSERT_TRUE(ParsePeerRow("| pile1000 (60 of 600) | ode-quickstep | 6,150 [6,000–6,200] | 0.16 | 1.00 | yes | lowest "
-                           "centre 0.250 m, farthest 4.10 m from the middle | 5.00 | 36.0 |",
-                           r));
+  ASSERT_TRUE(
+      ParsePeerRow("| pile1000 (60 of 600) | ode-quickstep | 6,150 [6,000–6,200] | 0.16 | 1.00 | yes | lowest "
+                   "centre 0.250 m, farthest 4.10 m from the middle | 5.00 | 36.0 |",
+                   r));
   EXPECT_NEAR(r.sceneError, 0.036, 1e-12);
   EXPECT_FALSE(ParsePeerRow("|---|---|---|---|---|---|---|---|---|", r));
-  EXPECT_FALSE(ParsePeerRow("| scene (steps) | engine | µs/step, median [range] | × ODE step | × ODE QuickStep | stable "
-                            "| scene figures | max speed (m/s) | penetration (mm) |",
-                            r));
+  EXPECT_FALSE(
+      ParsePeerRow("| scene (steps) | engine | µs/step, median [range] | × ODE step | × ODE QuickStep | stable "
+                   "| scene figures | max speed (m/s) | penetration (mm) |",
+                   r));
 }
 
 TEST(TradeoffPeers, StackClosureIsTheStartingGaps) {

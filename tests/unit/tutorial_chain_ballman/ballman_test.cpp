@@ -14,7 +14,7 @@ struct DollRun {
   double worstError = 0;  // m, largest joint error over every frame
   bool finite = true;
   MeVector3 torsoEnd = {0, 0, 0};
-  double boxMoved = 0;    // m, the largest distance a box ended from its start
+  double boxMoved = 0;  // m, the largest distance a box ended from its start
 };
 
 bool Finite(const MeVector3 v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
@@ -64,10 +64,10 @@ TEST(Ballman, TenBodiesNineJointsConnectedAtTheStart) {
 TEST(Ballman, FallsDownTheStairsInOnePieceWithEitherFrictionModel) {
   // 4 s: off the landing, down the five steps (and onto the floor).
   const DollRun cheap = RunDoll(false, 240), hq = RunDoll(true, 240);
-  std::printf("ballman cheap: joint error max %.2f mm; torso ends at (%.2f, %.2f, %.2f)\n",
-              cheap.worstError * 1e3, cheap.torsoEnd[0], cheap.torsoEnd[1], cheap.torsoEnd[2]);
-  std::printf("ballman high quality: joint error max %.2f mm; torso ends at (%.2f, %.2f, %.2f)\n",
-              hq.worstError * 1e3, hq.torsoEnd[0], hq.torsoEnd[1], hq.torsoEnd[2]);
+  std::printf("ballman cheap: joint error max %.2f mm; torso ends at (%.2f, %.2f, %.2f)\n", cheap.worstError * 1e3,
+              cheap.torsoEnd[0], cheap.torsoEnd[1], cheap.torsoEnd[2]);
+  std::printf("ballman high quality: joint error max %.2f mm; torso ends at (%.2f, %.2f, %.2f)\n", hq.worstError * 1e3,
+              hq.torsoEnd[0], hq.torsoEnd[1], hq.torsoEnd[2]);
   for (const DollRun *r : {&cheap, &hq}) {
     EXPECT_TRUE(r->finite);
     EXPECT_LT(r->worstError, 0.02);

@@ -25,8 +25,8 @@ struct Small {
 
 TEST(HeightField, SurfaceMatchesGridPointsAndIsPlanarInEachTriangle) {
   Small s;
-  EXPECT_FLOAT_EQ(HeightFieldHeightAt(&s.hf, 0, 0), 1);    // (1, 1), on the ridge
-  EXPECT_FLOAT_EQ(HeightFieldHeightAt(&s.hf, -2, 2), 0);   // (0, 2)
+  EXPECT_FLOAT_EQ(HeightFieldHeightAt(&s.hf, 0, 0), 1);        // (1, 1), on the ridge
+  EXPECT_FLOAT_EQ(HeightFieldHeightAt(&s.hf, -2, 2), 0);       // (0, 2)
   EXPECT_FLOAT_EQ(HeightFieldHeightAt(&s.hf, -1, -1.5), 0.5);  // half-way up the ridge's side
   EXPECT_FLOAT_EQ(HeightFieldHeightAt(&s.hf, 1, 0.5), 0.5);
   EXPECT_FLOAT_EQ(HeightFieldHeightAt(&s.hf, -50, 0), 0);  // clamped to the edge
@@ -83,8 +83,7 @@ TEST(HeightField, Terrain2IsTheGeneratedMap) {
   EXPECT_EQ(hf.spacing, 2);
   EXPECT_EQ(hf.originX, -63);
   // The flat start area at 2 m (one grey level is 15/255 = 0.059 m).
-  for (MeReal x = -4; x <= 4; x += 1)
-    EXPECT_NEAR(HeightFieldHeightAt(&hf, x, x / 2), 2, 0.06) << x;
+  for (MeReal x = -4; x <= 4; x += 1) EXPECT_NEAR(HeightFieldHeightAt(&hf, x, x / 2), 2, 0.06) << x;
   // Hills inside, a rim outside; slopes inside the rim below 25 degrees.
   MeVector3 mn, mx;
   HeightFieldGetBounds(&hf, mn, mx);
@@ -98,8 +97,8 @@ TEST(HeightField, Terrain2IsTheGeneratedMap) {
       for (int k = 0; k < 2; ++k)
         steepest = std::max(steepest, std::acos((double)hf.normals[2 * (iz * (hf.countX - 1) + ix) + k][1]));
     }
-  std::printf("terrain2: heights %.2f..%.2f m, steepest triangle inside the rim %.1f deg\n",
-              (double)mn[1], (double)mx[1], steepest * 180 / M_PI);
+  std::printf("terrain2: heights %.2f..%.2f m, steepest triangle inside the rim %.1f deg\n", (double)mn[1],
+              (double)mx[1], steepest * 180 / M_PI);
   EXPECT_LT(steepest * 180 / M_PI, 25);
   HeightFieldDestroy(&hf);
 }
@@ -139,8 +138,8 @@ TEST(HeightField, ASphereRestsOnTheTerrainAtTheFormulasHeight) {
     // Resting on the triangle below it: the centre is r from the plane of
     // that triangle, i.e. r / cos(slope) above the surface point below it.
     const MeReal below = HeightFieldHeightAt(&hf, p[0], p[2]);
-    std::printf("sphere at (%.2f, %.2f): centre %.4f m above the surface\n", (double)p[0],
-                (double)p[2], (double)(p[1] - below));
+    std::printf("sphere at (%.2f, %.2f): centre %.4f m above the surface\n", (double)p[0], (double)p[2],
+                (double)(p[1] - below));
     EXPECT_GT(p[1] - below, r - 0.01);
     EXPECT_LT(p[1] - below, r / std::cos(25 * M_PI / 180) + 0.01);
     // On the flat start area it stays put; on the slope it rolls (the

@@ -24,7 +24,7 @@ constexpr ToleranceFlag kFlags[] = {{"pos", Quantity::Position},
                                     {"linvel", Quantity::LinearVelocity},
                                     {"angvel", Quantity::AngularVelocity}};
 
-} // namespace
+}  // namespace
 
 Options ParseOptions(const std::vector<std::string> &args, unsigned groups) {
   Options o;
@@ -103,4 +103,4 @@ std::string OptionHelp() {
          "  --max-fraction F               fail if more than this fraction of pixels differ (0..1)\n";
 }
 
-} // namespace karma::golden::cli
+}  // namespace karma::golden::cli

@@ -22,9 +22,9 @@ struct Options {
   std::vector<std::string> positional;
   TrajectoryToleranceOverrides trajectory;
   ImageTolerances image = kDefaultImageTolerances;
-  std::string diffPath;   /* --diff */
-  std::string goldenDir;  /* --golden-dir */
-  std::string actualDir;  /* --actual-dir */
+  std::string diffPath;  /* --diff */
+  std::string goldenDir; /* --golden-dir */
+  std::string actualDir; /* --actual-dir */
 };
 
 /* Which option groups a subcommand accepts. */
@@ -36,6 +36,6 @@ Options ParseOptions(const std::vector<std::string> &args, unsigned groups);
 /* Option help text for the usage message. */
 std::string OptionHelp();
 
-} // namespace karma::golden::cli
+}  // namespace karma::golden::cli
 
 #endif

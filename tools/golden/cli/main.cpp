@@ -61,8 +61,8 @@ int CompareImage(const std::vector<std::string> &args) {
 }
 
 int Check(const std::vector<std::string> &args) {
-  const Options o = kg::cli::ParseOptions(
-      args, kg::cli::kTrajectoryOptions | kg::cli::kImageOptions | kg::cli::kCheckDirs);
+  const Options o =
+      kg::cli::ParseOptions(args, kg::cli::kTrajectoryOptions | kg::cli::kImageOptions | kg::cli::kCheckDirs);
   RequirePositional(o, 0, "only options (--golden-dir DIR --actual-dir DIR)");
   if (o.goldenDir.empty() || o.actualDir.empty()) throw UsageError("check needs --golden-dir and --actual-dir");
   kg::CheckOptions options;
@@ -101,7 +101,7 @@ int Defaults(const std::vector<std::string> &args) {
   return kMatch;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char **argv) {
   std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);

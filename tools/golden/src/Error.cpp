@@ -7,9 +7,9 @@ std::string Located(const std::string &source, int line, const std::string &prob
   if (line > 0) return source + ":" + std::to_string(line) + ": " + problem;
   return source + ": " + problem;
 }
-} // namespace
+}  // namespace
 
 TrajectoryFormatError::TrajectoryFormatError(const std::string &source, int line, const std::string &problem)
     : GoldenError(Located(source, line, problem)), line_(line) {}
 
-} // namespace karma::golden
+}  // namespace karma::golden

@@ -31,7 +31,7 @@ std::vector<std::string> GoldenImages(const fs::path &dir) {
   return names;
 }
 
-} // namespace
+}  // namespace
 
 CheckResult CheckAgainstGolden(const fs::path &goldenDir, const fs::path &actualDir, const CheckOptions &options) {
   CheckResult result;
@@ -99,10 +99,12 @@ CheckResult CheckAgainstGolden(const fs::path &goldenDir, const fs::path &actual
   else
     result.status = result.itemsFailed ? CheckStatus::Mismatch : CheckStatus::Match;
   o << "check: " << result.itemsChecked << " item(s) checked, " << result.itemsFailed << " failed: "
-    << (result.status == CheckStatus::Match ? "MATCH" : result.status == CheckStatus::Mismatch ? "MISMATCH" : "ERROR")
+    << (result.status == CheckStatus::Match      ? "MATCH"
+        : result.status == CheckStatus::Mismatch ? "MISMATCH"
+                                                 : "ERROR")
     << "\n";
   result.report = o.str();
   return result;
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden

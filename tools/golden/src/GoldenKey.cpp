@@ -18,7 +18,7 @@ void ValidatePart(const std::string &value, const char *what) {
                       "': use letters, digits, '_', '-' and '.' only");
 }
 
-} // namespace
+}  // namespace
 
 std::string FrameFileName(long frame) {
   char name[48];
@@ -37,4 +37,4 @@ std::filesystem::path GoldenKey::RelativeDirectory() const {
   return std::filesystem::path(program) / step / (backend + "-" + std::string(PrecisionName(precision)));
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden

@@ -12,7 +12,8 @@ namespace karma::golden {
 
 Image LoadPng(const std::filesystem::path &path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw GoldenError("cannot read image " + path.string() + ": no such file");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw GoldenError("cannot read image " + path.string() + ": no such file");
   int w = 0, h = 0, channels = 0;
   std::unique_ptr<stbi_uc, void (*)(void *)> pixels(stbi_load(path.string().c_str(), &w, &h, &channels, 4),
                                                     stbi_image_free);
@@ -33,4 +34,4 @@ void WritePng(const std::filesystem::path &path, const Image &image) {
     throw GoldenError("cannot write image " + path.string());
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden

@@ -18,7 +18,7 @@ int ChannelDifference(const std::uint8_t *e, const std::uint8_t *a) {
   return d;
 }
 
-} // namespace
+}  // namespace
 
 ImageComparison CompareImages(const Image &expected, const Image &actual, const ImageTolerances &tolerances) {
   ImageComparison c;
@@ -119,4 +119,4 @@ std::string ReportText(const ImageComparison &c, const std::string &expectedName
   return o.str();
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden

@@ -20,7 +20,8 @@ struct KarmaTrajectoryWriter {
 namespace {
 
 /* Runs `f` on a healthy writer; records the first error. */
-template <class F> MeBool Guard(KarmaTrajectoryWriter *w, F &&f) {
+template <class F>
+MeBool Guard(KarmaTrajectoryWriter *w, F &&f) {
   if (!w || !w->error.empty() || !w->writer) return FALSE;
   try {
     f(*w->writer);
@@ -33,7 +34,7 @@ template <class F> MeBool Guard(KarmaTrajectoryWriter *w, F &&f) {
   return FALSE;
 }
 
-} // namespace
+}  // namespace
 
 KarmaTrajectoryWriter *MEAPI KarmaTrajectoryWriterCreate(const char *path, const KarmaTrajectoryInfo *info) {
   auto *w = new (std::nothrow) KarmaTrajectoryWriter;
@@ -72,9 +73,8 @@ MeBool MEAPI KarmaTrajectoryWriterAddBody(KarmaTrajectoryWriter *w, const MeReal
     w->error = "KarmaTrajectoryWriterAddBody: NULL array";
     return FALSE;
   }
-  return Guard(w, [&](karma::golden::TrajectoryWriter &t) {
-    t.AddBody(position, quaternion, linearVelocity, angularVelocity);
-  });
+  return Guard(
+      w, [&](karma::golden::TrajectoryWriter &t) { t.AddBody(position, quaternion, linearVelocity, angularVelocity); });
 }
 
 MeBool MEAPI KarmaTrajectoryWriterEndFrame(KarmaTrajectoryWriter *w) {

@@ -37,4 +37,4 @@ std::optional<double> ParseReal(std::string_view text, Precision precision) noex
   return d;
 }
 
-} // namespace karma::golden::detail
+}  // namespace karma::golden::detail

@@ -25,6 +25,6 @@ inline double RoundTo(double value, Precision precision) noexcept {
   return precision == Precision::Single ? static_cast<double>(static_cast<float>(value)) : value;
 }
 
-} // namespace karma::golden::detail
+}  // namespace karma::golden::detail
 
 #endif

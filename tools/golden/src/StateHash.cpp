@@ -47,10 +47,14 @@ std::optional<std::uint64_t> ParseHash(std::string_view text) noexcept {
   std::uint64_t hash = 0;
   for (char c : text.substr(2)) {
     int digit;
-    if (c >= '0' && c <= '9') digit = c - '0';
-    else if (c >= 'a' && c <= 'f') digit = c - 'a' + 10;
-    else if (c >= 'A' && c <= 'F') digit = c - 'A' + 10;
-    else return std::nullopt;
+    if (c >= '0' && c <= '9')
+      digit = c - '0';
+    else if (c >= 'a' && c <= 'f')
+      digit = c - 'a' + 10;
+    else if (c >= 'A' && c <= 'F')
+      digit = c - 'A' + 10;
+    else
+      return std::nullopt;
     hash = (hash << 4) | static_cast<std::uint64_t>(digit);
   }
   return hash;
@@ -66,4 +70,4 @@ std::uint64_t HashTrajectory(const Trajectory &trajectory, std::vector<std::uint
   return hash.Value();
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden

@@ -16,8 +16,7 @@ namespace {
 /* |a - b| treating equal values (also infinities) as 0 and NaN against a number as infinite. */
 double Difference(double actual, double expected) {
   if (actual == expected) return 0.0;
-  if (std::isnan(actual) || std::isnan(expected))
-    return (std::isnan(actual) && std::isnan(expected)) ? 0.0 : HUGE_VAL;
+  if (std::isnan(actual) || std::isnan(expected)) return (std::isnan(actual) && std::isnan(expected)) ? 0.0 : HUGE_VAL;
   return std::fabs(actual - expected);
 }
 
@@ -25,7 +24,10 @@ std::string FrameList(const Trajectory &t) {
   std::string s;
   const std::size_t n = t.frames.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (n > 8 && i == 4) { s += " ..."; i = n - 3; }
+    if (n > 8 && i == 4) {
+      s += " ...";
+      i = n - 3;
+    }
     s += ' ';
     s += std::to_string(t.frames[i].index);
   }
@@ -112,7 +114,7 @@ const char *ComponentName(Quantity q, int i) {
   return q == Quantity::Quaternion ? wxyz[i & 3] : xyz[i < 3 ? i : 0];
 }
 
-} // namespace
+}  // namespace
 
 TrajectoryComparison CompareTrajectories(const Trajectory &expected, const Trajectory &actual,
                                          const TrajectoryTolerances &tolerances) {
@@ -185,7 +187,8 @@ std::string ReportText(const TrajectoryComparison &c, const std::string &expecte
     o << "  largest |actual - expected| per body over the run (frame in brackets, * = beyond tolerance):\n";
     auto row = [&o](const std::string &body, const std::array<std::string, kQuantityCount> &cells) {
       std::string line = "    " + std::string(body.size() < 6 ? 6 - body.size() : 0, ' ') + body;
-      for (const std::string &cell : cells) line += "  " + cell + std::string(cell.size() < 24 ? 24 - cell.size() : 0, ' ');
+      for (const std::string &cell : cells)
+        line += "  " + cell + std::string(cell.size() < 24 ? 24 - cell.size() : 0, ' ');
       while (!line.empty() && line.back() == ' ') line.pop_back();
       o << line << "\n";
     };
@@ -194,7 +197,8 @@ std::string ReportText(const TrajectoryComparison &c, const std::string &expecte
       const BodyDeviation &d = c.deviations[b];
       std::array<std::string, kQuantityCount> cells;
       for (int q = 0; q < kQuantityCount; ++q)
-        cells[q] = Num(d.maxDifference[q]) + (d.withinTolerance[q] ? "" : "*") + " [" + std::to_string(d.atFrame[q]) + "]";
+        cells[q] =
+            Num(d.maxDifference[q]) + (d.withinTolerance[q] ? "" : "*") + " [" + std::to_string(d.atFrame[q]) + "]";
       row(std::to_string(b), cells);
     }
   }
@@ -202,4 +206,4 @@ std::string ReportText(const TrajectoryComparison &c, const std::string &expecte
   return o.str();
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden

@@ -45,7 +45,7 @@ std::string Quoted(std::string_view s) {
 
 /* Parses one file; every error carries the current line number. */
 class Parser {
-public:
+ public:
   Parser(std::istream &in, const std::string &source) : in_(in), source_(source) {}
 
   Trajectory Parse() {
@@ -55,7 +55,7 @@ public:
     return std::move(result_);
   }
 
-private:
+ private:
   [[noreturn]] void Error(const std::string &problem) const { throw TrajectoryFormatError(source_, line_, problem); }
 
   /* Next non-comment line split into words; false at end of file. */
@@ -75,7 +75,8 @@ private:
   void ReadMagic() {
     std::vector<std::string_view> w;
     if (!Next(w)) Error("empty file: expected 'karma-trajectory 1'");
-    if (w[0] != "karma-trajectory") Error("not a trajectory file: expected 'karma-trajectory 1', found " + Quoted(text_));
+    if (w[0] != "karma-trajectory")
+      Error("not a trajectory file: expected 'karma-trajectory 1', found " + Quoted(text_));
     if (w.size() != 2 || w[1] != "1") Error("unsupported trajectory format version (this reader knows version 1)");
   }
 
@@ -104,7 +105,8 @@ private:
     }
     const int firstDataLine = line_;
     for (const char *k : kKeys)
-      if (!values.count(k)) Error(std::string("header lacks the '") + k + "' field (it must come before the first frame)");
+      if (!values.count(k))
+        Error(std::string("header lacks the '") + k + "' field (it must come before the first frame)");
 
     TrajectoryHeader &h = result_.header;
     h.program = values["program"].first;
@@ -130,8 +132,8 @@ private:
   double Number(std::string_view word, const char *what) const {
     auto v = detail::ParseReal(word, result_.header.precision);
     if (!v)
-      Error(Quoted(word) + " is not a " + std::string(PrecisionName(result_.header.precision)) +
-            "-precision number (" + what + ")");
+      Error(Quoted(word) + " is not a " + std::string(PrecisionName(result_.header.precision)) + "-precision number (" +
+            what + ")");
     return *v;
   }
 
@@ -184,7 +186,8 @@ private:
 
   BodyState ReadBody(const std::vector<std::string_view> &w, int expectedIndex) {
     if (w.size() < 2 || ParseLong(w[1]) != std::optional<long>(expectedIndex))
-      Error("expected 'body " + std::to_string(expectedIndex) + "'" + (w.size() >= 2 ? ", found body " + Quoted(w[1]) : ""));
+      Error("expected 'body " + std::to_string(expectedIndex) + "'" +
+            (w.size() >= 2 ? ", found body " + Quoted(w[1]) : ""));
     BodyState body;
     std::size_t at = 2;
     for (Quantity q : kAllQuantities) {
@@ -202,7 +205,8 @@ private:
         v[i] = Number(w[at], what.c_str());
       }
     }
-    if (at != w.size()) Error("body " + std::to_string(expectedIndex) + ": unexpected " + Quoted(w[at]) + " after angvel");
+    if (at != w.size())
+      Error("body " + std::to_string(expectedIndex) + ": unexpected " + Quoted(w[at]) + " after angvel");
     return body;
   }
 
@@ -214,11 +218,9 @@ private:
   Trajectory result_;
 };
 
-} // namespace
+}  // namespace
 
-Trajectory ReadTrajectory(std::istream &in, const std::string &sourceName) {
-  return Parser(in, sourceName).Parse();
-}
+Trajectory ReadTrajectory(std::istream &in, const std::string &sourceName) { return Parser(in, sourceName).Parse(); }
 
 Trajectory ReadTrajectoryFile(const std::filesystem::path &path) {
   std::error_code ec;
@@ -229,4 +231,4 @@ Trajectory ReadTrajectoryFile(const std::filesystem::path &path) {
   return ReadTrajectory(in, path.string());
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden

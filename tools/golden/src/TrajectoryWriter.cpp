@@ -19,15 +19,13 @@ bool IsWord(const std::string &s) {
   return true;
 }
 
-bool IsOneLine(const std::string &s) {
-  return s.find('\n') == std::string::npos && s.find('\r') == std::string::npos;
-}
+bool IsOneLine(const std::string &s) { return s.find('\n') == std::string::npos && s.find('\r') == std::string::npos; }
 
 void Put(std::ostream &out, const double *values, int count, Precision precision) {
   for (int i = 0; i < count; ++i) out << ' ' << detail::FormatReal(values[i], precision);
 }
 
-} // namespace
+}  // namespace
 
 TrajectoryWriter::TrajectoryWriter(const TrajectoryHeader &header, std::ostream *out)
     : header_(header), out_(out), path_("<stream>") {
@@ -93,10 +91,9 @@ void TrajectoryWriter::BeginFrame(long index, double time) {
   if (out_) *out_ << "frame " << index << " time " << detail::FormatReal(time, header_.precision) << '\n';
 }
 
-void TrajectoryWriter::AddBody(const MeReal position[3], const MeReal quaternion[4],
-                               const MeReal linearVelocity[3], const MeReal angularVelocity[3]) {
-  Require(header_.precision == kBuildPrecision,
-          "AddBody(MeReal...) needs a header whose precision is the build's");
+void TrajectoryWriter::AddBody(const MeReal position[3], const MeReal quaternion[4], const MeReal linearVelocity[3],
+                               const MeReal angularVelocity[3]) {
+  Require(header_.precision == kBuildPrecision, "AddBody(MeReal...) needs a header whose precision is the build's");
   BodyState body;
   for (int i = 0; i < 3; ++i) {
     body.position[i] = position[i];
@@ -135,8 +132,8 @@ void TrajectoryWriter::EndFrame() {
   Require(!failed_, "writer already failed");
   Require(inFrame_, "EndFrame without BeginFrame");
   if (bodiesInFrame_ != header_.bodyCount)
-    Fail("frame " + std::to_string(lastIndex_) + " has " + std::to_string(bodiesInFrame_) + " bodies, the header declares " +
-         std::to_string(header_.bodyCount));
+    Fail("frame " + std::to_string(lastIndex_) + " has " + std::to_string(bodiesInFrame_) +
+         " bodies, the header declares " + std::to_string(header_.bodyCount));
   inFrame_ = false;
   ++framesWritten_;
   if (out_) {
@@ -181,4 +178,4 @@ void WriteTrajectoryFile(const std::filesystem::path &path, const Trajectory &tr
   writer.Finish();
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden

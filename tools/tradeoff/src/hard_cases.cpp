@@ -39,9 +39,9 @@ SceneSpec ChainSpec() {
   for (int i = 0; i < kLinks; ++i)
     s.bodies.push_back({{ShapeKind::kCapsule, kRadius, kLength, 0}, 0.2, {i * kPitch, kHeight, 0}, alongX, 0});
   constexpr double kBall = 0.3;
-  s.bodies.push_back({{ShapeKind::kSphere, kBall, 0, 0}, 20, {(kLinks - 0.5) * kPitch + kBall, kHeight, 0}, kIdentityAxes, 0});
-  for (int i = 0; i < kLinks; ++i)
-    s.ballJoints.push_back(BallJointSpec{i, i + 1, {(i + 0.5) * kPitch, kHeight, 0}});
+  s.bodies.push_back(
+      {{ShapeKind::kSphere, kBall, 0, 0}, 20, {(kLinks - 0.5) * kPitch + kBall, kHeight, 0}, kIdentityAxes, 0});
+  for (int i = 0; i < kLinks; ++i) s.ballJoints.push_back(BallJointSpec{i, i + 1, {(i + 0.5) * kPitch, kHeight, 0}});
   for (int i = 0; i + 1 < (int)s.bodies.size(); ++i)
     for (int j = i + 1; j < (int)s.bodies.size(); ++j) s.disabledPairs.push_back({i, j});
   s.expectation = Expectation::kJointsWhole;
@@ -57,7 +57,8 @@ SceneSpec HeavyOnLightSpec() {
   s.groundMaterial = 1;
   const double masses[4] = {1, 100, 1, 100};
   for (int i = 0; i < 4; ++i)
-    s.bodies.push_back({{ShapeKind::kBox, 1, 0.2, 1}, masses[i], {0, (i + 0.5) * 0.2 + 0.001 * i, 0}, kIdentityAxes, 0});
+    s.bodies.push_back(
+        {{ShapeKind::kBox, 1, 0.2, 1}, masses[i], {0, (i + 0.5) * 0.2 + 0.001 * i, 0}, kIdentityAxes, 0});
   s.expectation = Expectation::kTopStill;
   s.watched = {3};
   s.capacity = {4, 5, 64, 128};

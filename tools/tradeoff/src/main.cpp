@@ -117,7 +117,8 @@ bool RunOtherPrecision(const Options &o, const std::string &precision, std::vect
 bool RunAllPrecisions(const Options &o, SweepPlan &plan, std::vector<ResultRow> &rows) {
   const std::string own = BuildPrecision();
   const bool both = o.precisions.size() > 1;
-  const bool runOwn = o.precisions.empty() || std::find(o.precisions.begin(), o.precisions.end(), own) != o.precisions.end();
+  const bool runOwn =
+      o.precisions.empty() || std::find(o.precisions.begin(), o.precisions.end(), own) != o.precisions.end();
   plan.precision = own;
   if (both)
     for (Setting &s : plan.settings) s.precision = own;
@@ -139,7 +140,8 @@ bool AddPeers(const std::string &table, const SweepPlan &plan, std::vector<Resul
     return false;
   }
   for (ResultRow &p : peers) {
-    const bool swept = std::any_of(plan.scenes.begin(), plan.scenes.end(), [&](const SceneEntry &e) { return e.name == p.scene; });
+    const bool swept =
+        std::any_of(plan.scenes.begin(), plan.scenes.end(), [&](const SceneEntry &e) { return e.name == p.scene; });
     if (swept && p.engine != "karma") rows.push_back(p);
   }
   return true;
@@ -157,18 +159,21 @@ void PlotScene(const Options &o, const std::string &gnuplot, const SceneEntry &e
   q.title = e.name + ": drift from the reference run against the cost of 1/60 s simulated";
   q.yLabel = "drift from the reference (m, largest RMS over the bodies)";
   q.path = o.out + "/" + e.name + "-drift.png";
-  if (Plot(gnuplot, q, rows, error)) n.driftPlot = e.name + "-drift.png";
-  else std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
-  const bool hasSceneError = std::any_of(rows.begin(), rows.end(), [&](const ResultRow &r) {
-    return r.scene == e.name && std::isfinite(r.sceneError);
-  });
+  if (Plot(gnuplot, q, rows, error))
+    n.driftPlot = e.name + "-drift.png";
+  else
+    std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
+  const bool hasSceneError = std::any_of(
+      rows.begin(), rows.end(), [&](const ResultRow &r) { return r.scene == e.name && std::isfinite(r.sceneError); });
   if (!hasSceneError) return;
   q.sceneError = true;
   q.title = e.name + ": the scene's own error against the cost of 1/60 s simulated";
   q.yLabel = "scene error (m; see ACCURACY.md)";
   q.path = o.out + "/" + e.name + "-scene.png";
-  if (Plot(gnuplot, q, rows, error)) n.scenePlot = e.name + "-scene.png";
-  else std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
+  if (Plot(gnuplot, q, rows, error))
+    n.scenePlot = e.name + "-scene.png";
+  else
+    std::fprintf(stderr, "karma-tradeoff: %s\n", error.c_str());
 }
 
 bool WriteReports(const Options &o, const std::vector<ResultRow> &rows, const std::vector<SceneNote> &notes,

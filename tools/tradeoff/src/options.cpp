@@ -36,7 +36,9 @@ std::string Usage() {
          "               knobs: solver (exact, exact:N, iterative:N), epsilon, gamma, h, tolerance, cap;\n"
          "               values a,b,c or lo..hi (geometric: x10 between powers of ten, else x2) or lo..hi:N\n"
          "  --precision  the precisions to run; the other one runs --other-binary (default: this\n"
-         "               build's only; this build is " + std::string(BuildPrecision()) + ")\n"
+         "               build's only; this build is " +
+         std::string(BuildPrecision()) +
+         ")\n"
          "  --repeat     timed repetitions per setting, interleaved (default 3); µs/step is their median\n"
          "  --out        directory for tradeoff.csv, tradeoff.md and the plots (default tradeoff-out)\n"
          "  --seconds    simulated time per run (default: each scene's own)\n"
@@ -51,15 +53,24 @@ bool ParseOptions(int argc, char **argv, Options &o, std::string &error) {
     const bool more = i + 1 < argc;
     auto value = [&]() -> std::string { return argv[++i]; };
     double x = 0;
-    if (a == "--help" || a == "-h") o.help = true;
-    else if (a == "--list") o.list = true;
-    else if (a == "--no-plots") o.plots = false;
-    else if (a == "--scene" && more) o.scenes = List(value());
-    else if (a == "--sweep" && more) o.sweep = value();
-    else if (a == "--precision" && more) o.precisions = List(value());
-    else if (a == "--out" && more) o.out = value();
-    else if (a == "--peers" && more) o.peers = value();
-    else if (a == "--other-binary" && more) o.otherBinary = value();
+    if (a == "--help" || a == "-h")
+      o.help = true;
+    else if (a == "--list")
+      o.list = true;
+    else if (a == "--no-plots")
+      o.plots = false;
+    else if (a == "--scene" && more)
+      o.scenes = List(value());
+    else if (a == "--sweep" && more)
+      o.sweep = value();
+    else if (a == "--precision" && more)
+      o.precisions = List(value());
+    else if (a == "--out" && more)
+      o.out = value();
+    else if (a == "--peers" && more)
+      o.peers = value();
+    else if (a == "--other-binary" && more)
+      o.otherBinary = value();
     else if (a == "--repeat" && more) {
       if (!ParseNumber(value(), x) || x < 1 || x > 1000) return error = "--repeat wants a count from 1", false;
       o.repeat = (int)x;

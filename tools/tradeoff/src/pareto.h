@@ -10,7 +10,7 @@
 namespace karma::tradeoff {
 
 struct CostError {
-  double cost = 0;   // µs per step
+  double cost = 0;  // µs per step
   double error = 0;
   bool valid = true;
 };

@@ -32,8 +32,10 @@ double LeadingNumber(const std::string &text) {
   std::string digits;
   for (char c : text) {
     if (c == ',') continue;
-    if ((c >= '0' && c <= '9') || c == '.') digits += c;
-    else break;
+    if ((c >= '0' && c <= '9') || c == '.')
+      digits += c;
+    else
+      break;
   }
   return digits.empty() ? std::nan("") : std::atof(digits.c_str());
 }
@@ -55,7 +57,8 @@ double SceneErrorOf(const std::string &scene, const std::string &figures, double
       return std::fmax(a / 1e3, std::fabs(b / 1e3 - StackClosure(scenes::ToppleSpec())));
   } else if (scene == "stack21") {
     if (std::sscanf(figures.c_str(), "top box drift %lf mm, height %lf m", &a, &b) == 2)
-      return std::fmax(a / 1e3, std::fabs(TopBoxStart(scenes::Stack21Spec()) - b - StackClosure(scenes::Stack21Spec())));
+      return std::fmax(a / 1e3,
+                       std::fabs(TopBoxStart(scenes::Stack21Spec()) - b - StackClosure(scenes::Stack21Spec())));
   } else if (scene == "ragdoll") {
     if (std::sscanf(figures.c_str(), "joint error: max %lf mm, end %lf mm", &c, &d) >= 1) return c / 1e3;
   } else if (scene == "pile1000") {

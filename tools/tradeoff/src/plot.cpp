@@ -10,7 +10,7 @@
 #include <sstream>
 
 #ifndef KARMA_GNUPLOT
-#define KARMA_GNUPLOT "gnuplot"
+#  define KARMA_GNUPLOT "gnuplot"
 #endif
 
 namespace karma::tradeoff {
@@ -91,10 +91,13 @@ bool Plot(const std::string &gnuplot, const PlotRequest &q, const std::vector<Re
   for (int i = 0; i < 4; ++i) WriteBlock(s, names[i], blocks[i]);
   std::fprintf(s, "set terminal pngcairo size %d,%d noenhanced font 'DejaVu Sans,9'\n", q.width, q.height);
   std::fprintf(s, "set output %s\n", GnuplotQuoted(q.path).c_str());
-  std::fprintf(s, "set title %s\nset logscale xy\nset format x '%%g'\nset format y '%%.0e'\nset grid xtics ytics mxtics mytics lc rgb '#dddddd'\n",
-               GnuplotQuoted(q.title).c_str());
-  std::fprintf(s, "set xlabel 'µs per 1/60 s simulated (median of the repetitions; µs per step x (1/60) / h)'\nset ylabel %s\n",
-               GnuplotQuoted(q.yLabel).c_str());
+  std::fprintf(
+      s,
+      "set title %s\nset logscale xy\nset format x '%%g'\nset format y '%%.0e'\nset grid xtics ytics mxtics mytics lc rgb '#dddddd'\n",
+      GnuplotQuoted(q.title).c_str());
+  std::fprintf(
+      s, "set xlabel 'µs per 1/60 s simulated (median of the repetitions; µs per step x (1/60) / h)'\nset ylabel %s\n",
+      GnuplotQuoted(q.yLabel).c_str());
   std::fprintf(s, "set bmargin 6\nset key at screen 0.5, screen 0.02 center bottom horizontal\n");
   std::fprintf(s, "set offsets graph 0.08, graph 0.35, graph 0.1, graph 0.1\n");
   std::vector<std::string> parts;
@@ -105,7 +108,8 @@ bool Plot(const std::string &gnuplot, const PlotRequest &q, const std::vector<Re
     parts.push_back("$front using 1:2:3 with labels left offset 0.7,0.5 font ',7' tc rgb '#1a6e1a' notitle");
   }
   if (!blocks[2].empty()) {
-    parts.push_back("$failed using 1:2 with points pt 2 ps 1.6 lw 2 lc rgb '#d62728' title 'failed (check or stability)'");
+    parts.push_back(
+        "$failed using 1:2 with points pt 2 ps 1.6 lw 2 lc rgb '#d62728' title 'failed (check or stability)'");
   }
   if (!blocks[3].empty()) {
     parts.push_back("$peers using 1:2 with points pt 5 ps 1.3 lc rgb '#9467bd' title 'peers (h = 1/60)'");

@@ -20,7 +20,7 @@ struct PlotRequest {
   std::string scene;
   bool sceneError = false;  // the scene's error (with the peers) or the drift
   std::string title, yLabel;
-  std::string path;         // the PNG to write; its script goes beside it
+  std::string path;  // the PNG to write; its script goes beside it
   int width = 800, height = 600;
 };
 

@@ -35,11 +35,35 @@ std::string Micros(double us) {
 }  // namespace
 
 const std::vector<std::string> &CsvColumns() {
-  static const std::vector<std::string> columns = {
-      "scene", "precision", "engine", "setting", "solver", "epsilon", "gamma", "h", "tolerance", "cap", "repeats",
-      "us_per_step", "us_min", "us_max", "us_per_frame", "steps", "drift_m", "joint_error_m", "penetration_m", "energy_error_J",
-      "momentum_error_Ns", "residual", "unsolved_steps", "max_speed_mps", "scene_error", "held", "front_drift",
-      "front_scene", "detail"};
+  static const std::vector<std::string> columns = {"scene",
+                                                   "precision",
+                                                   "engine",
+                                                   "setting",
+                                                   "solver",
+                                                   "epsilon",
+                                                   "gamma",
+                                                   "h",
+                                                   "tolerance",
+                                                   "cap",
+                                                   "repeats",
+                                                   "us_per_step",
+                                                   "us_min",
+                                                   "us_max",
+                                                   "us_per_frame",
+                                                   "steps",
+                                                   "drift_m",
+                                                   "joint_error_m",
+                                                   "penetration_m",
+                                                   "energy_error_J",
+                                                   "momentum_error_Ns",
+                                                   "residual",
+                                                   "unsolved_steps",
+                                                   "max_speed_mps",
+                                                   "scene_error",
+                                                   "held",
+                                                   "front_drift",
+                                                   "front_scene",
+                                                   "detail"};
   return columns;
 }
 
@@ -50,14 +74,35 @@ void WriteCsv(std::FILE *f, const std::vector<ResultRow> &rows) {
   for (const ResultRow &r : rows) {
     const Setting &s = r.setting;
     const bool peer = r.isPeer();
-    const std::vector<std::string> cells = {
-        r.scene, r.precision, r.engine, Quoted(peer ? r.engine : s.label()), peer ? "" : s.solver(),
-        peer ? "" : Cell(s.epsilon), peer ? "" : Cell(s.gamma), Cell(s.h), peer ? "" : Cell(s.tolerance),
-        peer || s.cap < 0 ? "" : std::to_string(s.cap), std::to_string(r.micros.size()), Cell(r.median()),
-        Cell(r.low()), Cell(r.high()), Cell(r.perFrame()), std::to_string(r.steps), Cell(r.drift), Cell(r.jointError),
-        Cell(r.penetration), Cell(r.energyError), Cell(r.momentumError), Cell(r.residual),
-        std::to_string(r.unsolvedSteps), Cell(r.maxSpeed), Cell(r.sceneError), r.held ? "1" : "0",
-        r.frontDrift ? "1" : "0", r.frontScene ? "1" : "0", Quoted(r.detail)};
+    const std::vector<std::string> cells = {r.scene,
+                                            r.precision,
+                                            r.engine,
+                                            Quoted(peer ? r.engine : s.label()),
+                                            peer ? "" : s.solver(),
+                                            peer ? "" : Cell(s.epsilon),
+                                            peer ? "" : Cell(s.gamma),
+                                            Cell(s.h),
+                                            peer ? "" : Cell(s.tolerance),
+                                            peer || s.cap < 0 ? "" : std::to_string(s.cap),
+                                            std::to_string(r.micros.size()),
+                                            Cell(r.median()),
+                                            Cell(r.low()),
+                                            Cell(r.high()),
+                                            Cell(r.perFrame()),
+                                            std::to_string(r.steps),
+                                            Cell(r.drift),
+                                            Cell(r.jointError),
+                                            Cell(r.penetration),
+                                            Cell(r.energyError),
+                                            Cell(r.momentumError),
+                                            Cell(r.residual),
+                                            std::to_string(r.unsolvedSteps),
+                                            Cell(r.maxSpeed),
+                                            Cell(r.sceneError),
+                                            r.held ? "1" : "0",
+                                            r.frontDrift ? "1" : "0",
+                                            r.frontScene ? "1" : "0",
+                                            Quoted(r.detail)};
     for (size_t i = 0; i < cells.size(); ++i) std::fprintf(f, "%s%s", i ? "," : "", cells[i].c_str());
     std::fprintf(f, "\n");
   }
@@ -69,16 +114,19 @@ void WriteMarkdown(std::FILE *f, const std::vector<ResultRow> &rows, const std::
   for (const SceneNote &n : scenes) {
     std::fprintf(f, "### %s\n\n%s; %.3g s simulated; errors against the reference run (%s).\n\n", n.name.c_str(),
                  n.about.c_str(), n.seconds, n.reference.c_str());
-    if (!n.scenePlot.empty()) std::fprintf(f, "![%s: scene error against µs per 1/60 s](%s)\n", n.name.c_str(), n.scenePlot.c_str());
-    if (!n.driftPlot.empty()) std::fprintf(f, "![%s: drift against µs per 1/60 s](%s)\n", n.name.c_str(), n.driftPlot.c_str());
+    if (!n.scenePlot.empty())
+      std::fprintf(f, "![%s: scene error against µs per 1/60 s](%s)\n", n.name.c_str(), n.scenePlot.c_str());
+    if (!n.driftPlot.empty())
+      std::fprintf(f, "![%s: drift against µs per 1/60 s](%s)\n", n.name.c_str(), n.driftPlot.c_str());
     std::fprintf(f, "\nDrift front: %s\n\n", FrontSummary(rows, n.name, false).c_str());
     bool hasSceneError = false;
     for (const ResultRow &r : rows) hasSceneError |= r.scene == n.name && !std::isnan(r.sceneError);
     if (hasSceneError) std::fprintf(f, "Scene-error front: %s\n\n", FrontSummary(rows, n.name, true).c_str());
-    std::fprintf(f,
-                 "| setting | µs per 1/60 s | µs/step median [range] | drift (m) | joint error (m) | penetration (m) | energy error (J) "
-                 "| momentum error (N s) | residual | scene error | held | front |\n"
-                 "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::fprintf(
+        f,
+        "| setting | µs per 1/60 s | µs/step median [range] | drift (m) | joint error (m) | penetration (m) | energy error (J) "
+        "| momentum error (N s) | residual | scene error | held | front |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const ResultRow &r : rows) {
       if (r.scene != n.name) continue;
       std::string name = r.isPeer() ? "**" : "`";  // appended piecewise: GCC 12's -Wrestrict misfires on a + chain
@@ -87,9 +135,10 @@ void WriteMarkdown(std::FILE *f, const std::vector<ResultRow> &rows, const std::
       std::string front = r.frontDrift ? "drift" : "";
       if (r.frontScene) front += front.empty() ? "scene" : ", scene";
       std::fprintf(f, "| %s | %s | %s [%s–%s] | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", name.c_str(),
-                   Micros(r.perFrame()).c_str(), Micros(r.median()).c_str(), Micros(r.low()).c_str(), Micros(r.high()).c_str(), Short(r.drift).c_str(),
-                   Short(r.jointError).c_str(), Short(r.penetration).c_str(), Short(r.energyError).c_str(),
-                   Short(r.momentumError).c_str(), Short(r.residual).c_str(), Short(r.sceneError).c_str(),
+                   Micros(r.perFrame()).c_str(), Micros(r.median()).c_str(), Micros(r.low()).c_str(),
+                   Micros(r.high()).c_str(), Short(r.drift).c_str(), Short(r.jointError).c_str(),
+                   Short(r.penetration).c_str(), Short(r.energyError).c_str(), Short(r.momentumError).c_str(),
+                   Short(r.residual).c_str(), Short(r.sceneError).c_str(),
                    r.held ? "yes" : (std::string("**no**: ") + r.detail).c_str(), front.c_str());
     }
     std::fprintf(f, "\n");
@@ -107,10 +156,14 @@ std::vector<std::string> SplitCsvLine(const std::string &line) {
   bool quoted = false;
   for (size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') cells.back() += '"', ++i;
-    else if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) cells.emplace_back();
-    else cells.back() += c;
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+      cells.back() += '"', ++i;
+    else if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      cells.emplace_back();
+    else
+      cells.back() += c;
   }
   return cells;
 }

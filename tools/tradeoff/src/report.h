@@ -30,7 +30,7 @@ void WriteCsv(std::FILE *f, const std::vector<ResultRow> &rows);
 struct SceneNote {
   std::string name, about;
   double seconds = 0;
-  std::string reference;          // the reference run's setting
+  std::string reference;             // the reference run's setting
   std::string driftPlot, scenePlot;  // file names of the plots ("" if none)
 };
 void WriteMarkdown(std::FILE *f, const std::vector<ResultRow> &rows, const std::vector<SceneNote> &scenes,

@@ -29,8 +29,12 @@ double ResultRow::median() const {
   return n % 2 ? m[n / 2] : (m[n / 2 - 1] + m[n / 2]) / 2;
 }
 
-double ResultRow::low() const { return micros.empty() ? std::nan("") : *std::min_element(micros.begin(), micros.end()); }
-double ResultRow::high() const { return micros.empty() ? std::nan("") : *std::max_element(micros.begin(), micros.end()); }
+double ResultRow::low() const {
+  return micros.empty() ? std::nan("") : *std::min_element(micros.begin(), micros.end());
+}
+double ResultRow::high() const {
+  return micros.empty() ? std::nan("") : *std::max_element(micros.begin(), micros.end());
+}
 
 void MarkFronts(std::vector<ResultRow> &rows, const std::string &scene) {
   std::vector<size_t> index;
@@ -59,8 +63,7 @@ std::string DifferingKnobs(const Setting &a, const Setting &b) {
   if (a.cap != b.cap) knobs.push_back("cap");
   if (a.precision != b.precision) knobs.push_back("precision");
   std::string out;
-  for (size_t i = 0; i < knobs.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == knobs.size() ? " and " : ", ") + knobs[i];
+  for (size_t i = 0; i < knobs.size(); ++i) out += (i == 0 ? "" : i + 1 == knobs.size() ? " and " : ", ") + knobs[i];
   return out.empty() ? "nothing" : out;
 }
 
@@ -69,12 +72,14 @@ std::string FrontSummary(const std::vector<ResultRow> &rows, const std::string &
   for (const ResultRow &r : rows)
     if (r.scene == scene && !r.isPeer() && (sceneError ? r.frontScene : r.frontDrift)) front.push_back(&r);
   if (front.empty()) return "No setting held: the sweep has no front.";
-  std::sort(front.begin(), front.end(), [](const ResultRow *a, const ResultRow *b) { return a->perFrame() < b->perFrame(); });
+  std::sort(front.begin(), front.end(),
+            [](const ResultRow *a, const ResultRow *b) { return a->perFrame() < b->perFrame(); });
   auto error = [&](const ResultRow *r) { return sceneError ? r->sceneError : r->drift; };
   const ResultRow *fast = front.front(), *best = front.back();
   if (front.size() == 1)
-    return std::string("`") + fast->setting.label() + "` is both the fastest and the most accurate setting that held (" +
-           Number(fast->perFrame()) + " µs per 1/60 s, error " + Number(error(fast)) + ").";
+    return std::string("`") + fast->setting.label() +
+           "` is both the fastest and the most accurate setting that held (" + Number(fast->perFrame()) +
+           " µs per 1/60 s, error " + Number(error(fast)) + ").";
   // The segment of the front with the largest error reduction per unit
   // of log time: log(e_i / e_i+1) / log(t_i+1 / t_i).
   size_t bestSegment = 0;
@@ -86,11 +91,12 @@ std::string FrontSummary(const std::vector<ResultRow> &rows, const std::string &
     if (gain > bestGain) bestGain = gain, bestSegment = i;
   }
   const ResultRow *a = front[bestSegment], *b = front[bestSegment + 1];
-  return std::string("The front runs from `") + fast->setting.label() + "` (" + Number(fast->perFrame()) + " µs per 1/60 s, error " +
-         Number(error(fast)) + ") to `" + best->setting.label() + "` (" + Number(best->perFrame()) +
-         " µs per 1/60 s, error " + Number(error(best)) + "); the most accuracy per microsecond comes from changing " +
-         DifferingKnobs(a->setting, b->setting) + " (`" + a->setting.label() + "` to `" + b->setting.label() +
-         "`: error ÷" + Number(error(a) / std::max(error(b), 1e-12), "%.2g") + " for ×" +
+  return std::string("The front runs from `") + fast->setting.label() + "` (" + Number(fast->perFrame()) +
+         " µs per 1/60 s, error " + Number(error(fast)) + ") to `" + best->setting.label() + "` (" +
+         Number(best->perFrame()) + " µs per 1/60 s, error " + Number(error(best)) +
+         "); the most accuracy per microsecond comes from changing " + DifferingKnobs(a->setting, b->setting) + " (`" +
+         a->setting.label() + "` to `" + b->setting.label() + "`: error ÷" +
+         Number(error(a) / std::max(error(b), 1e-12), "%.2g") + " for ×" +
          Number(b->perFrame() / a->perFrame(), "%.2g") + " the time).";
 }
 

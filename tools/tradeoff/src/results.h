@@ -12,20 +12,20 @@ namespace karma::tradeoff {
 
 struct ResultRow {
   std::string scene;
-  std::string precision;        // "single" or "double"
+  std::string precision;  // "single" or "double"
   Setting setting;
   std::string engine = "karma";  // a peer's name for a peer's point
-  std::vector<double> micros;   // µs per step, one per repetition
+  std::vector<double> micros;    // µs per step, one per repetition
   int steps = 0;
   double drift = 0, jointError = 0, penetration = 0, energyError = 0, momentumError = 0;
   double residual = 0;
   int unsolvedSteps = 0;
   double maxSpeed = 0;
-  double sceneError = 0;        // NaN: the scene has none
-  bool held = true;             // stable and the scene's check held
-  std::string detail;           // the scene's figures
-  bool frontDrift = false;      // on the Pareto front of (µs, drift)
-  bool frontScene = false;      // on the Pareto front of (µs, scene error), peers excluded
+  double sceneError = 0;    // NaN: the scene has none
+  bool held = true;         // stable and the scene's check held
+  std::string detail;       // the scene's figures
+  bool frontDrift = false;  // on the Pareto front of (µs, drift)
+  bool frontScene = false;  // on the Pareto front of (µs, scene error), peers excluded
   bool isPeer() const { return engine != "karma"; }
   // µs per step: the median and range of the repetitions.
   double median() const;

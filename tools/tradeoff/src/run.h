@@ -22,13 +22,13 @@ struct Trajectory {
 
 struct RunRecord {
   int steps = 0;
-  double stepSeconds = 0;      // wall time of the steps alone, summed
-  bool finite = true;          // no NaN or infinity in any body's state
-  double maxSpeed = 0;         // fastest body seen, m/s
-  double jointError = 0;       // largest joint gap over the run, m
-  double penetration = 0;      // deepest contact penetration over the run, m
-  double residual = 0;         // largest Kea residual of any step (MdtWorldStepStats)
-  int unsolvedSteps = 0;       // steps with a partition Kea left unsolved
+  double stepSeconds = 0;  // wall time of the steps alone, summed
+  bool finite = true;      // no NaN or infinity in any body's state
+  double maxSpeed = 0;     // fastest body seen, m/s
+  double jointError = 0;   // largest joint gap over the run, m
+  double penetration = 0;  // deepest contact penetration over the run, m
+  double residual = 0;     // largest Kea residual of any step (MdtWorldStepStats)
+  int unsolvedSteps = 0;   // steps with a partition Kea left unsolved
   SceneOutcome outcome;
   Trajectory trajectory;
   double microsPerStep() const { return steps > 0 ? stepSeconds * 1e6 / steps : 0; }

@@ -19,8 +19,8 @@ namespace karma::tradeoff {
 
 // The scene's own judgement of a run.
 struct SceneOutcome {
-  bool held = true;          // the scene's check (stack standing, nothing lost, ...)
-  std::string detail;        // the figures behind it
+  bool held = true;    // the scene's check (stack standing, nothing lost, ...)
+  std::string detail;  // the figures behind it
   // The scene's own error figure (see SceneError in anchor_scenes.cpp),
   // comparable with the peers' figures; NaN when the scene has none.
   double sceneError = 0;
@@ -45,9 +45,9 @@ class TradeoffScene {
 
 struct SceneEntry {
   std::string name;
-  std::string kind;       // "anchor", "hard case", "tutorial", "user"
-  std::string about;      // one line
-  double seconds = 0;     // the default run length
+  std::string kind;    // "anchor", "hard case", "tutorial", "user"
+  std::string about;   // one line
+  double seconds = 0;  // the default run length
   std::function<std::unique_ptr<TradeoffScene>()> make;
 };
 

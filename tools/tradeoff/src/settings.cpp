@@ -44,8 +44,7 @@ bool ParseSolver(const std::string &text, Setting &s) {
 }
 
 // Sets knob `name` of every setting in `in` to each value in turn.
-bool Multiply(const std::string &name, const std::string &values, std::vector<Setting> &settings,
-              std::string &error) {
+bool Multiply(const std::string &name, const std::string &values, std::vector<Setting> &settings, std::string &error) {
   std::vector<Setting> out;
   if (name == "solver") {
     for (const Setting &base : settings)
@@ -65,11 +64,16 @@ bool Multiply(const std::string &name, const std::string &values, std::vector<Se
   for (const Setting &base : settings)
     for (double v : list) {
       Setting s = base;
-      if (name == "epsilon" && v >= 0) s.epsilon = v;
-      else if (name == "gamma" && v >= 0) s.gamma = v;
-      else if (name == "h" && v > 0) s.h = v;
-      else if (name == "tolerance" && v >= 0) s.tolerance = v;
-      else if (name == "cap" && v >= 0 && v == std::floor(v)) s.cap = (int)v;
+      if (name == "epsilon" && v >= 0)
+        s.epsilon = v;
+      else if (name == "gamma" && v >= 0)
+        s.gamma = v;
+      else if (name == "h" && v > 0)
+        s.h = v;
+      else if (name == "tolerance" && v >= 0)
+        s.tolerance = v;
+      else if (name == "cap" && v >= 0 && v == std::floor(v))
+        s.cap = (int)v;
       else {
         error = "bad knob or value: " + name + "=" + FormatValue(v);
         return false;

@@ -32,12 +32,12 @@ inline constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 
 struct Setting {
   MdtKeaMethod method = MdtKeaMethodActiveSet;
-  int iterations = 0;         // 0: Kea's default cap
-  double epsilon = kUnset;    // NaN: the scene's own
+  int iterations = 0;       // 0: Kea's default cap
+  double epsilon = kUnset;  // NaN: the scene's own
   double gamma = kUnset;
   double h = 1.0 / 60;
   double tolerance = kUnset;
-  int cap = -1;               // < 0: the scene's own
+  int cap = -1;  // < 0: the scene's own
   // "single" or "double" when a sweep runs both (--precision); empty
   // otherwise. Not a world setting: the precision of the build that ran.
   std::string precision;

@@ -22,8 +22,10 @@ class Progress {
     if (tty_ && dirty_) std::fprintf(stderr, "\n");
   }
   void show(const std::string &line) {
-    if (tty_) std::fprintf(stderr, "\r\033[K%s", line.c_str()), dirty_ = true;
-    else std::fprintf(stderr, "%s\n", line.c_str());
+    if (tty_)
+      std::fprintf(stderr, "\r\033[K%s", line.c_str()), dirty_ = true;
+    else
+      std::fprintf(stderr, "%s\n", line.c_str());
     std::fflush(stderr);
   }
 
@@ -80,7 +82,8 @@ std::vector<ResultRow> RunSweep(const SweepPlan &plan) {
   const size_t n = plan.settings.size();
   for (const SceneEntry &scene : plan.scenes) {
     const double seconds = plan.seconds > 0 ? plan.seconds : scene.seconds;
-    progress.show(Line("karma-tradeoff: %s: reference run (%s, %.3g s)", scene.name.c_str(), reference.label().c_str(), seconds));
+    progress.show(
+        Line("karma-tradeoff: %s: reference run (%s, %.3g s)", scene.name.c_str(), reference.label().c_str(), seconds));
     RunRecord ref;
     if (!RunScene(scene, reference, seconds, ref)) {
       progress.show(Line("karma-tradeoff: %s: the scene could not be built; skipped", scene.name.c_str()));

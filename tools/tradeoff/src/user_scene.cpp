@@ -29,8 +29,10 @@ class UserScene final : public TradeoffScene {
   void observe() override { worstGap_ = std::fmax(worstGap_, jointGap()); }
   void advance(MeReal h) override {
     if (s_.beforeStep) s_.beforeStep(s_.user, h);
-    if (s_.universe) MstUniverseStep(s_.universe, h);
-    else MdtWorldStep(s_.world, h);
+    if (s_.universe)
+      MstUniverseStep(s_.universe, h);
+    else
+      MdtWorldStep(s_.world, h);
   }
   SceneOutcome finish(double) override {
     SceneOutcome o;
@@ -55,13 +57,20 @@ bool Build(KarmaTradeoffBuildSceneFn build, KarmaTradeoffScene &s, std::string &
     error = "the scene's build function returned 0";
     return false;
   }
-  if (s.version != KARMA_TRADEOFF_SCENE_VERSION) error = "the scene's version is not KARMA_TRADEOFF_SCENE_VERSION";
-  else if (s.realSize != (int)sizeof(MeReal)) error = "the scene was built for another precision (realSize != sizeof(MeReal))";
-  else if (!s.world) error = "the scene has no world";
-  else if (s.bodyCount < 0 || (s.bodyCount > 0 && !s.bodies)) error = "the scene's bodies are missing";
-  else if (s.jointCount < 0 || (s.jointCount > 0 && !s.joints)) error = "the scene's joints are missing";
-  else if (!(s.seconds > 0)) error = "the scene's seconds must be positive";
-  else return true;
+  if (s.version != KARMA_TRADEOFF_SCENE_VERSION)
+    error = "the scene's version is not KARMA_TRADEOFF_SCENE_VERSION";
+  else if (s.realSize != (int)sizeof(MeReal))
+    error = "the scene was built for another precision (realSize != sizeof(MeReal))";
+  else if (!s.world)
+    error = "the scene has no world";
+  else if (s.bodyCount < 0 || (s.bodyCount > 0 && !s.bodies))
+    error = "the scene's bodies are missing";
+  else if (s.jointCount < 0 || (s.jointCount > 0 && !s.joints))
+    error = "the scene's joints are missing";
+  else if (!(s.seconds > 0))
+    error = "the scene's seconds must be positive";
+  else
+    return true;
   if (s.destroy) s.destroy(s.user);
   return false;
 }

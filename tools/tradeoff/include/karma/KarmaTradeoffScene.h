@@ -40,20 +40,20 @@ extern "C" {
 #define KARMA_TRADEOFF_SCENE_VERSION 1
 
 typedef struct KarmaTradeoffScene {
-    int version;           /* set to KARMA_TRADEOFF_SCENE_VERSION */
-    int realSize;          /* set to sizeof(MeReal) */
-    const char *name;      /* shown in the tables and plots */
-    MstUniverseID universe; /* stepped by MstUniverseStep, or NULL ... */
-    MdtWorldID world;      /* ... and this world stepped by MdtWorldStep (required) */
-    double seconds;        /* simulated time of a run */
-    MdtBodyID *bodies;
-    int bodyCount;
-    MdtConstraintID *joints;
-    int jointCount;
-    void *user;
-    void (*beforeStep)(void *user, MeReal h);
-    int (*check)(void *user);
-    void (*destroy)(void *user);
+  int version;            /* set to KARMA_TRADEOFF_SCENE_VERSION */
+  int realSize;           /* set to sizeof(MeReal) */
+  const char *name;       /* shown in the tables and plots */
+  MstUniverseID universe; /* stepped by MstUniverseStep, or NULL ... */
+  MdtWorldID world;       /* ... and this world stepped by MdtWorldStep (required) */
+  double seconds;         /* simulated time of a run */
+  MdtBodyID *bodies;
+  int bodyCount;
+  MdtConstraintID *joints;
+  int jointCount;
+  void *user;
+  void (*beforeStep)(void *user, MeReal h);
+  int (*check)(void *user);
+  void (*destroy)(void *user);
 } KarmaTradeoffScene;
 
 typedef int (*KarmaTradeoffBuildSceneFn)(KarmaTradeoffScene *scene);

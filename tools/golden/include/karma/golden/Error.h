@@ -16,7 +16,7 @@
 namespace karma::golden {
 
 class MEPUBLIC GoldenError : public std::runtime_error {
-public:
+ public:
   explicit GoldenError(const std::string &message) : std::runtime_error(message) {}
 };
 
@@ -24,14 +24,14 @@ public:
  * compiler diagnostic; line() is 1-based (0 when the problem is the whole file,
  * e.g. it cannot be opened). */
 class MEPUBLIC TrajectoryFormatError : public GoldenError {
-public:
+ public:
   TrajectoryFormatError(const std::string &source, int line, const std::string &problem);
   int line() const noexcept { return line_; }
 
-private:
+ private:
   int line_;
 };
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

@@ -34,9 +34,9 @@ struct CheckResult {
   std::string report; /* every item's report, then a summary line */
 };
 
-MEPUBLIC CheckResult CheckAgainstGolden(const std::filesystem::path &goldenDir,
-                                        const std::filesystem::path &actualDir, const CheckOptions &options);
+MEPUBLIC CheckResult CheckAgainstGolden(const std::filesystem::path &goldenDir, const std::filesystem::path &actualDir,
+                                        const CheckOptions &options);
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

@@ -37,6 +37,6 @@ struct MEPUBLIC GoldenKey {
   }
 };
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

@@ -22,7 +22,10 @@ struct Image {
 
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4, 0) {}
-  std::uint8_t *Pixel(int x, int y) noexcept { return rgba.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4; }
+  std::uint8_t *Pixel(int x, int y) noexcept {
+    return rgba.data() +
+           (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4;
+  }
   const std::uint8_t *Pixel(int x, int y) const noexcept { return const_cast<Image *>(this)->Pixel(x, y); }
 };
 
@@ -31,6 +34,6 @@ MEPUBLIC Image LoadPng(const std::filesystem::path &path);
 /* Throws GoldenError if the file cannot be written. */
 MEPUBLIC void WritePng(const std::filesystem::path &path, const Image &image);
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

@@ -39,8 +39,7 @@ struct ImageComparison {
   std::filesystem::path diffImage; /* set when a diff image was written */
 };
 
-MEPUBLIC ImageComparison CompareImages(const Image &expected, const Image &actual,
-                                       const ImageTolerances &tolerances);
+MEPUBLIC ImageComparison CompareImages(const Image &expected, const Image &actual, const ImageTolerances &tolerances);
 
 /* Diff image as described above; requires equal sizes. */
 MEPUBLIC Image MakeDiffImage(const Image &expected, const Image &actual, int channelTolerance);
@@ -51,8 +50,7 @@ MEPUBLIC std::filesystem::path DefaultDiffPath(const std::filesystem::path &actu
 /* Loads both files (GoldenError if either cannot be read) and compares them.
  * When the images have the same size but do not match, writes the diff image to
  * `diffPath`, or to DefaultDiffPath(actual) when diffPath is empty. */
-MEPUBLIC ImageComparison CompareImageFiles(const std::filesystem::path &expected,
-                                           const std::filesystem::path &actual,
+MEPUBLIC ImageComparison CompareImageFiles(const std::filesystem::path &expected, const std::filesystem::path &actual,
                                            const ImageTolerances &tolerances,
                                            const std::filesystem::path &diffPath = {});
 
@@ -61,6 +59,6 @@ MEPUBLIC ImageComparison CompareImageFiles(const std::filesystem::path &expected
 MEPUBLIC std::string ReportText(const ImageComparison &comparison, const std::string &expectedName,
                                 const std::string &actualName);
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

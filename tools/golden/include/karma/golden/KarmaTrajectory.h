@@ -41,8 +41,7 @@ typedef struct KarmaTrajectoryInfo {
 #define KARMA_GOLDEN_HASH_TEXT_SIZE 19
 
 /* Never returns NULL except when out of memory; check KarmaTrajectoryWriterError. */
-MEPUBLIC KarmaTrajectoryWriter *MEAPI KarmaTrajectoryWriterCreate(const char *path,
-                                                                  const KarmaTrajectoryInfo *info);
+MEPUBLIC KarmaTrajectoryWriter *MEAPI KarmaTrajectoryWriterCreate(const char *path, const KarmaTrajectoryInfo *info);
 MEPUBLIC MeBool MEAPI KarmaTrajectoryWriterBeginFrame(KarmaTrajectoryWriter *w, long frame, MeReal time);
 MEPUBLIC MeBool MEAPI KarmaTrajectoryWriterAddBody(KarmaTrajectoryWriter *w, const MeReal position[3],
                                                    const MeReal quaternion[4], const MeReal linearVelocity[3],

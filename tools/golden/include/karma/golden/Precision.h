@@ -20,9 +20,7 @@ enum class Precision { Single, Double };
 inline constexpr Precision kBuildPrecision = KARMA_DOUBLE ? Precision::Double : Precision::Single;
 
 /* "single" or "double": the spelling used in trajectory headers and golden keys. */
-constexpr std::string_view PrecisionName(Precision p) noexcept {
-  return p == Precision::Single ? "single" : "double";
-}
+constexpr std::string_view PrecisionName(Precision p) noexcept { return p == Precision::Single ? "single" : "double"; }
 
 constexpr std::optional<Precision> ParsePrecision(std::string_view name) noexcept {
   if (name == "single") return Precision::Single;
@@ -30,6 +28,6 @@ constexpr std::optional<Precision> ParsePrecision(std::string_view name) noexcep
   return std::nullopt;
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

@@ -28,7 +28,7 @@
 namespace karma::golden {
 
 class MEPUBLIC StateHash {
-public:
+ public:
   static constexpr std::uint64_t kOffsetBasis = 0xcbf29ce484222325ull;
   static constexpr std::uint64_t kPrime = 0x100000001b3ull;
 
@@ -40,7 +40,7 @@ public:
 
   std::uint64_t Value() const noexcept { return hash_; }
 
-private:
+ private:
   void AddBytes(std::uint64_t bits, int byteCount) noexcept;
   std::uint64_t hash_ = kOffsetBasis;
 };
@@ -52,9 +52,8 @@ MEPUBLIC std::optional<std::uint64_t> ParseHash(std::string_view text) noexcept;
 
 /* Recompute the hash of a trajectory from its values (ignoring the recorded
  * hashes). If perFrame is given it receives the running hash after each frame. */
-MEPUBLIC std::uint64_t HashTrajectory(const Trajectory &trajectory,
-                                      std::vector<std::uint64_t> *perFrame = nullptr);
+MEPUBLIC std::uint64_t HashTrajectory(const Trajectory &trajectory, std::vector<std::uint64_t> *perFrame = nullptr);
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

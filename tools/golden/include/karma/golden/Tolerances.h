@@ -83,6 +83,6 @@ constexpr TrajectoryTolerances DefaultTrajectoryTolerances(Precision precision) 
 
 inline constexpr ImageTolerances kDefaultImageTolerances{8, 0.005};
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

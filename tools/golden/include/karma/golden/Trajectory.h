@@ -34,10 +34,14 @@ inline constexpr std::array<Quantity, kQuantityCount> kAllQuantities = {
 /* The keyword of a quantity in trajectory files and reports: pos, quat, linvel, angvel. */
 constexpr std::string_view QuantityName(Quantity q) noexcept {
   switch (q) {
-  case Quantity::Position: return "pos";
-  case Quantity::Quaternion: return "quat";
-  case Quantity::LinearVelocity: return "linvel";
-  case Quantity::AngularVelocity: return "angvel";
+    case Quantity::Position:
+      return "pos";
+    case Quantity::Quaternion:
+      return "quat";
+    case Quantity::LinearVelocity:
+      return "linvel";
+    case Quantity::AngularVelocity:
+      return "angvel";
   }
   return "?";
 }
@@ -58,20 +62,20 @@ struct BodyState {
 };
 
 struct TrajectoryHeader {
-  std::string program;              /* e.g. "demo", "quadbike" */
-  std::string step = "main";        /* tutorial step, "main" for programs without steps */
-  std::string backend = "reference";/* platform backend that produced it */
+  std::string program;               /* e.g. "demo", "quadbike" */
+  std::string step = "main";         /* tutorial step, "main" for programs without steps */
+  std::string backend = "reference"; /* platform backend that produced it */
   Precision precision = kBuildPrecision;
   int bodyCount = 0;
-  std::string sampling;             /* human description of which frames are sampled */
-  double timeStep = 0.0;            /* seconds per frame, a value of `precision` */
+  std::string sampling;  /* human description of which frames are sampled */
+  double timeStep = 0.0; /* seconds per frame, a value of `precision` */
 
   bool operator==(const TrajectoryHeader &) const = default;
 };
 
 struct TrajectoryFrame {
-  long index = 0;   /* frame number in the run (0 = initial state) */
-  double time = 0.0;/* simulated time of this frame; not part of the hash */
+  long index = 0;    /* frame number in the run (0 = initial state) */
+  double time = 0.0; /* simulated time of this frame; not part of the hash */
   std::vector<BodyState> bodies;
   std::uint64_t hash = 0; /* as recorded: running state hash after this frame */
 };
@@ -84,10 +88,14 @@ struct Trajectory {
 
 inline const double *BodyState::Values(Quantity q) const noexcept {
   switch (q) {
-  case Quantity::Position: return position.data();
-  case Quantity::Quaternion: return quaternion.data();
-  case Quantity::LinearVelocity: return linearVelocity.data();
-  case Quantity::AngularVelocity: return angularVelocity.data();
+    case Quantity::Position:
+      return position.data();
+    case Quantity::Quaternion:
+      return quaternion.data();
+    case Quantity::LinearVelocity:
+      return linearVelocity.data();
+    case Quantity::AngularVelocity:
+      return angularVelocity.data();
   }
   return position.data();
 }
@@ -96,6 +104,6 @@ inline double *BodyState::Values(Quantity q) noexcept {
   return const_cast<double *>(static_cast<const BodyState *>(this)->Values(q));
 }
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

@@ -30,13 +30,13 @@ namespace karma::golden {
 
 /* One value that is out of tolerance. */
 struct ValueDifference {
-  long frame = 0;     /* frame index (as in the file) */
+  long frame = 0; /* frame index (as in the file) */
   double time = 0.0;
   int body = 0;
   Quantity quantity = Quantity::Position;
-  int component = 0;  /* 0..2, or 0..3 = w,x,y,z for quaternions */
+  int component = 0; /* 0..2, or 0..3 = w,x,y,z for quaternions */
   double expected = 0.0;
-  double actual = 0.0;  /* sign-aligned for quaternions */
+  double actual = 0.0; /* sign-aligned for quaternions */
   double difference = 0.0;
   double allowed = 0.0;
 };
@@ -51,8 +51,8 @@ struct BodyDeviation {
 struct TrajectoryComparison {
   bool passed = false;
   bool hashesMatch = false;
-  std::uint64_t expectedHash = 0; /* recomputed */
-  std::uint64_t actualHash = 0;   /* recomputed */
+  std::uint64_t expectedHash = 0;            /* recomputed */
+  std::uint64_t actualHash = 0;              /* recomputed */
   std::vector<std::string> headerMismatches; /* each fails the comparison */
   std::vector<std::string> notes;            /* informative only */
   std::optional<ValueDifference> firstFailure;
@@ -70,6 +70,6 @@ MEPUBLIC TrajectoryComparison CompareTrajectories(const Trajectory &expected, co
 MEPUBLIC std::string ReportText(const TrajectoryComparison &comparison, const std::string &expectedName,
                                 const std::string &actualName);
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

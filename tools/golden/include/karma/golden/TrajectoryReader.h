@@ -26,6 +26,6 @@ MEPUBLIC Trajectory ReadTrajectory(std::istream &in, const std::string &sourceNa
 /* Throws TrajectoryFormatError (line 0) if the file cannot be opened. */
 MEPUBLIC Trajectory ReadTrajectoryFile(const std::filesystem::path &path);
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif

@@ -50,7 +50,7 @@ namespace karma::golden {
  * increasing, anything after Finish) and write failures throw GoldenError;
  * after an error the writer refuses further calls. */
 class MEPUBLIC TrajectoryWriter {
-public:
+ public:
   /* Writes to `out` (not owned; may be null to only keep the hash). */
   TrajectoryWriter(const TrajectoryHeader &header, std::ostream *out);
   /* Creates or truncates the file at `path`. Throws GoldenError if it cannot. */
@@ -61,8 +61,8 @@ public:
 
   void BeginFrame(long index, double time);
   /* The build's MeReal arrays; requires header.precision == kBuildPrecision. */
-  void AddBody(const MeReal position[3], const MeReal quaternion[4],
-               const MeReal linearVelocity[3], const MeReal angularVelocity[3]);
+  void AddBody(const MeReal position[3], const MeReal quaternion[4], const MeReal linearVelocity[3],
+               const MeReal angularVelocity[3]);
   /* Any precision: values are rounded to the header's precision first. */
   void AddBody(const BodyState &body);
   void EndFrame();
@@ -75,7 +75,7 @@ public:
   const TrajectoryHeader &Header() const noexcept { return header_; }
   long FramesWritten() const noexcept { return framesWritten_; }
 
-private:
+ private:
   void Fail(const std::string &message);
   void Require(bool ok, const char *message);
   void WriteHeader();
@@ -99,6 +99,6 @@ private:
 MEPUBLIC void WriteTrajectory(std::ostream &out, const Trajectory &trajectory);
 MEPUBLIC void WriteTrajectoryFile(const std::filesystem::path &path, const Trajectory &trajectory);
 
-} // namespace karma::golden
+}  // namespace karma::golden
 
 #endif
