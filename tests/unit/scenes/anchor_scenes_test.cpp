@@ -44,10 +44,10 @@ TEST(AnchorScenes, Stack21Stands) {
   EXPECT_LT(f.penetration, 0.01);
 }
 
-// Regression: the rag doll used to explode once lying on the ground (step
-// ~110): a capsule limb rolling on the ground spun up about its long axis
-// and the explicit gyroscopic term amplified its wobble by ~15 % per step.
-// The term is now linearly implicit for every body (integrate.cpp).
+// Guards the rag doll lying on the ground (from step ~110): a capsule limb
+// rolling there spins up about its long axis, and an explicit gyroscopic
+// term would amplify its wobble by ~15 % per step until it explodes; the
+// term is linearly implicit for every body (integrate.cpp).
 TEST(AnchorScenes, RagdollStaysConnected) {
   auto scene = karma::scenes::MakeRagdoll();
   const SceneFigures f = runAndReport(*scene);

@@ -19,10 +19,10 @@ double TopDrift(const karma::scenes::SceneFigures &f) {
 
 // Issue 12 asks for a top box drift under 5 mm here. This PGS (body space,
 // warm-started, symmetric sweeps, contact normals solved per face) reaches
-// it once the stack's contacts keep their impulses from step to step: the
-// corners of aligned boxes, renamed by rounding, used to be re-made with
-// zero impulses every step (contact_cache.h, pass 3), and the drift was
-// 5-45 mm depending on the sweep count.
+// it only while every contact of the stack keeps its impulse from step to
+// step, including the corners of aligned boxes that rounding renames
+// (contact_cache.h, pass 3); re-made with zero impulses, the top box drifts
+// by several millimetres or more.
 TEST(WarmStart, PgsAtFiftySweepsKeepsTheTwentyOneBoxStackStanding) {
   auto scene = karma::scenes::MakeStack21();
   MdtWorldSetKeaMethod(scene->world(), MdtKeaMethodPGS);
