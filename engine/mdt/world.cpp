@@ -121,6 +121,7 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   s.stats = MdtWorldStepStats{};
   s.partitionRows.clear();
   s.arena.reset();
+  const StepClock clock(s.budget);
   wakeDrivenBodies(world);
   buildPartitions(world, s);
   StepContext ctx;
@@ -135,6 +136,7 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   }
   s.stats.partitions = (int)s.partitions.size();
   s.solveWarnings.endStep(stepSize);
+  clock.stop(s.stats);
 }
 
 MeReal MEAPI MdtWorldGetLastStepSize(const MdtWorldID world) {

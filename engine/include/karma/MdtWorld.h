@@ -85,6 +85,11 @@ typedef struct MdtWorldStepStats {
   int keaFrictionRounds;   /* friction fixed-point rounds beyond the first */
   int keaCycles;           /* partitions stopped by a detected cycle */
   int iterativePartitions; /* partitions solved by the iterative solver */
+  int budgetLevel;         /* least accurate step-budget level used: 0 exact,
+                              1 exact:8, 2 iterative; -1 without a budget */
+  int budgetSweeps;        /* fewest iterative sweeps the budget gave, 0 if none */
+  MeReal budgetPredicted;  /* step budget: predicted solve time (microseconds) */
+  MeReal budgetMeasured;   /* step budget: measured step time (microseconds) */
 } MdtWorldStepStats;
 
 /* The world's private state (body pool, step order, counters). */
@@ -247,6 +252,23 @@ MEPUBLIC void MEAPI MdtWorldSetKeaTolerance(const MdtWorldID world, const MeReal
  * partitions solved iteratively. */
 MEPUBLIC void MEAPI MdtWorldSetKeaIterativeRows(const MdtWorldID world, const int rows);
 MEPUBLIC int MEAPI MdtWorldGetKeaIterativeRows(const MdtWorldID world);
+
+/* A time budget for each MdtWorldStep, in microseconds (> 0; 0 turns it off,
+ * the default). With a budget the engine picks, per partition and per step,
+ * the most accurate solver settings whose predicted cost fits what is left
+ * of the budget: exact (level 0), exact capped at 8 solves (1), or the
+ * iterative solver with as many sweeps as fit, 10 to 50 (2); below 10
+ * sweeps a stack no longer stands, so a budget too small for 10 is
+ * exceeded rather than obeyed. It predicts costs from what it measures as
+ * it runs, so a budgeted world is not bit-identical from run to run. The
+ * method, iteration cap and MdtWorldSetKeaIterativeRows are set aside while
+ * a budget is on; the step stats report the level and sweeps used and the
+ * predicted and measured times. The budget covers MdtWorldStep, not
+ * collision. Negative or non-finite values warn and are ignored. */
+MEPUBLIC void MEAPI MdtWorldSetStepBudget(const MdtWorldID world, const MeReal microseconds);
+MEPUBLIC MeReal MEAPI MdtWorldGetStepBudget(const MdtWorldID world);
+/* "exact", "exact:8", "iterative" for levels 0-2, "off" otherwise. */
+MEPUBLIC const char *MEAPI MdtWorldGetStepBudgetLevelName(const int level);
 
 /* Bytes of solver workspace a partition of `rows` rows and `bodies` bodies
  * needs at most (dense worst case: the matrix, its factor and the row

@@ -42,6 +42,7 @@
 #include "partition_solver.h"
 #include "problem.h"
 #include "solve_warnings.h"
+#include "step_budget.h"
 
 namespace karma::mdt {
 
@@ -79,6 +80,7 @@ struct StepScratch {
   PartitionSolver *pgs;
   MdtWorldStepStats stats;
   SolveWarnings solveWarnings;  // the exact solver's, rate-limited
+  StepBudget budget;            // MdtWorldSetStepBudget
 };
 
 // Stage 1: fills bodies, constraints, partitions (waking bodies).

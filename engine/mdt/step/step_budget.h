@@ -1,0 +1,150 @@
+// step_budget.h: the controller behind MdtWorldSetStepBudget. Not installed.
+//
+// Contract. With a budget of B microseconds per MdtWorldStep (B > 0), each
+// partition's solve runs at one level of an accuracy ladder, most accurate
+// first:
+//   0 exact        Kea with the world's iteration cap
+//   1 exact:8      Kea capped at 8 linear solves
+//   2 iterative:k  projected Gauss-Seidel with k sweeps, kMinSweeps <= k <= kMaxSweeps
+// A partition of n rows gets the most accurate level whose predicted cost
+// fits its share of what is left of the budget,
+//   share = (B - overhead - spent) * n / max(n, rowsLeft),
+// where `overhead` is the predicted cost of the step outside the solves,
+// `spent` the predicted cost of this step's solves so far (predicted, not
+// measured, so that one interrupted solve does not starve the partitions
+// after it) and `rowsLeft` the
+// rows the step is expected to solve from this partition on (last step's
+// total minus this step's so far). At level 2, k is the most sweeps that
+// fit the share, at least kMinSweeps however little is left (fewer sweeps
+// let a resting stack fall: topple's stacks stand at 10, not at 5). The world's
+// method (MdtWorldSetKeaMethod) and size rule (MdtWorldSetKeaIterativeRows)
+// are set aside while a budget is on.
+//
+// Cost model, learned from the step's own clock as the world runs:
+//   exact levels  c_exact * n^(3/2) * s   (s: linear solves, the mean seen
+//                                          at level 0; at most 8 at level 1)
+//   iterative     c_iter * n * k
+// Each coefficient is the ratio of exponentially weighted sums of measured
+// time and work (weights decay by kDecay per step), started from a prior of
+// kPriorWork units at kPriorMicroseconds each, so a level never yet run is
+// still priced. The overhead is the same kind of average of the step's
+// measured time minus its solve time. A measurement enters a model at most
+// kOutlier times what the model predicted, so one interrupted step does
+// not reprice the following ones.
+//
+// Determinism: the choices follow measured time, so a budgeted world is not
+// bit-identical from run to run; without a budget nothing here runs.
+#pragma once
+
+#include <chrono>
+
+#include "MdtWorld.h"
+#include "MePrecision.h"
+
+namespace karma::mdt {
+
+// A partition solve's settings at one ladder level.
+struct BudgetChoice {
+  int level = 0;  // 0 exact, 1 exact:8, 2 iterative
+  bool iterative = false;
+  int maxIterations = 0;  // linear solves or sweeps; 0: the world's own cap
+};
+
+class StepBudget {
+ public:
+  static constexpr int kLevels = 3;
+  static constexpr int kCappedSolves = 8;
+  static constexpr int kMaxSweeps = 50;
+  static constexpr int kMinSweeps = 10;
+  static constexpr MeReal kDecay = (MeReal)0.9;
+  static constexpr MeReal kOutlier = 3;
+  static constexpr MeReal kPriorWork = 100;
+  static constexpr MeReal kPriorMicroseconds = (MeReal)0.02;  // per unit of work
+
+  // "exact", "exact:8", "iterative"; "off" for any other level.
+  static const char *levelName(int level);
+
+  // microseconds <= 0 turns the budget off.
+  void setBudget(MeReal microseconds);
+  MeReal budget() const { return budget_; }
+  bool on() const { return budget_ > 0; }
+
+  // The step's bracket: beginStep at its start, endStep with its measured
+  // time at its end.
+  void beginStep();
+  void endStep(MeReal stepMicroseconds);
+
+  // The settings for a partition of `rows` rows about to be solved.
+  BudgetChoice choose(int rows) const;
+  // The predicted cost of a solve of `rows` rows with `choice`.
+  MeReal predictedCost(const BudgetChoice &choice, int rows) const;
+  // What that solve did: `solves` linear solves or sweeps in `microseconds`.
+  void recordSolve(const BudgetChoice &choice, int rows, int solves, MeReal microseconds);
+
+  // This step so far (for the step stats).
+  int worstLevel() const { return worstLevel_; }
+  int fewestSweeps() const { return fewestSweeps_; }  // 0: no iterative solve
+  MeReal predictedSolveTime() const { return predicted_; }
+
+  // The model's coefficients (for tests and the profile).
+  MeReal exactCoefficient() const { return exact_.ratio(); }
+  MeReal iterativeCoefficient() const { return iterative_.ratio(); }
+  MeReal overhead() const { return overhead_.ratio(); }
+
+ private:
+  // An exponentially weighted ratio sum(time) / sum(work).
+  struct Average {
+    MeReal time = kPriorWork * kPriorMicroseconds;
+    MeReal work = kPriorWork;
+    MeReal ratio() const { return time / work; }
+    void add(MeReal t, MeReal w) {
+      time += t;
+      work += w;
+    }
+    void decay() {
+      time *= kDecay;
+      work *= kDecay;
+    }
+  };
+
+  MeReal budget_ = 0;
+  Average exact_;              // microseconds per n^(3/2) per solve
+  Average iterative_;          // microseconds per row per sweep
+  Average exactSolves_{1, 1};  // linear solves per exact solve at level 0
+  Average overhead_{0, 1};     // microseconds of the step outside the solves
+  int expectedRows_ = 0;       // rows the last step solved
+  int rowsSoFar_ = 0;          // rows solved this step
+  MeReal spent_ = 0;           // measured solve microseconds this step
+  MeReal predicted_ = 0;       // predicted solve microseconds this step
+  int worstLevel_ = -1;        // least accurate level used this step
+  int fewestSweeps_ = 0;       // fewest sweeps given at level 2 this step
+};
+
+// Brackets one MdtWorldStep: begins the budget's step when it is made, and
+// stop() ends it with the measured time and writes the budget's step stats.
+// Without a budget it reads no clock.
+class StepClock {
+ public:
+  explicit StepClock(StepBudget &budget) : budget_(budget) {
+    if (!budget_.on()) return;
+    budget_.beginStep();
+    start_ = Clock::now();
+  }
+  void stop(MdtWorldStepStats &stats) const {
+    stats.budgetLevel = -1;
+    if (!budget_.on()) return;
+    const double us = std::chrono::duration<double, std::micro>(Clock::now() - start_).count();
+    budget_.endStep((MeReal)us);
+    stats.budgetLevel = budget_.worstLevel();
+    stats.budgetSweeps = budget_.fewestSweeps();
+    stats.budgetPredicted = budget_.predictedSolveTime();
+    stats.budgetMeasured = (MeReal)us;
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  StepBudget &budget_;
+  Clock::time_point start_{};
+};
+
+}  // namespace karma::mdt
