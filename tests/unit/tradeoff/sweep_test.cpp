@@ -33,6 +33,19 @@ TEST(TradeoffSweep, TheIssuesExampleExpandsToEveryCombination) {
   EXPECT_DOUBLE_EQ(s[63].epsilon, 0.1);
 }
 
+TEST(TradeoffSweep, ABudgetIsASolverSetting) {
+  std::vector<Setting> s;
+  std::string error;
+  ASSERT_TRUE(ParseSweep("solver=budget:300,exact:8", s, error)) << error;
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].label(), "budget:300 h=1/60");
+  EXPECT_DOUBLE_EQ(s[0].budget, 300);
+  EXPECT_EQ(s[0].iterations, 0);
+  EXPECT_DOUBLE_EQ(s[1].budget, 0);
+  EXPECT_FALSE(ParseSweep("solver=budget", s, error));
+  EXPECT_NE(error.find("budget:US"), std::string::npos);
+}
+
 TEST(TradeoffSweep, RangesAreGeometricWithTheirEndsExact) {
   std::vector<double> v;
   std::string error;

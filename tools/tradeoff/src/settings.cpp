@@ -32,7 +32,12 @@ bool ParseSolver(const std::string &text, Setting &s) {
     if (!ParseNumber(text.substr(colon + 1), v) || v < 1 || v != std::floor(v)) return false;
     n = (int)v;
   }
-  if (kind == "exact") {
+  s.budget = 0;
+  if (kind == "budget" && n > 0) {
+    s.method = MdtKeaMethodActiveSet;
+    s.budget = n;
+    n = 0;
+  } else if (kind == "exact") {
     s.method = MdtKeaMethodActiveSet;
   } else if ((kind == "iterative" || kind == "pgs") && n > 0) {
     s.method = MdtKeaMethodPGS;
@@ -51,7 +56,7 @@ bool Multiply(const std::string &name, const std::string &values, std::vector<Se
       for (const std::string &v : Split(values, ',')) {
         Setting s = base;
         if (!ParseSolver(v, s)) {
-          error = "bad solver '" + v + "' (exact, exact:N or iterative:N)";
+          error = "bad solver '" + v + "' (exact, exact:N, iterative:N or budget:US)";
           return false;
         }
         out.push_back(s);
@@ -172,6 +177,7 @@ std::string FormatStep(double h) {
 }
 
 std::string Setting::solver() const {
+  if (budget > 0) return "budget:" + FormatValue(budget);
   if (method == MdtKeaMethodPGS) return "iterative:" + std::to_string(iterations);
   return iterations > 0 ? "exact:" + std::to_string(iterations) : "exact";
 }
@@ -190,6 +196,7 @@ std::string Setting::label() const {
 void Setting::apply(MdtWorldID world) const {
   MdtWorldSetKeaMethod(world, method);
   MdtWorldSetKeaMaxIterations(world, iterations);
+  MdtWorldSetStepBudget(world, (MeReal)budget);
   if (!std::isnan(epsilon)) MdtWorldSetEpsilon(world, (MeReal)epsilon);
   if (!std::isnan(gamma)) MdtWorldSetGamma(world, (MeReal)gamma);
   if (!std::isnan(tolerance)) MdtWorldSetKeaTolerance(world, (MeReal)tolerance);

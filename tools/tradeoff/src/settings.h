@@ -3,11 +3,13 @@
 //
 // Sweep syntax: space-separated `knob=values`; every combination of the
 // knobs' values is one setting (the first knob varies slowest).
-//   solver     exact | exact:N | iterative:N
+//   solver     exact | exact:N | iterative:N | budget:US
 //              exact: Kea's active-set method (MdtKeaMethodActiveSet),
 //              exact:N caps it at N iterations (solves of the free block);
 //              iterative:N is projected Gauss-Seidel with N sweeps
 //              (MdtKeaMethodPGS). "pgs:N" is a synonym of iterative:N.
+//              budget:US lets the engine choose within US microseconds
+//              per MdtWorldStep (MdtWorldSetStepBudget).
 //   epsilon    constraint softness (MdtWorldSetEpsilon)
 //   gamma      constraint relaxation per step (MdtWorldSetGamma)
 //   h          step size in seconds (1/60 is accepted)
@@ -33,6 +35,7 @@ inline constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 struct Setting {
   MdtKeaMethod method = MdtKeaMethodActiveSet;
   int iterations = 0;       // 0: Kea's default cap
+  double budget = 0;        // microseconds per MdtWorldStep; 0: no budget
   double epsilon = kUnset;  // NaN: the scene's own
   double gamma = kUnset;
   double h = 1.0 / 60;
@@ -41,7 +44,7 @@ struct Setting {
   // "single" or "double" when a sweep runs both (--precision); empty
   // otherwise. Not a world setting: the precision of the build that ran.
   std::string precision;
-  // "exact", "exact:8", "iterative:50".
+  // "exact", "exact:8", "iterative:50", "budget:300".
   std::string solver() const;
   // The knobs that are set, e.g. "exact:8 epsilon=1e-3 h=1/120".
   std::string label() const;
