@@ -144,7 +144,7 @@ int main(int argc, char **argv) {
     const Outcome &o = fixedOut.back();
     std::printf("| %s | %.1f | %.2f | | | | |\n", s.name.c_str(), o.wholeMedian, o.error * 1e3);
   }
-  for (double fraction : {1.0, 0.6, 0.35, 0.2}) {
+  for (double fraction : {1.0, 0.85, 0.7, 0.55}) {
     const double budget = fraction * exactDynamics;
     char name[64];
     std::snprintf(name, sizeof name, "budget %.0f us (%.0f%% of exact)", budget, fraction * 100);
