@@ -130,5 +130,9 @@ void checkDirectParamWrites(MdtWorldID world);
 // above the auto-disable thresholds (sleep.cpp); called before partitions
 // are built. The accumulators of the bodies that stay disabled are cleared.
 void wakeDrivenBodies(MdtWorldID world);
+// The world as a diagnostic source (MeDiagnostics.h; world_diagnostics.cpp),
+// from MdtWorldCreate to MdtWorldDestroy.
+void registerWorldDiagnostics(MdtWorldID world);
+void unregisterWorldDiagnostics(MdtWorldID world);
 
 }  // namespace karma::mdt

@@ -79,11 +79,13 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
   w->priv = p;
   setDefaultParams(w->params, lengthScale, massScale);
   rememberCheckedParams(w);
+  registerWorldDiagnostics(w);
   return w;
 }
 
 void MEAPI MdtWorldDestroy(const MdtWorldID world) {
   if (!world) return;
+  unregisterWorldDiagnostics(world);
   MdtWorldPrivate *p = world->priv;
   MePoolDestroy(&p->constraints);  // constraints own nothing outside their slot
   MePoolDestroy(&p->bodies);       // every body goes with the pool

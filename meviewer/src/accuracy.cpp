@@ -2,11 +2,14 @@
  * table.
  *
  * After every tick RRun reads the program's source (RRenderSetAccuracySource)
- * when -accuracy or -profile asks for it. The overlay is two lines of text
+ * when -accuracy or -profile asks for it; a program that sets none is read
+ * through MeGlobals' diagnostic sources (MeDiagnostics.h: every dynamics
+ * world is one), several combined as the largest joint error, penetration
+ * and residual and the summed energy drift. The overlay is two lines of text
  * on a dark panel to the right of the performance bar (x from 330 of the
  * 640 2D units, the bar's rows): joint error and deepest penetration in
- * millimetres, energy drift in joules and the solver's residual. Without a
- * source it says so. The -profile table splits the frames read into four
+ * millimetres, energy drift in joules and the solver's residual. Without
+ * any source it says so. The -profile table splits the frames read into four
  * quarters (the run's phases) and prints, per figure, the largest
  * magnitude in each quarter and the value at the end. */
 #include "viewer_internal.h"
@@ -33,15 +36,32 @@ constexpr FigureRow kRows[] = {{"joint error", &RAccuracyFigures::jointError, 1e
                                {"energy drift", &RAccuracyFigures::energyDrift, 1, "J"},
                                {"residual", &RAccuracyFigures::residual, 1, ""}};
 
+/* The registered diagnostic sources combined; false when there are none. */
+bool ReadDiagnosticSources(RAccuracyFigures &f) {
+  const int n = MeDiagnosticSourceCount();
+  for (int i = 0; i < n; ++i) {
+    MeDiagnosticFigures d;
+    MeDiagnosticSourceRead(i, &d);
+    f.jointError = std::max(f.jointError, d.jointError);
+    f.penetration = std::max(f.penetration, d.penetration);
+    f.energyDrift += d.energyDrift;
+    f.residual = std::max(f.residual, d.residual);
+  }
+  return n > 0;
+}
+
 }  // namespace
 
 void SampleAccuracy(RRender *rc) {
   RRenderPrivate *p = rc->m_pPrivate;
   AccuracyState &a = p->accuracy;
   const bool wanted = p->options.accuracy || p->options.backend == BackendKind::Profile;
-  if (!wanted || !a.source) return;
+  if (!wanted) return;
   RAccuracyFigures f{};
-  a.source(&f, a.data);
+  if (a.source)
+    a.source(&f, a.data);
+  else if (!ReadDiagnosticSources(f))
+    return;
   a.last = f;
   a.have = true;
   a.frames.push_back(f);
@@ -65,7 +85,7 @@ std::vector<RGraphic *> AccuracyOverlay(RRender *rc) {
                   double(f.residual));
   } else {
     std::snprintf(line1, sizeof line1, "accuracy: no figures from the program");
-    std::snprintf(line2, sizeof line2, "(it sets none: RRenderSetAccuracySource)");
+    std::snprintf(line2, sizeof line2, "(no world, no RRenderSetAccuracySource)");
   }
   detach(RGraphicTextCreate(rc, line1, kX, kTop + 2, white));
   detach(RGraphicTextCreate(rc, line2, kX, kTop + 16, white));

@@ -13,6 +13,7 @@
 #define KARMA_MDTWORLD_H
 #include "MeCall.h"
 #include "MePrecision.h"
+#include "MeDiagnostics.h"
 #include <stddef.h>
 
 ME_EXTERN_C_BEGIN
@@ -130,6 +131,12 @@ MEPUBLIC MeReal MEAPI MdtWorldGetGamma(const MdtWorldID world);
 
 /* Statistics of the last step. */
 MEPUBLIC void MEAPI MdtWorldGetStepStats(const MdtWorldID world, MdtWorldStepStats *stats);
+/* The world's accuracy figures now (MeDiagnostics.h: largest point-joint
+ * gap, deepest contact penetration, energy drift since the first read,
+ * last step's solver residual). Every world is also listed as a diagnostic
+ * source from creation to destruction, which is how MeViewer's -accuracy
+ * and -profile find it. An extension. */
+MEPUBLIC void MEAPI MdtWorldGetDiagnostics(const MdtWorldID world, MeDiagnosticFigures *figures);
 
 /* The partitions of the last step, in solve order: how many, and the bodies
  * and solved row count of partition i. Bodies are listed in breadth-first

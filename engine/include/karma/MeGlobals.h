@@ -10,4 +10,5 @@
 #include "MeMessage.h"
 #include "MeCommandLineOptions.h"
 #include "MeProfile.h"
+#include "MeDiagnostics.h"
 #endif

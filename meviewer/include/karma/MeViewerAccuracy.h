@@ -8,17 +8,14 @@
  *   RAccuracyProbeAddJoint(probe, MdtBSJointQuaConstraint(joint));  (each joint to watch)
  *   RRun(rc, tick, 0);      run with -accuracy (overlay) or -profile (table)
  *
- * Per frame, after the tick:
- *   joint error   the largest distance between a watched joint's point as
- *                 carried by its two bodies (MdtConstraintBodyGetPosition)
- *   penetration   the deepest penetration of the contacts of the bodies
- *                 the last step solved (MdtBodyGetFirstContact)
- *   energy drift  sum over the bodies seen so far of 1/2 m v.v +
- *                 1/2 w.I w - m g.x, minus its value at the first frame
- *                 (a body first seen later joins at its then energy)
- *   residual      MdtWorldGetStepStats' keaResidual of the last step
- * Bodies are found through the last step's partitions (the enabled
- * bodies), so a world that never steps shows zeros. */
+ * Per frame, after the tick, the world's own figures (MdtWorldGetDiagnostics:
+ * largest point-joint gap, deepest contact penetration, energy drift, last
+ * step's residual), except that once joints are added the joint error is
+ * the largest gap of those joints alone (MdtConstraintBodyGetPosition). A
+ * program that makes no probe still gets the overlay: MeViewer then reads
+ * every world through MeGlobals' diagnostic sources (MeDiagnostics.h). A
+ * probe is for naming the joints to watch.
+ */
 #ifndef KARMA_MEVIEWER_ACCURACY_H
 #define KARMA_MEVIEWER_ACCURACY_H
 

@@ -2,7 +2,8 @@
 // MeViewerAccuracy.h against closed forms (a free fall's energy drift
 // under the integrator, a joint pulled apart by a known distance, a box
 // pressed into the ground), the -accuracy option, the overlay's text and
-// -profile's table per quarter of the run.
+// -profile's table per quarter of the run; a program with no probe read
+// through its worlds (MeDiagnostics.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -109,6 +110,57 @@ TEST(MeViewerAccuracy, ABoxPressedIntoTheGroundShowsThePenetration) {
   RAccuracyProbeDestroy(probe);
   MstUniverseDestroy(u);
   RRenderContextDestroy(rc);
+}
+
+// A world with a ball joint whose body 1 carries the joint's point `gap`
+// along x from where body 0 carries it.
+MdtWorldID JointWorld(MeReal gap) {
+  MdtWorldID world = MdtWorldCreate(2, 1, 1, 1);
+  MdtBodyID a = MdtBodyCreate(world), b = MdtBodyCreate(world);
+  MdtBodySetPosition(b, 1, 0, 0);
+  MdtBSJointID j = MdtBSJointCreate(world);
+  MdtBSJointSetBodies(j, a, b);
+  MdtBSJointSetPosition(j, (MeReal)0.5, 0, 0);
+  MdtBSJointEnable(j);
+  MdtBodySetPosition(b, 1 + gap, 0, 0);
+  return world;
+}
+
+TEST(MeViewerAccuracy, AProgramWithoutAProbeIsReadThroughItsWorlds) {
+  // No probe and no source: -accuracy reads every live world (MeDiagnostics.h),
+  // the largest joint gap of the two worlds.
+  RRender *rc = Context("-accuracy");
+  ASSERT_TRUE(rc);
+  const int before = MeDiagnosticSourceCount();
+  MdtWorldID w1 = JointWorld((MeReal)0.25), w2 = JointWorld((MeReal)0.1);
+  EXPECT_EQ(MeDiagnosticSourceCount(), before + 2);
+  karma::viewer::SampleAccuracy(rc);
+  const karma::viewer::AccuracyState &a = rc->m_pPrivate->accuracy;
+  ASSERT_TRUE(a.have);
+  EXPECT_NEAR(a.last.jointError, 0.25, 1e-6);
+  EXPECT_EQ(a.last.penetration, 0);
+  EXPECT_EQ(a.last.energyDrift, 0);  // the first read
+  MdtWorldDestroy(w1);
+  EXPECT_EQ(MeDiagnosticSourceCount(), before + 1);
+  karma::viewer::SampleAccuracy(rc);
+  EXPECT_NEAR(a.last.jointError, 0.1, 1e-6);
+  MdtWorldDestroy(w2);
+  EXPECT_EQ(MeDiagnosticSourceCount(), before);
+  RRenderContextDestroy(rc);
+}
+
+TEST(MeViewerAccuracy, TheWorldsFiguresSkipJointsWhosePointsNeedNotMeet) {
+  // A spring's two ends are apart by design: no joint error from it.
+  MdtWorldID world = MdtWorldCreate(2, 1, 1, 1);
+  MdtBodyID a = MdtBodyCreate(world), b = MdtBodyCreate(world);
+  MdtBodySetPosition(b, 2, 0, 0);
+  MdtSpringID s = MdtSpringCreate(world);
+  MdtSpringSetBodies(s, a, b);
+  MdtSpringEnable(s);
+  MeDiagnosticFigures f;
+  MdtWorldGetDiagnostics(world, &f);
+  EXPECT_EQ(f.jointError, 0);
+  MdtWorldDestroy(world);
 }
 
 TEST(MeViewerAccuracy, ProfileTableGivesEachQuartersLargestMagnitude) {
