@@ -27,9 +27,10 @@ struct EnergyLedger {
   double drift = 0;
 };
 
+// Never destroyed, like the source list (a world may outlive static destruction).
 std::unordered_map<MdtWorldID, EnergyLedger> &ledgers() {
-  static std::unordered_map<MdtWorldID, EnergyLedger> map;
-  return map;
+  static auto *map = new std::unordered_map<MdtWorldID, EnergyLedger>;
+  return *map;
 }
 
 double bodyEnergy(const MdtBody *b, const MeVector3 g) {

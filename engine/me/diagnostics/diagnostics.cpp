@@ -13,10 +13,11 @@ struct Source {
   MeDiagnosticRead read;
 };
 
-// Registration order; owners unique.
+// Registration order; owners unique. Never destroyed, so a world destroyed
+// during static destruction can still unregister.
 std::vector<Source> &sources() {
-  static std::vector<Source> list;
-  return list;
+  static std::vector<Source> *list = new std::vector<Source>;
+  return *list;
 }
 
 }  // namespace
