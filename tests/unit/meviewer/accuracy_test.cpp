@@ -67,17 +67,31 @@ TEST(MeViewerAccuracy, FreeFallDriftsByTheIntegratorsClosedForm) {
   RRenderContextDestroy(rc);
 }
 
-TEST(MeViewerAccuracy, AJointPulledApartShowsItsGap) {
-  RRender *rc = Context();
+// A world with an enabled ball joint whose body 1 carries the joint's
+// point `gap` along x from where body 0 carries it.
+struct JointWorld {
+  MdtWorldID world;
+  MdtBSJointID joint;
+};
+
+JointWorld MakeJointWorld(MeReal gap) {
   MdtWorldID world = MdtWorldCreate(2, 1, 1, 1);
   MdtBodyID a = MdtBodyCreate(world), b = MdtBodyCreate(world);
   MdtBodySetPosition(b, 1, 0, 0);
   MdtBSJointID j = MdtBSJointCreate(world);
   MdtBSJointSetBodies(j, a, b);
   MdtBSJointSetPosition(j, (MeReal)0.5, 0, 0);
+  MdtBSJointEnable(j);
+  MdtBodySetPosition(b, 1 + gap, 0, 0);
+  return {world, j};
+}
+
+TEST(MeViewerAccuracy, AJointPulledApartShowsItsGap) {
+  RRender *rc = Context();
+  const JointWorld jw = MakeJointWorld((MeReal)0.25);
+  MdtWorldID world = jw.world;
   RAccuracyProbe *probe = RAccuracyProbeCreate(rc, world);
-  RAccuracyProbeAddJoint(probe, MdtBSJointQuaConstraint(j));
-  MdtBodySetPosition(b, (MeReal)1.25, 0, 0);  // body 1 carries the joint's point 0.25 m along x
+  RAccuracyProbeAddJoint(probe, MdtBSJointQuaConstraint(jw.joint));
   RAccuracyFigures f{};
   RAccuracyProbeRead(probe, &f);
   EXPECT_NEAR(f.jointError, 0.25, 1e-6);
@@ -112,27 +126,13 @@ TEST(MeViewerAccuracy, ABoxPressedIntoTheGroundShowsThePenetration) {
   RRenderContextDestroy(rc);
 }
 
-// A world with a ball joint whose body 1 carries the joint's point `gap`
-// along x from where body 0 carries it.
-MdtWorldID JointWorld(MeReal gap) {
-  MdtWorldID world = MdtWorldCreate(2, 1, 1, 1);
-  MdtBodyID a = MdtBodyCreate(world), b = MdtBodyCreate(world);
-  MdtBodySetPosition(b, 1, 0, 0);
-  MdtBSJointID j = MdtBSJointCreate(world);
-  MdtBSJointSetBodies(j, a, b);
-  MdtBSJointSetPosition(j, (MeReal)0.5, 0, 0);
-  MdtBSJointEnable(j);
-  MdtBodySetPosition(b, 1 + gap, 0, 0);
-  return world;
-}
-
 TEST(MeViewerAccuracy, AProgramWithoutAProbeIsReadThroughItsWorlds) {
   // No probe and no source: -accuracy reads every live world (MeDiagnostics.h),
   // the largest joint gap of the two worlds.
   RRender *rc = Context("-accuracy");
   ASSERT_TRUE(rc);
   const int before = MeDiagnosticSourceCount();
-  MdtWorldID w1 = JointWorld((MeReal)0.25), w2 = JointWorld((MeReal)0.1);
+  MdtWorldID w1 = MakeJointWorld((MeReal)0.25).world, w2 = MakeJointWorld((MeReal)0.1).world;
   EXPECT_EQ(MeDiagnosticSourceCount(), before + 2);
   karma::viewer::SampleAccuracy(rc);
   const karma::viewer::AccuracyState &a = rc->m_pPrivate->accuracy;
