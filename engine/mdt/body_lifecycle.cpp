@@ -99,7 +99,7 @@ void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   if (body->collisionModel && p->bodyDestroyCB) p->bodyDestroyCB(body, body->collisionModel);
   // Constraints still attached would point at a dead body: disable them and
   // leave them without bodies (the program may set new ones or destroy them).
-  for (void *s = MePoolGetNextUsed(&p->constraints, nullptr); s; s = MePoolGetNextUsed(&p->constraints, s)) {
+  for (void *s = nextConstraintSlot(p, nullptr); s; s = nextConstraintSlot(p, s)) {
     auto *c = static_cast<MdtConstraint *>(s);
     if (c->body[0] != body && c->body[1] != body) continue;
     if (c->enabled) MeWarning(0, "MdtBodyDestroy: an enabled %s still used this body; it was disabled", c->type->name);

@@ -39,8 +39,8 @@ void resetBase(MdtConstraint *c) {
 
 MdtConstraint *createConstraint(MdtWorldID world, const ConstraintType &type) {
   MdtWorldPrivate *p = world->priv;
-  void *slot = MePoolGetStruct(&p->constraints);
-  if (!slot) return nullptr;  // the pool has warned once
+  void *slot = takeConstraintSlot(p);
+  if (!slot) return nullptr;  // out of memory (warned)
   std::memset(slot, 0, p->constraintSlotSize);
   auto *c = static_cast<MdtConstraint *>(slot);
   c->type = &type;
@@ -107,7 +107,7 @@ const char *MEAPI MdtConstraintTypeName(const MdtConstraintType t) {
 void MEAPI MdtConstraintDestroy(const MdtConstraintID c) {
   if (!c) return;
   if (c->type->destroy) c->type->destroy(c);
-  MePoolPutStruct(&c->world->priv->constraints, c);
+  releaseConstraintSlot(c->world->priv, c);
 }
 
 void MEAPI MdtConstraintEnable(const MdtConstraintID c) {
@@ -190,7 +190,7 @@ MeI32 MEAPI MdtConstraintGetSortKey(const MdtConstraintID c) {
 
 unsigned int MEAPI MdtWorldGetConstraintCount(const MdtWorldID world) {
   ME_REQUIRE_ARG_RET(world != nullptr, 0u, "MdtWorldGetConstraintCount", "world is NULL");
-  return (unsigned int)MePoolGetUsed(&world->priv->constraints);
+  return (unsigned int)usedConstraintSlots(world->priv);
 }
 
 unsigned int MEAPI MdtWorldGetMaxConstraints(const MdtWorldID world) {

@@ -167,6 +167,22 @@ namespace karma::mdt {
 const ConstraintType *const *allConstraintTypes();
 unsigned largestConstraintSize();
 
+// Slots (constraint_slots.cpp). Every constraint lives in a slot of its
+// world's constraint pools; the pools grow when full (reported once per
+// world), and a slot keeps its address until it is released.
+//   takeConstraintSlot: a free slot, or nullptr (with a warning) only when
+//     memory runs out;
+//   releaseConstraintSlot: gives a slot back (one not in the pools is ignored);
+//   nextConstraintSlot: the used slot after `slot` (nullptr: the first), in a
+//     fixed order, nullptr at the end;
+//   usedConstraintSlots: how many are in use;
+//   releaseConstraintPools: frees every pool (the world's end).
+void *takeConstraintSlot(MdtWorldPrivate *p);
+void releaseConstraintSlot(MdtWorldPrivate *p, void *slot);
+void *nextConstraintSlot(MdtWorldPrivate *p, void *slot);
+int usedConstraintSlots(const MdtWorldPrivate *p);
+void releaseConstraintPools(MdtWorldPrivate *p);
+
 // Allocation: a new constraint of `type` in `world`, base and type reset;
 // NULL with a warning when the world's constraint pool is full.
 MdtConstraint *createConstraint(MdtWorldID world, const ConstraintType &type);

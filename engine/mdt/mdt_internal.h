@@ -59,11 +59,18 @@ struct MdtBody {
 
 namespace karma::mdt {
 struct StepScratch;
-}
+// Constraint pools a world may have: the first and up to this many grown
+// ones, each doubling the slots (constraint_slots.cpp).
+inline constexpr int kMaxConstraintPools = 24;
+}  // namespace karma::mdt
 
 struct MdtWorldPrivate {
   MePool bodies;
   MePool constraints;  // every constraint type, slots of the largest size
+  // Pools added when `constraints` is full (constraint_slots.cpp).
+  MePool overflow[karma::mdt::kMaxConstraintPools];
+  int overflowCount;
+  MeBool grewConstraints;  // the growth has been reported
   unsigned constraintSlotSize;
   std::uint64_t nextConstraintSerial;
   karma::mdt::StepScratch *scratch;  // step work arrays, reused across steps

@@ -87,7 +87,7 @@ void MEAPI MdtWorldDestroy(const MdtWorldID world) {
   if (!world) return;
   unregisterWorldDiagnostics(world);
   MdtWorldPrivate *p = world->priv;
-  MePoolDestroy(&p->constraints);  // constraints own nothing outside their slot
+  releaseConstraintPools(p);  // constraints own nothing outside their slot
   MePoolDestroy(&p->bodies);       // every body goes with the pool
   delete p->scratch;
   MeMemoryAPI.destroy(p);

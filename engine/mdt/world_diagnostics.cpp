@@ -84,8 +84,8 @@ bool active(const MdtConstraint *c) { return c->owner ? c->owner->enabled : c->e
 
 void jointsAndContacts(MdtWorldID world, MeDiagnosticFigures &f) {
   double gap = 0, deepest = 0;
-  MePool *pool = &world->priv->constraints;
-  for (void *slot = MePoolGetNextUsed(pool, nullptr); slot; slot = MePoolGetNextUsed(pool, slot)) {
+  MdtWorldPrivate *p = world->priv;
+  for (void *slot = nextConstraintSlot(p, nullptr); slot; slot = nextConstraintSlot(p, slot)) {
     auto *c = static_cast<MdtConstraint *>(slot);
     if (!active(c) || !c->body[0]) continue;
     if (c->type->id == MdtConstraintTypeContact) {

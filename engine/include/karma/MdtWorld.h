@@ -101,10 +101,12 @@ struct MdtWorld {
   struct MdtWorldPrivate *priv; /* opaque */
 };
 
-/* Creates a world that can hold up to maxBodies bodies and maxConstraints
- * constraints. lengthScale and massScale must be positive and finite; they
- * scale the defaults. Returns NULL with a warning on bad arguments or when
- * memory runs out. */
+/* Creates a world that can hold up to maxBodies bodies and, to begin with,
+ * maxConstraints constraints: when more constraints (contacts included) are
+ * made, the world grows its constraint storage, doubling it, and warns once
+ * (an extension: Karma 1.2 refused them). lengthScale and massScale must be
+ * positive and finite; they scale the defaults. Returns NULL with a warning
+ * on bad arguments or when memory runs out. */
 MEPUBLIC MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int maxConstraints,
                                          const MeReal lengthScale, const MeReal massScale);
 /* Destroys the world and every body still in it. NULL is ignored. */

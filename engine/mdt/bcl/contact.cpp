@@ -304,8 +304,8 @@ bool touching(const MdtConstraint *con, const MdtBody *body) {
 }
 
 MdtContactID scanFrom(const MdtBodyID body, void *slot) {
-  MePool *pool = &body->world->priv->constraints;
-  for (void *s = MePoolGetNextUsed(pool, slot); s; s = MePoolGetNextUsed(pool, s)) {
+  MdtWorldPrivate *p = body->world->priv;
+  for (void *s = nextConstraintSlot(p, slot); s; s = nextConstraintSlot(p, s)) {
     auto *con = static_cast<MdtConstraint *>(s);
     if (touching(con, body)) return static_cast<MdtContact *>(con);
   }

@@ -50,7 +50,7 @@ void destroy(MdtConstraint *c) {
   while (k) {
     MdtContact *next = k->next;
     k->owner = nullptr;
-    MePoolPutStruct(&c->world->priv->constraints, k);
+    releaseConstraintSlot(c->world->priv, k);
     k = next;
   }
 }

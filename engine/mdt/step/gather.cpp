@@ -34,8 +34,7 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
   // enables the disabled one; repeat until nothing changes (chains wake
   // through). Sorted order keeps this deterministic.
   s.constraints.clear();
-  for (void *slot = MePoolGetNextUsed(&p->constraints, nullptr); slot;
-       slot = MePoolGetNextUsed(&p->constraints, slot)) {
+  for (void *slot = nextConstraintSlot(p, nullptr); slot; slot = nextConstraintSlot(p, slot)) {
     auto *c = static_cast<MdtConstraint *>(slot);
     if (c->enabled && !c->owner && c->body[0] && c->body[1]) s.constraints.push_back(c);
   }
@@ -60,8 +59,7 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
   }
   std::sort(s.bodies.begin(), s.bodies.end(), bodyBefore);
   s.constraints.clear();
-  for (void *slot = MePoolGetNextUsed(&p->constraints, nullptr); slot;
-       slot = MePoolGetNextUsed(&p->constraints, slot)) {
+  for (void *slot = nextConstraintSlot(p, nullptr); slot; slot = nextConstraintSlot(p, slot)) {
     auto *c = static_cast<MdtConstraint *>(slot);
     if (simulated(c)) s.constraints.push_back(c);
   }

@@ -1,0 +1,98 @@
+// constraint_slots.cpp: the world's constraint slots (constraint.h,
+// "Slots").
+//
+// The first pool holds MdtWorldCreate's maxConstraints slots. When it is
+// full, the world grows rather than dropping what the program (or the
+// collision bridge, for contacts) asks for: another pool is added, as large
+// as all the slots so far (so the total doubles), and the growth is reported
+// once per world. A constraint keeps its slot, and so its address, for its
+// whole life; pools are only released with the world. Slots are handed out
+// from the earliest pool with a free one, and walked pool by pool, each in
+// MePool's order, so the order depends only on the calls made.
+#include <climits>
+#include <cstddef>
+
+#include "MeMessage.h"
+#include "constraint.h"
+#include "mdt_internal.h"
+
+namespace karma::mdt {
+
+namespace {
+
+// The pool that holds `slot`, or nullptr.
+MePool *ownerPool(MdtWorldPrivate *p, const void *slot) {
+  const auto *s = static_cast<const unsigned char *>(slot);
+  for (int k = -1; k < p->overflowCount; ++k) {
+    MePool *pool = k < 0 ? &p->constraints : &p->overflow[k];
+    const auto *begin = static_cast<const unsigned char *>(pool->memory);
+    if (begin && s >= begin && s < begin + (size_t)pool->maxCount * (size_t)pool->stride) return pool;
+  }
+  return nullptr;
+}
+
+MePool *poolAt(MdtWorldPrivate *p, int k) { return k < 0 ? &p->constraints : &p->overflow[k]; }
+
+// Adds an overflow pool as large as every slot so far; false when it cannot.
+bool grow(MdtWorldPrivate *p) {
+  if (p->overflowCount >= kMaxConstraintPools) return false;
+  long total = p->constraints.maxCount;
+  for (int k = 0; k < p->overflowCount; ++k) total += p->overflow[k].maxCount;
+  const int size = (int)(total < 16 ? 16 : total > INT_MAX / 4 ? INT_MAX / 4 : total);
+  MePool *pool = &p->overflow[p->overflowCount];
+  if (!MePoolInit(pool, size, (int)p->constraintSlotSize, (int)alignof(std::max_align_t))) return false;
+  MePoolSetName(pool, "MdtWorld constraints (grown)");
+  ++p->overflowCount;
+  if (!p->grewConstraints) {
+    MeWarning(0,
+              "MdtWorld: the %u constraint slots of MdtWorldCreate are all in use; the world grew to %ld "
+              "(reported once per world: size the world for the scene to avoid growing)",
+              p->maxConstraints, total + size);
+    p->grewConstraints = TRUE;
+  }
+  return true;
+}
+
+}  // namespace
+
+void *takeConstraintSlot(MdtWorldPrivate *p) {
+  for (int k = -1; k < p->overflowCount; ++k)
+    if (poolAt(p, k)->freeCount > 0) return MePoolGetStruct(poolAt(p, k));
+  if (!grow(p)) {
+    MeWarning(0, "MdtWorld: out of memory for more constraints; the constraint was not made");
+    return nullptr;
+  }
+  return MePoolGetStruct(&p->overflow[p->overflowCount - 1]);
+}
+
+void releaseConstraintSlot(MdtWorldPrivate *p, void *slot) {
+  MePool *pool = ownerPool(p, slot);
+  if (pool) MePoolPutStruct(pool, slot);
+}
+
+void *nextConstraintSlot(MdtWorldPrivate *p, void *slot) {
+  int k = -1;
+  if (slot) {
+    MePool *pool = ownerPool(p, slot);
+    if (!pool) return nullptr;
+    if (void *next = MePoolGetNextUsed(pool, slot)) return next;
+    k = pool == &p->constraints ? 0 : (int)(pool - p->overflow) + 1;
+  }
+  for (; k < p->overflowCount; ++k)
+    if (void *first = MePoolGetNextUsed(poolAt(p, k), nullptr)) return first;
+  return nullptr;
+}
+
+int usedConstraintSlots(const MdtWorldPrivate *p) {
+  int used = MePoolGetUsed(&p->constraints);
+  for (int k = 0; k < p->overflowCount; ++k) used += MePoolGetUsed(&p->overflow[k]);
+  return used;
+}
+
+void releaseConstraintPools(MdtWorldPrivate *p) {
+  MePoolDestroy(&p->constraints);
+  for (int k = 0; k < p->overflowCount; ++k) MePoolDestroy(&p->overflow[k]);
+  p->overflowCount = 0;
+}
+
+}  // namespace karma::mdt
