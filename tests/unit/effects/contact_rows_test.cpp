@@ -4,6 +4,7 @@
 // costs what the frictionless contact type costs and moves the same; a
 // contact without restitution does no bounce work (engine/mdt/bcl/contact.cpp).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "step/step_scene.h"
@@ -16,13 +17,14 @@ using step_test::Scene;
 // The friction set-ups of the tests, applied to the universe's default
 // material pair.
 enum class Friction {
-  TypeZero,    // MdtContactTypeFrictionZero: the reference
-  MuZero,      // Friction2D, NormalForce model, mu = 0 in both directions
-  MuOne,       // Friction2D, NormalForce model, mu = 1 in both directions
-  BoxZero,     // Friction2D, Box model, limit 0 in both directions
-  BoxPrimary,  // Friction2D, Box model, limit 1 along the primary, 0 along the secondary
-  OneDMuZero,  // Friction1D, NormalForce model, mu = 0
-  OneDMuOne,   // Friction1D, NormalForce model, mu = 1
+  TypeZero,      // MdtContactTypeFrictionZero: the reference
+  MuZero,        // Friction2D, NormalForce model, mu = 0 in both directions
+  MuOne,         // Friction2D, NormalForce model, mu = 1 in both directions
+  BoxZero,       // Friction2D, Box model, limit 0 in both directions
+  BoxPrimary,    // Friction2D, Box model, limit 1 along the primary, 0 along the secondary
+  BoxSecondary,  // Friction2D, Box model, limit 0 along the primary, 1 along the secondary
+  OneDMuZero,    // Friction1D, NormalForce model, mu = 0
+  OneDMuOne,     // Friction1D, NormalForce model, mu = 1
 };
 
 void setFriction(MstUniverseID u, Friction f) {
@@ -44,9 +46,10 @@ void setFriction(MstUniverseID u, Friction f) {
       MdtContactParamsSetFriction(p, 0);
       return;
     case Friction::BoxPrimary:
+    case Friction::BoxSecondary:
       MdtContactParamsSetType(p, MdtContactTypeFriction2D);
-      MdtContactParamsSetPrimaryFriction(p, 1);
-      MdtContactParamsSetSecondaryFriction(p, 0);
+      MdtContactParamsSetPrimaryFriction(p, f == Friction::BoxPrimary ? 1 : 0);
+      MdtContactParamsSetSecondaryFriction(p, f == Friction::BoxPrimary ? 0 : 1);
       return;
     case Friction::OneDMuZero:
     case Friction::OneDMuOne:
@@ -110,6 +113,33 @@ TEST(ContactRows, ADirectionWithZeroBoundWritesNoRow) {
   EXPECT_EQ(primaryOnly.rows, 8);  // the secondary direction (limit 0) has none
   EXPECT_EQ(oneDZero.rows, 4);
   EXPECT_EQ(oneDOne.rows, 8);
+}
+
+TEST(ContactRows, TheMemoryOfAContactKeepsEachImpulseOnItsOwnDirection) {
+  // Primary limit 0, secondary 1: the one friction row written is the
+  // secondary's, and the contact remembers its impulse along d2, never d1.
+  Scene s;
+  setFriction(s.u, Friction::BoxSecondary);
+  McdModelID box = s.box(1, 1, 1, 0, (MeReal)0.5, 0);
+  MdtBodySetLinearVelocity(McdModelGetBody(box), 1, 0, 1);
+  s.step(5);
+  MdtWorldStepStats st;
+  MdtWorldGetStepStats(s.u->world, &st);
+  MdtContactID c[16];
+  const int n = Contacts(box, c, 16);
+  ASSERT_EQ(n, 4);
+  EXPECT_EQ(st.rows, 8);
+  double carried = 0;
+  for (int i = 0; i < n; ++i) {
+    MeVector3 friction, d1, normal, d2;
+    MdtContactGetImpulse(c[i], friction);
+    MdtContactGetDirection(c[i], d1);
+    MdtContactGetNormal(c[i], normal);
+    MeVector3Cross(d2, normal, d1);
+    EXPECT_NEAR(MeVector3Dot(friction, d1), 0, 1e-6) << "contact " << i;
+    carried += std::fabs((double)MeVector3Dot(friction, d2));
+  }
+  EXPECT_GT(carried, 1e-3);  // the secondary row did act
 }
 
 TEST(ContactRows, ZeroFrictionMovesAsTheFrictionlessType) {
