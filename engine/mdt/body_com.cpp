@@ -32,6 +32,7 @@ void updateInertia(MdtBody *b) {
     }
   MeMatrix3Copy(b->inertia, tmp);
   MeMatrix3Inverse(b->invInertia, tmp);  // positive definite, checked on the way in
+  classifyInertia(b);
 }
 
 }  // namespace karma::mdt

@@ -24,6 +24,13 @@
 //
 // Constraint impulses are added between the velocity prediction and the
 // position update (step.cpp): w' = wPred + Iw^-1 J^T lambda.
+//
+// Effects by need: the gyroscopic term is computed only where
+// gyroscopicActs says it can change the result (gyroscopic.cpp: not for a
+// spherical inertia, nor at a spin where it is below rounding, and as the
+// body's MdtBodySetGyroscopicMode says); without it the body turns about w1
+// and keeps w1 (plainRotationTurn). Damping is applied only where its
+// coefficient is not zero (a zero coefficient adds -0 v: nothing).
 #include "MeMessage.h"
 #include "mdt_internal.h"
 
@@ -95,7 +102,7 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
   // Linear velocity.
   MeVector3 f;
   MeVector3Copy(f, b->force);
-  MeVector3MultiplyAdd(f, -b->linearDamping, b->velocity);
+  if (b->linearDamping != 0) MeVector3MultiplyAdd(f, -b->linearDamping, b->velocity);
   MeVector3 a;
   MeVector3Copy(a, gravity);
   MeVector3MultiplyAdd(a, b->invMass, f);
@@ -106,35 +113,26 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
   // Angular velocity.
   MeVector3 tau;
   MeVector3Copy(tau, b->torque);
-  MeVector3MultiplyAdd(tau, -b->angularDamping, b->angularVelocity);
+  if (b->angularDamping != 0) MeVector3MultiplyAdd(tau, -b->angularDamping, b->angularVelocity);
   MeVector3MultiplyScalar(tmp, tau, h);
   MeVector3Add(tmp, tmp, b->angularImpulse);
   MeVector3 dw;
   applyBodyTensor(dw, b, b->invInertia, tmp);
   MeVector3Add(b->wPred, b->angularVelocity, dw);
-  {
+  if (b->fastSpinEnabled && gyroscopicActs(b, b->angularVelocity, h)) {
     MeMatrix3 Iw;  // world-frame inertia
     for (int k = 0; k < 3; ++k) {
       MeVector3 e = {0, 0, 0};
       e[k] = 1;
       applyBodyTensor(Iw[k], b, b->inertia, e);  // symmetric: row k = column k
     }
-    if (b->fastSpinEnabled) {
-      gyroscopicStep(b, Iw, h, dw);
-      MeVector3Add(b->wPred, b->wPred, dw);
-    }
+    gyroscopicStep(b, Iw, h, dw);
+    MeVector3Add(b->wPred, b->wPred, dw);
   }
 
   // World-frame inverse inertia for the constraint response:
   // (R^T Ib R + h^2 K)^-1, with K the body's geometric stiffness (zero
   // unless the step's stabilisation filled it; see stabilize.cpp).
-  MeMatrix3 Iw;
-  for (int k = 0; k < 3; ++k) {
-    MeVector3 e = {0, 0, 0}, col;
-    e[k] = 1;
-    applyBodyTensor(col, b, b->inertia, e);
-    for (int r = 0; r < 3; ++r) Iw[r][k] = col[r] + h * h * b->geomStiffness[r][k];
-  }
   if (MeMatrix3IsZero3(b->geomStiffness)) {
     for (int k = 0; k < 3; ++k) {
       MeVector3 e = {0, 0, 0}, col;
@@ -142,7 +140,16 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
       applyBodyTensor(col, b, b->invInertia, e);
       for (int r = 0; r < 3; ++r) b->invInertiaWorld[r][k] = col[r];
     }
-  } else if (!MeMatrix3Inverse(b->invInertiaWorld, Iw)) {
+    return;
+  }
+  MeMatrix3 Iw;
+  for (int k = 0; k < 3; ++k) {
+    MeVector3 e = {0, 0, 0}, col;
+    e[k] = 1;
+    applyBodyTensor(col, b, b->inertia, e);
+    for (int r = 0; r < 3; ++r) Iw[r][k] = col[r] + h * h * b->geomStiffness[r][k];
+  }
+  if (!MeMatrix3Inverse(b->invInertiaWorld, Iw)) {
     MeMatrix3MakeIdentity(b->invInertiaWorld);  // unreachable: Iw is positive definite
   }
 }
@@ -180,6 +187,10 @@ void advanceBody(MdtBody *b, MeReal h) {
     MeVector3Subtract(perp, w1, par);
     MeQuaternionFiniteRotation(q1, par, h);
     MeQuaternionFiniteRotation(q1, perp, h);
+  } else if (!gyroscopicActs(b, w1, h)) {
+    MeVector3 turn;
+    plainRotationTurn(w1, h, turn);
+    MeQuaternionFiniteRotation(q1, turn, h);
   } else {
     MeVector3 turn, wEndBody;
     freeRotationDrift(b, w1, h, turn, wEndBody);

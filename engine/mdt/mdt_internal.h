@@ -37,6 +37,13 @@ struct MdtBody {
   MeReal angularDamping;
   MeVector3 fastSpinAxis;
   MeBool fastSpinEnabled;
+  MdtGyroscopicMode gyroscopicMode;
+  // Classification of `inertia` for the gyroscopic rules (gyroscopic.cpp),
+  // kept by updateInertia: spherical within a relative 1e-6, exactly
+  // spherical, and the infinity norm of invInertia.
+  MeBool inertiaSpherical;
+  MeBool inertiaExactlySpherical;
+  MeReal invInertiaNorm;
   MeBool enabled;
   MeBool alive;          // TRUE from MdtBodyCreate to MdtBodyDestroy (stale handles are refused)
   MdtBody *nextRetired;  // destroyed bodies waiting for reuse, oldest first
@@ -125,6 +132,16 @@ void advanceBody(MdtBody *b, MeReal h);
 // over h, `wEndBody` the body-frame angular velocity at the end; the world
 // angular momentum and the kinetic energy are kept.
 void freeRotationDrift(const MdtBody *b, const MeVector3 w1, MeReal h, MeVector3 turn, MeVector3 wEndBody);
+// The torque-free turn of a body whose gyroscopic term is left out: the
+// world angular velocity w1 is held over h (rotation_drift.cpp), `turn` is
+// w1 with the same angle limit as freeRotationDrift.
+void plainRotationTurn(const MeVector3 w1, MeReal h, MeVector3 turn);
+// Sets b's inertia classification from b->inertia and b->invInertia
+// (gyroscopic.cpp); called by updateInertia.
+void classifyInertia(MdtBody *b);
+// Whether this step computes b's gyroscopic term at angular velocity w
+// (world frame), by its mode and the rules of gyroscopic.cpp.
+bool gyroscopicActs(const MdtBody *b, const MeVector3 w, MeReal h);
 // w = R^T (Ib (R v)): a world vector through a body-frame tensor.
 void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor, const MeVector3 v);
 

@@ -93,6 +93,12 @@ void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, M
 
 }  // namespace
 
+void plainRotationTurn(const MeVector3 w1, MeReal h, MeVector3 turn) {
+  MeVector3Copy(turn, w1);
+  const MeReal s = MeVector3Magnitude(w1);
+  if (h * s > 1) MeVector3Scale(turn, turnAngle(s, h) / (h * s));
+}
+
 void freeRotationDrift(const MdtBody *b, const MeVector3 w1, MeReal h, MeVector3 turn, MeVector3 wEndBody) {
   MeMatrix3 R;
   MeMatrix4TMGetRotation(R, b->tm);

@@ -111,6 +111,20 @@ bool isHard(const MdtSingleLimit &sl, MeReal threshold) {
 // coordinate up) and -1 for the upper stop. `gap` is the distance left
 // before the stop (negative: past it), `rate` the coordinate's rate.
 //
+// Rows only for effects that act. The guide: a limited joint costs a row
+// only while it "is at (or beyond) one of its limits", a motor only while
+// the joint "is actuated" (user guide, Constraints: Powering Joints; Appendix
+// D, Hinge). Here, "at" a hard stop means within reach this step:
+//   hard:  a row iff gap - approach * h <= 0 (the coordinate, moving at its
+//          current rate, would reach or pass the stop within the step; a
+//          bounce is then asked in that same row);
+//   soft:  a row iff gap <= 0 (the spring acts only past the stop);
+//   a side with stiffness and damping both 0 never makes a row;
+//   only the nearer stop is examined (addLimitRows).
+// A joint far from its stops therefore writes no limit row at all, and a
+// motor writes its row only when it is on: motorized and motorMaxForce > 0
+// (addLimitRows).
+//
 // Hard stops act speculatively: a row appears as soon as the coordinate
 // would pass the stop within this step, and then lets it close at most the
 // gap (speed -gap/h), so a stop of restitution 0 is reached, not overshot and

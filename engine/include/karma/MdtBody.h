@@ -8,7 +8,8 @@
  * Defaults of a new body (l, m: the world's length and mass scales):
  * disabled; mass m; inertia 0.4 m l^2 I; at the origin with the identity
  * orientation; at rest; no damping; fast-spin axis (0, 1, 0), not in use;
- * user data NULL; sort key 0; empty accumulators.
+ * gyroscopic mode MdtGyroscopicAuto; user data NULL; sort key 0; empty
+ * accumulators.
  *
  * Accumulators: MdtBodyAdd* adds into them; a step uses them on every
  * enabled body and then clears them. A disabled body keeps what was added
@@ -107,6 +108,30 @@ MEPUBLIC void MEAPI MdtBodySetFastSpinAxis(const MdtBodyID body, const MeReal x,
 MEPUBLIC void MEAPI MdtBodyGetFastSpinAxis(const MdtBodyID body, MeVector3 axis);
 MEPUBLIC void MEAPI MdtBodyDisableFastSpinAxis(const MdtBodyID body);
 MEPUBLIC MeBool MEAPI MdtBodyIsFastSpinAxisEnabled(const MdtBodyID body);
+
+/* Gyroscopic effect (an extension of this engine; not in Karma 1.2): the
+ * term w x Iw w of Euler's equation, by which a spinning body whose principal
+ * moments differ tumbles and precesses while its world angular momentum
+ * stays fixed. Without it a body keeps its world angular velocity and turns
+ * about it. The modes:
+ *   MdtGyroscopicAuto    (the default) computed, except when the body's
+ *                        three principal moments are equal within a relative
+ *                        1e-6 (the term is then zero, or within a few 1e-6 of
+ *                        zero) or when this step's spin makes it smaller than
+ *                        the rounding of the angular velocity:
+ *                        h |w x Iw w| |Ib^-1| <= epsilon |w|;
+ *   MdtGyroscopicAlways  computed at any spin; left out only when the three
+ *                        principal moments are exactly equal (the term is
+ *                        then exactly zero);
+ *   MdtGyroscopicNever   never computed.
+ * Any other value is rejected with a warning. */
+typedef enum MdtGyroscopicMode {
+  MdtGyroscopicAuto = 0,
+  MdtGyroscopicAlways = 1,
+  MdtGyroscopicNever = 2
+} MdtGyroscopicMode;
+MEPUBLIC void MEAPI MdtBodySetGyroscopicMode(const MdtBodyID body, const MdtGyroscopicMode mode);
+MEPUBLIC MdtGyroscopicMode MEAPI MdtBodyGetGyroscopicMode(const MdtBodyID body);
 
 /* ---- user data and ordering ----------------------------------------------- */
 

@@ -24,6 +24,13 @@
 //              friction1 (Box) or frictionCoefficient1 * normal force
 //              (NormalForce, tied to the normal row);
 //   secondary  along d2 = n x d1 (Friction2D), likewise.
+// Rows only for effects that act: a friction direction whose force bound is
+// identically zero (Box model with friction 0, NormalForce model with
+// coefficient 0) writes no row, since its impulse would be 0 whatever the
+// solve (lo = hi = 0); a contact with zero friction in every direction of
+// its type writes its normal row alone, exactly as MdtContactTypeFrictionZero.
+// A contact without restitution does no bounce work: no relative velocity
+// is measured for it and it never asks for a bounce (Row::bounceAfter = 0).
 // Warm start: each row starts from the contact's own memory of last step
 // (warmNormal; friction: warmFriction projected on d1 and d2).
 #include <cmath>
@@ -47,17 +54,28 @@ void resetContact(MdtContact *c) {
   MeVector3Set(c->warmFriction, 0, 0, 0);
 }
 
-int contactRowCount(const MdtContact *c) { return 1 + (int)c->params.type; }
+bool frictionActs(const MdtContactParams &p, int direction) {
+  if ((int)p.type <= direction) return false;
+  const bool box = (direction == 0 ? p.model1 : p.model2) == MdtFrictionModelBox;
+  const MeReal bound = box ? (direction == 0 ? p.friction1 : p.friction2)
+                           : (direction == 0 ? p.frictionCoefficient1 : p.frictionCoefficient2);
+  return bound > 0;
+}
+
+int contactRowCount(const MdtContact *c) {
+  return 1 + (frictionActs(c->params, 0) ? 1 : 0) + (frictionActs(c->params, 1) ? 1 : 0);
+}
 
 int storeContactImpulses(MdtContact *c, const MeReal *impulse, int n) {
   const int rows = contactRowCount(c) < n ? contactRowCount(c) : n;
   c->warmNormal = rows > 0 ? impulse[0] : 0;
   MeVector3Set(c->warmFriction, 0, 0, 0);
   if (rows > 1) {
-    MeVector3 d1, d2;
-    contactDirections(c, d1, d2);
-    MeVector3MultiplyAdd(c->warmFriction, impulse[1], d1);
-    if (rows > 2) MeVector3MultiplyAdd(c->warmFriction, impulse[2], d2);
+    MeVector3 d[2];
+    contactDirections(c, d[0], d[1]);
+    int r = 1;
+    for (int k = 0; k < 2 && r < rows; ++k)
+      if (frictionActs(c->params, k)) MeVector3MultiplyAdd(c->warmFriction, impulse[r++], d[k]);
   }
   return rows;
 }
@@ -107,6 +125,33 @@ void frictionRow(MdtContact *c, RowSink &sink, const StepContext &ctx, const Anc
   }
 }
 
+// The restitution of a touching contact (depth >= 0): e times the approach
+// speed when the bodies approach faster than velThreshold, else 0.
+MeReal touchingBounce(const MdtContact *c, const Row &n) {
+  const MdtContactParams &prm = c->params;
+  const MeReal vrel = rowVelocity(c, n);  // > 0: separating
+  return vrel < -prm.velThreshold ? -prm.restitution * vrel : 0;
+}
+
+// The restitution of a contact found apart (depth < 0, gap g = -depth):
+// when the impact falls within the step, at t = g / |vrel|, the step's
+// velocity takes the body where the bounce would have by the step's end and
+// the bounce speed itself is given after the positions move (bounceAfter);
+// otherwise the row keeps its speed -g / h.
+void speculativeBounce(const MdtContact *c, Row &n, const StepContext &ctx) {
+  const MdtContactParams &prm = c->params;
+  // The approach over the step is the mean of the velocities at its start
+  // and after the forces (gravity speeds a falling body up).
+  const MeReal approach = (MeReal)0.5 * (rowVelocity(c, n) + predictedRowVelocity(c, n));
+  const MeReal gap = -c->penetration;
+  const bool impact = -approach * ctx.h >= gap;
+  const MeReal bounce = approach < -prm.velThreshold ? -prm.restitution * approach : 0;
+  if (impact && bounce > 0) {
+    n.speed = bounce - gap * ctx.invH * (1 + prm.restitution);
+    n.bounceAfter = bounce;
+  }
+}
+
 }  // namespace
 
 void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
@@ -137,34 +182,22 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
   if (prm.softness > 0) n.softness = prm.softness;
   n.warm = c->warmNormal;
   n.warmSet = true;
-  const MeReal vrel = rowVelocity(c, n);  // > 0: separating
-  const MeReal bounce = (prm.restitution > 0 && vrel < -prm.velThreshold) ? -prm.restitution * vrel : 0;
   if (c->penetration < 0) {
-    // Apart: the approach over the step is the mean of the velocities at
-    // its start and after the forces (gravity speeds a falling body up).
-    const MeReal approach = (MeReal)0.5 * (vrel + predictedRowVelocity(c, n));
-    const MeReal gap = -c->penetration;
-    const bool impact = -approach * ctx.h >= gap;
-    const MeReal bounce = (prm.restitution > 0 && approach < -prm.velThreshold) ? -prm.restitution * approach : 0;
-    if (impact && bounce > 0) {
-      // The impact falls within the step, at t = gap / |vrel|: the step's
-      // velocity takes the body where the bounce would have by the step's
-      // end; the bounce speed itself is given after the positions move.
-      n.speed = bounce - gap * ctx.invH * (1 + prm.restitution);
-      n.bounceAfter = bounce;
-    } else {
-      n.speed = -gap * ctx.invH;  // close the gap, no further
-    }
+    n.speed = c->penetration * ctx.invH;  // -gap / h: close the gap, no further
+    if (prm.restitution > 0) speculativeBounce(c, n, ctx);
   } else {
     const MeReal correct = ctx.gamma * ctx.invH * c->penetration;
+    const MeReal bounce = prm.restitution > 0 ? touchingBounce(c, n) : 0;
     n.speed = bounce > correct ? bounce : correct;
   }
-  if (prm.type == MdtContactTypeFrictionZero) return;
+  const bool acts1 = frictionActs(prm, 0), acts2 = frictionActs(prm, 1);
+  if (!acts1 && !acts2) return;
   MeVector3 d1, d2;
   contactDirections(c, d1, d2);
-  frictionRow(c, sink, ctx, a, d1, normalRow, prm.model1, prm.friction1, prm.frictionCoefficient1, prm.slip1,
-              prm.slide1);
-  if (prm.type == MdtContactTypeFriction2D)
+  if (acts1)
+    frictionRow(c, sink, ctx, a, d1, normalRow, prm.model1, prm.friction1, prm.frictionCoefficient1, prm.slip1,
+                prm.slide1);
+  if (acts2)
     frictionRow(c, sink, ctx, a, d2, normalRow, prm.model2, prm.friction2, prm.frictionCoefficient2, prm.slip2,
                 prm.slide2);
 }

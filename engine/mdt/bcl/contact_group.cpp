@@ -32,8 +32,9 @@ int rowCapacity(const MdtConstraint *c) { return 3 * as<MdtContactGroup>(c)->cou
 void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContext &ctx) {
   auto *g = as<MdtContactGroup>(c);
   g->normalForce = 0;
-  // Walk the rows as addContactRows wrote them: a normal row, then 0-2
-  // friction rows (roles are not kept here, so recount from the params).
+  // Walk the rows as addContactRows wrote them: a normal row, then one row
+  // per friction direction that acts (roles are not kept here, so recount
+  // from the params: contactRowCount).
   int r = 0;
   for (MdtContact *k = g->first; k && r < n; k = k->next) {
     k->normalForce = impulse[r] * ctx.invH;

@@ -46,7 +46,12 @@ void resetContact(MdtContact *c);
 // the order addContactRows wrote them) as its warm-start memory; returns
 // the number of rows read.
 int storeContactImpulses(MdtContact *c, const MeReal *impulse, int n);
-// The number of rows addContactRows writes for c.
+// Whether addContactRows writes the friction row of `direction` (0: primary,
+// 1: secondary): the contact type has that direction and its force bound is
+// not identically zero (Box: friction > 0; NormalForce: coefficient > 0).
+bool frictionActs(const MdtContactParams &p, int direction);
+// The number of rows addContactRows writes for c: the normal row and one per
+// friction direction that acts.
 int contactRowCount(const MdtContact *c);
 
 }  // namespace karma::mdt

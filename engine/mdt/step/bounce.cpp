@@ -8,7 +8,9 @@
 //     A = J M^-1 J^T,  then v += M^-1 J^T dlambda,
 // solved exactly for the rows of one constraint together (up to
 // kSmallLcpMax: a face's corners share the bounce, so a box dropped flat
-// bounces flat), one constraint after another.
+// bounces flat), one constraint after another. A partition in which no row
+// asked for a bounce (no restitution, or no impact found apart) is not
+// walked at all.
 #include "small_lcp.h"
 #include "step.h"
 
@@ -73,6 +75,7 @@ void bounceTogether(const BodySpaceProblem &p, StepScratch &s, const Partition &
 }  // namespace
 
 void applyBounces(StepScratch &s, const Partition &part, const PartitionRows &rows, const BodySpaceProblem &p) {
+  if (rows.bounceRows == 0) return;
   for (int c = 0; c < part.constraintCount; ++c) {
     int ks[kSmallLcpMax], n = 0;
     MeReal b[kSmallLcpMax];

@@ -15,23 +15,29 @@ namespace {
 
 int rowCapacity(const MdtConstraint *c) { return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows; }
 
-bool allFinite(const Row *rows, int n) {
+// Whether every row is finite; adds the rows that ask for a bounce
+// (bounceAfter > 0) to *bounces.
+bool scanRows(const Row *rows, int n, int *bounces) {
   bool finite = true;
+  int asking = 0;
   for (int r = 0; r < n; ++r) {
     const Row &row = rows[r];
     for (int k = 0; k < 4; ++k) finite = finite && MeVector3AllFinite(row.J[k]);
     finite = finite && std::isfinite(row.speed) && std::isfinite(row.softness);
+    asking += row.bounceAfter > 0 ? 1 : 0;
   }
+  if (finite) *bounces += asking;
   return finite;
 }
 
-// Writes constraint c's rows at rows[n...]; returns how many it kept.
-int writeRows(MdtConstraint *c, Row *rows, const StepContext &ctx) {
+// Writes constraint c's rows at rows[n...]; returns how many it kept and
+// adds those that ask for a bounce to *bounces.
+int writeRows(MdtConstraint *c, Row *rows, const StepContext &ctx, int *bounces) {
   RowSink sink(rows, rowCapacity(c));
   c->type->addRows(c, sink, ctx);
   if (sink.overflowed())
     MeWarning(0, "MdtWorldStep: a %s wrote more rows than it declared; extra rows dropped", c->type->name);
-  if (!allFinite(sink.rows(), sink.count())) {
+  if (!scanRows(sink.rows(), sink.count(), bounces)) {
     MeWarning(0, "MdtWorldStep: a %s produced non-finite rows; it was skipped this step", c->type->name);
     return 0;
   }
@@ -51,7 +57,7 @@ PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &par
   int n = 0;
   out.constraintRowStart[0] = 0;
   for (int i = 0; i < nc; ++i) {
-    n += writeRows(cons[i], out.rows.data() + n, ctx);
+    n += writeRows(cons[i], out.rows.data() + n, ctx, &out.bounceRows);
     out.constraintRowStart[(size_t)i + 1] = n;
   }
   out.count = n;

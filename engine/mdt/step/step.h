@@ -59,6 +59,7 @@ struct PartitionRows {
   std::span<int> solveIndex;          // row -> index among the kept rows, or -1
   int count = 0;                      // rows written
   int kept = 0;                       // rows kept
+  int bounceRows = 0;                 // rows written with bounceAfter > 0 (stage 7b has work)
 };
 
 struct StepScratch {
@@ -107,7 +108,8 @@ void applyImpulses(StepScratch &s, const Partition &p, const PartitionRows &rows
                    const StepContext &ctx);
 // Stage 7.
 void integratePartition(StepScratch &s, const Partition &p, MeReal h);
-// Stage 7b: the bounces owed by impacts found apart (bounce.cpp).
+// Stage 7b: the bounces owed by impacts found apart (bounce.cpp); nothing
+// at all when no row asked for one (rows.bounceRows = 0).
 void applyBounces(StepScratch &s, const Partition &p, const PartitionRows &rows, const BodySpaceProblem &problem);
 // Stage 8: updates each body's rest time from its new velocities and
 // accelerations; true if the whole partition has rested for the alive window
