@@ -69,57 +69,81 @@ void AxisSortSpace::RerankReported() {
   }
 }
 
-void AxisSortSpace::ComputeEvents() {
-  // The pairs reported by the previous EndChanges, in order.
-  auto byOrder = [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); };
-  previous_.clear();
-  if (keysChanged_) {
-    RerankReported();
-    previous_.assign(stayings_.begin(), stayings_.end());
-    previous_.insert(previous_.end(), hellos_.begin(), hellos_.end());
-    std::sort(previous_.begin(), previous_.end(), byOrder);
-    keysChanged_ = false;
-  } else {
-    std::merge(stayings_.begin(), stayings_.end(), hellos_.begin(), hellos_.end(), std::back_inserter(previous_),
-               byOrder);
+// Settles one overlap entry: detaches its record if the pair is no longer
+// reportable (true then), collects it as a candidate if it is reportable
+// without a record, and marks it for erasure if it neither overlaps nor
+// owns a record.
+bool AxisSortSpace::SettleEntry(OverlapEntry &e) {
+  const bool reportable = Reportable(e);
+  bool goodbye = false;
+  if (e.record >= 0 && !reportable) {
+    pairs_.At(e.record).state = PairState::Goodbye;
+    e.record = -1;
+    goodbye = true;
   }
-  goodbyes_.clear();
-  hellos_.clear();
-  stayings_.clear();
+  if (e.record >= 0) return goodbye;
+  const Proxy &a = proxies_[static_cast<std::size_t>(e.SlotLo())];
+  const Proxy &b = proxies_[static_cast<std::size_t>(e.SlotHi())];
+  if (reportable) {
+    const std::uint64_t ra = Packed(a.key, a.serial), rb = Packed(b.key, b.serial);
+    candidates_.push_back({PairOrder{std::min(ra, rb), std::max(ra, rb)}, e.key});
+  } else if (!e.overlapping || a.state != ProxyState::Live || b.state != ProxyState::Live) {
+    eraseKeys_.push_back(e.key);
+  }
+  return goodbye;
+}
+
+void AxisSortSpace::ComputeEvents() {
+  auto byOrder = [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); };
+  const bool keysChanged = keysChanged_;
+  if (keysChanged) RerankReported();
   candidates_.clear();
   eraseKeys_.clear();
 
-  // Walk every overlap entry once: detach records whose pair is no longer
-  // reportable, collect reportable pairs without a record, and drop entries
-  // that neither overlap nor own a record.
-  for (int i = 0; i < overlaps_.Size(); ++i) {
-    OverlapEntry &e = overlaps_.At(i);
-    const bool reportable = Reportable(e);
-    if (e.record >= 0 && !reportable) {
-      pairs_.At(e.record).state = PairState::Goodbye;
-      e.record = -1;
-    }
-    if (e.record >= 0) continue;
-    const Proxy &a = proxies_[static_cast<std::size_t>(e.SlotLo())];
-    const Proxy &b = proxies_[static_cast<std::size_t>(e.SlotHi())];
-    if (reportable) {
-      const std::uint64_t ra = Packed(a.key, a.serial), rb = Packed(b.key, b.serial);
-      candidates_.push_back({PairOrder{std::min(ra, rb), std::max(ra, rb)}, e.key});
-    } else if (!e.overlapping || a.state != ProxyState::Live || b.state != ProxyState::Live) {
-      eraseKeys_.push_back(e.key);
-    }
+  // Settle the overlap entries: every one, or (see "Cost" in the header)
+  // only those swaps and new proxies touched, the others being unable to
+  // have changed.
+  const bool full = fullWalk_ || keysChanged || droppedHellos_ > 0 || keepFrozenPairs_ != lastKeepFrozenPairs_;
+  bool anyGoodbye = false;
+  if (full) {
+    for (int i = 0; i < overlaps_.Size(); ++i) anyGoodbye = SettleEntry(overlaps_.At(i)) || anyGoodbye;
+  } else {
+    std::sort(touched_.begin(), touched_.end());
+    touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+    for (std::uint64_t key : touched_)
+      if (OverlapEntry *e = overlaps_.Find(key)) anyGoodbye = SettleEntry(*e) || anyGoodbye;
   }
+  touched_.clear();
+  fullWalk_ = false;
+  lastKeepFrozenPairs_ = keepFrozenPairs_;
   for (std::uint64_t key : eraseKeys_) overlaps_.Erase(key);
 
-  // Split last block's pairs into goodbyes and stayings, keeping the order.
-  for (PairRecord *r : previous_) {
-    if (r->state == PairState::Goodbye) {
-      goodbyes_.push_back(r);
+  // Last block's pairs, in order, split into goodbyes and stayings. With no
+  // hello last block and no goodbye now, the stayings are as they were.
+  goodbyes_.clear();
+  if (keysChanged || anyGoodbye || !hellos_.empty()) {
+    previous_.clear();
+    if (keysChanged) {
+      previous_.assign(stayings_.begin(), stayings_.end());
+      previous_.insert(previous_.end(), hellos_.begin(), hellos_.end());
+      std::sort(previous_.begin(), previous_.end(), byOrder);
     } else {
-      r->state = PairState::Staying;
-      stayings_.push_back(r);
+      std::merge(stayings_.begin(), stayings_.end(), hellos_.begin(), hellos_.end(), std::back_inserter(previous_),
+                 byOrder);
     }
+    hellos_.clear();
+    stayings_.clear();
+    for (PairRecord *r : previous_) {
+      if (r->state == PairState::Goodbye) {
+        goodbyes_.push_back(r);
+      } else {
+        r->state = PairState::Staying;
+        stayings_.push_back(r);
+      }
+    }
+    ++stayingsVersion_;
   }
+  keysChanged_ = false;
 
   // New pairs in order; the last ones go unreported if records run out.
   std::sort(candidates_.begin(), candidates_.end());

@@ -24,14 +24,21 @@ void AxisSortSpace::PairIteratorBegin(PairIterator *iter) const {
 }
 
 bool AxisSortSpace::GetPairs(PairIterator *iter, PairChunk *chunk) {
-  return FillChunk(iter, chunk, true, "McdSpaceGetPairs");
+  return FillChunk(iter, chunk, StayingFilter::All, "McdSpaceGetPairs");
 }
 
 bool AxisSortSpace::GetTransitions(PairIterator *iter, PairChunk *chunk) {
-  return FillChunk(iter, chunk, false, "McdSpaceGetTransitions");
+  return FillChunk(iter, chunk, StayingFilter::None, "McdSpaceGetTransitions");
 }
 
-bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withStaying, const char *api) {
+// The chunks of GetPairs, each with its stayings of two frozen proxies left
+// out: the iterator advances and the return value is as GetPairs's.
+bool AxisSortSpace::GetActivePairs(PairIterator *iter, PairChunk *chunk) {
+  return FillChunk(iter, chunk, StayingFilter::Active, "McdSpaceGetPairs");
+}
+
+bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilter stayings, const char *api) {
+  const bool withStaying = stayings != StayingFilter::None;
   if (!iter || !chunk || !chunk->array || chunk->size < 1) {
     MeWarning(0, "%s: NULL iterator or container, or a container of no size; no pairs", api);
     return false;
@@ -57,7 +64,14 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withSta
   const PairRecord **out = chunk->array;
   for (int i = 0; i < g; ++i) *out++ = goodbyes_[static_cast<std::size_t>(iter->nextGoodbye + i)];
   for (int i = 0; i < h; ++i) *out++ = hellos_[static_cast<std::size_t>(iter->nextHello + i)];
-  for (int i = 0; i < s; ++i) *out++ = stayings_[static_cast<std::size_t>(iter->nextStaying + i)];
+  if (stayings == StayingFilter::Active) {
+    BuildActiveStayings();
+    auto at = std::lower_bound(activeStayings_.begin(), activeStayings_.end(), iter->nextStaying);
+    for (; at != activeStayings_.end() && *at < iter->nextStaying + s; ++at)
+      *out++ = stayings_[static_cast<std::size_t>(*at)];
+  } else {
+    for (int i = 0; i < s; ++i) *out++ = stayings_[static_cast<std::size_t>(iter->nextStaying + i)];
+  }
   iter->nextGoodbye += g;
   iter->nextHello += h;
   iter->nextStaying += s;
@@ -66,7 +80,7 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withSta
   chunk->goodbyeEnd = g;
   chunk->helloFirst = g;
   chunk->helloEnd = g + h;
-  chunk->stayingEnd = g + h + s;
+  chunk->stayingEnd = static_cast<int>(out - chunk->array);
   return goodbyesLeft - g + hellosLeft - h + stayingsLeft - s > 0;
 }
 
