@@ -94,13 +94,15 @@
 //    it is reportable, and ComputeEvents walks only these.
 //  - When nothing says hello or goodbye, the stayings are last block's
 //    stayings and hellos and are not rebuilt.
-//  - GetActivePairs hands out the events like GetPairs, chunk by chunk with
-//    the same boundaries, leaving out the stayings of two frozen proxies
-//    (activeStayings_: the indices of the others in stayings_, rebuilt when
-//    the stayings or a frozen flag change). Their McdIntersect would be
-//    skipped anyway (the bridge's rule), so a caller that only collides
-//    pairs sees the same pairs in the same order without paying for the
-//    frozen ones.
+//  - GetActivePairs hands out the events like GetPairs, leaving out the
+//    stayings of two frozen proxies (activeStayings_: the indices of the
+//    others in stayings_, rebuilt when the stayings or a frozen flag
+//    change): with the same chunk boundaries while goodbyes or hellos
+//    remain, then full chunks of the remaining active stayings. Their
+//    McdIntersect would be skipped anyway (the bridge's rule), so a caller
+//    that handles each chunk's transitions and then collides its pairs
+//    makes the same calls in the same order without paying for the frozen
+//    ones.
 //
 // ## Mapping of the public C API (for the Mcd wrapper)
 //   McdSpaceAxisSortCreate(fwk, axes, objectCount, pairCount)
@@ -316,6 +318,7 @@ class AxisSortSpace {
   bool Culled(const Proxy &a, const Proxy &b) const;
   enum class StayingFilter { None, All, Active };
   bool FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilter stayings, const char *api);
+  bool FillActiveStayings(PairIterator *iter, PairChunk *chunk);
   // active sets (see "Cost"; active_sets.cpp)
   void NoteUnfrozen(int slot);
   void DropUnfrozen(int slot);

@@ -32,7 +32,11 @@ bool AxisSortSpace::GetTransitions(PairIterator *iter, PairChunk *chunk) {
 }
 
 // The chunks of GetPairs, each with its stayings of two frozen proxies left
-// out: the iterator advances and the return value is as GetPairs's.
+// out, while goodbyes or hellos remain: the same boundaries, so the
+// transitions of each chunk come before the same stayings as in GetPairs.
+// Once only stayings remain, where chunks fall changes nothing for a caller
+// that handles each chunk's transitions and then its pairs in order, so
+// each chunk is filled with active stayings (FillActiveStayings).
 bool AxisSortSpace::GetActivePairs(PairIterator *iter, PairChunk *chunk) {
   return FillChunk(iter, chunk, StayingFilter::Active, "McdSpaceGetPairs");
 }
@@ -55,6 +59,7 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilte
   const int goodbyesLeft = static_cast<int>(goodbyes_.size()) - iter->nextGoodbye;
   const int hellosLeft = static_cast<int>(hellos_.size()) - iter->nextHello;
   const int stayingsLeft = withStaying ? static_cast<int>(stayings_.size()) - iter->nextStaying : 0;
+  if (stayings == StayingFilter::Active && goodbyesLeft == 0 && hellosLeft == 0) return FillActiveStayings(iter, chunk);
 
   const int g = std::min(goodbyesLeft, chunk->size);
   const int room = chunk->size - g;
@@ -82,6 +87,20 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilte
   chunk->helloEnd = g + h;
   chunk->stayingEnd = static_cast<int>(out - chunk->array);
   return goodbyesLeft - g + hellosLeft - h + stayingsLeft - s > 0;
+}
+
+// A chunk of stayings only: the next active stayings, as many as fit; true
+// while more remain.
+bool AxisSortSpace::FillActiveStayings(PairIterator *iter, PairChunk *chunk) {
+  BuildActiveStayings();
+  auto at = std::lower_bound(activeStayings_.begin(), activeStayings_.end(), iter->nextStaying);
+  const PairRecord **out = chunk->array;
+  for (; at != activeStayings_.end() && out - chunk->array < chunk->size; ++at)
+    *out++ = stayings_[static_cast<std::size_t>(*at)];
+  iter->nextStaying = at != activeStayings_.end() ? *at : static_cast<int>(stayings_.size());
+  chunk->goodbyeFirst = chunk->goodbyeEnd = chunk->helloFirst = chunk->helloEnd = 0;
+  chunk->stayingEnd = static_cast<int>(out - chunk->array);
+  return at != activeStayings_.end();
 }
 
 }  // namespace karma::mcd
