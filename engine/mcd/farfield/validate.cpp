@@ -25,6 +25,23 @@ bool AxisSortSpace::Validate() const {
     if (st == ProxyState::Live) ++live;
   }
   if (live != proxyCount_) return Fail("proxy count");
+  // The active sets ("Cost" in the header): the unfrozen list holds exactly
+  // the live unfrozen proxies, each at its recorded index; nothing is left
+  // marked as moved after a sort; every stayings entry is still settled.
+  int unfrozen = 0;
+  for (int s = 0; s < slots; ++s) {
+    const Proxy &p = proxies_[static_cast<std::size_t>(s)];
+    const int pos = unfrozenPos_[static_cast<std::size_t>(s)];
+    const bool listed =
+        pos >= 0 && pos < static_cast<int>(unfrozen_.size()) && unfrozen_[static_cast<std::size_t>(pos)] == s;
+    if (listed != (p.state == ProxyState::Live && !p.frozen)) return Fail("unfrozen list");
+    unfrozen += listed;
+    if (movedFlag_[static_cast<std::size_t>(s)] && !dirty_) return Fail("a moved mark survived the sort");
+  }
+  if (unfrozen != static_cast<int>(unfrozen_.size())) return Fail("unfrozen list size");
+  for (const PairRecord *r : stayings_) {
+    if (r->state != PairState::Staying) return Fail("a staying record in another state");
+  }
   for (int k = 0; k < axisCount_; ++k) {
     const EndpointAxis &ax = axis_[k];
     if (!ax.IsSorted()) return Fail("an axis is not sorted");
