@@ -67,11 +67,10 @@ void AxisSortSpace::SortAxes() {
 void AxisSortSpace::BuildActiveStayings() {
   if (activeStayingsVersion_ == stayingsVersion_) return;
   activeStayings_.clear();
-  for (std::size_t i = 0; i < stayings_.size(); ++i) {
-    const PairRecord *r = stayings_[i];
+  for (PairRecord *r : stayings_) {
     const bool frozenA = proxies_[static_cast<std::size_t>(r->proxyA)].frozen;
     const bool frozenB = proxies_[static_cast<std::size_t>(r->proxyB)].frozen;
-    if (!(frozenA && frozenB)) activeStayings_.push_back(static_cast<int>(i));
+    if (!(frozenA && frozenB)) activeStayings_.push_back(r);
   }
   activeStayingsVersion_ = stayingsVersion_;
 }

@@ -92,13 +92,16 @@
 //    culling change, a key change, a change of SetKeepFrozenPairs, or hellos
 //    dropped for want of records), no other entry can have changed whether
 //    it is reportable, and ComputeEvents walks only these.
-//  - When nothing says hello or goodbye, the stayings are last block's
-//    stayings and hellos and are not rebuilt.
+//  - The stayings are last block's stayings and hellos less the goodbyes:
+//    unchanged when nothing said hello or goodbye, else the goodbyes found
+//    by their Order() and last block's hellos merged in, without reading
+//    the records that stay (departed_ lists the records detached).
 //  - GetActivePairs hands out the events like GetPairs, leaving out the
-//    stayings of two frozen proxies (activeStayings_: the indices of the
-//    others in stayings_, rebuilt when the stayings or a frozen flag
-//    change): with the same chunk boundaries while goodbyes or hellos
-//    remain, then full chunks of the remaining active stayings. Their
+//    stayings of two frozen proxies (activeStayings_: the others, in
+//    Order(); kept up to date with the stayings, rebuilt after a key change
+//    or a freeze or unfreeze): with the same chunk boundaries while
+//    goodbyes or hellos remain, then full chunks of the remaining active
+//    stayings. Their
 //    McdIntersect would be skipped anyway (the bridge's rule), so a caller
 //    that handles each chunk's transitions and then collides its pairs
 //    makes the same calls in the same order without paying for the frozen
@@ -311,6 +314,7 @@ class AxisSortSpace {
   // pair_events.cpp
   void ComputeEvents();
   bool SettleEntry(OverlapEntry &e);
+  void UpdateStayings();
   void RerankReported();
   void StartPair(PairRecord *r, int slotA, int slotB);
   void RetireGoodbyes();
@@ -319,6 +323,7 @@ class AxisSortSpace {
   enum class StayingFilter { None, All, Active };
   bool FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilter stayings, const char *api);
   bool FillActiveStayings(PairIterator *iter, PairChunk *chunk);
+  std::vector<PairRecord *>::const_iterator ActiveFrom(int index) const;
   // active sets (see "Cost"; active_sets.cpp)
   void NoteUnfrozen(int slot);
   void DropUnfrozen(int slot);
@@ -381,8 +386,14 @@ class AxisSortSpace {
   std::vector<std::uint64_t> touched_;
   bool fullWalk_ = true;
   bool lastKeepFrozenPairs_ = false;
-  std::vector<int> activeStayings_;
+  std::vector<PairRecord *> activeStayings_;  // in Order()
   std::uint64_t stayingsVersion_ = 1, activeStayingsVersion_ = 0;
+  struct Departure {
+    PairRecord *record;
+    bool wasHello;
+  };
+  std::vector<Departure> departed_;              // records detached by this ComputeEvents
+  std::vector<PairRecord *> leaving_, joining_;  // scratch of UpdateStayings
 };
 
 }  // namespace karma::mcd

@@ -77,7 +77,9 @@ bool AxisSortSpace::SettleEntry(OverlapEntry &e) {
   const bool reportable = Reportable(e);
   bool goodbye = false;
   if (e.record >= 0 && !reportable) {
-    pairs_.At(e.record).state = PairState::Goodbye;
+    PairRecord &r = pairs_.At(e.record);
+    departed_.push_back({&r, r.state == PairState::Hello});
+    r.state = PairState::Goodbye;
     e.record = -1;
     goodbye = true;
   }
@@ -93,8 +95,89 @@ bool AxisSortSpace::SettleEntry(OverlapEntry &e) {
   return goodbye;
 }
 
+namespace {
+
+bool ByOrder(const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); }
+
+// Few records move in or out at a time: then a search and a block move
+// each; else one pass.
+constexpr std::size_t kFew = 8;
+
+// Removes from `list` (ascending by Order()) each record of `gone` (also
+// ascending) that it holds.
+void RemoveByOrder(std::vector<PairRecord *> &list, const std::vector<PairRecord *> &gone) {
+  if (gone.empty()) return;
+  if (gone.size() <= kFew) {
+    for (PairRecord *r : gone) {
+      auto found = std::lower_bound(list.begin(), list.end(), r, ByOrder);
+      if (found != list.end() && *found == r) list.erase(found);
+    }
+    return;
+  }
+  std::size_t out = 0, g = 0;
+  auto at = list.begin();
+  for (PairRecord *r : gone) {
+    auto found = std::lower_bound(at, list.end(), r, ByOrder);
+    if (found == list.end() || *found != r) continue;
+    const std::size_t pos = static_cast<std::size_t>(found - list.begin());
+    while (g < pos) list[out++] = list[g++];
+    ++g;  // drop it
+    at = found + 1;
+  }
+  while (g < list.size()) list[out++] = list[g++];
+  list.resize(out);
+}
+
+// Merges `joining` (ascending by Order()) into `list` (ascending).
+void MergeByOrder(std::vector<PairRecord *> &list, const std::vector<PairRecord *> &joining,
+                  std::vector<PairRecord *> &scratch) {
+  if (joining.empty()) return;
+  if (joining.size() <= kFew) {
+    for (PairRecord *r : joining) list.insert(std::upper_bound(list.begin(), list.end(), r, ByOrder), r);
+    return;
+  }
+  scratch.clear();
+  std::merge(list.begin(), list.end(), joining.begin(), joining.end(), std::back_inserter(scratch), ByOrder);
+  list.swap(scratch);
+}
+
+}  // namespace
+
+// The stayings after some goodbyes or last block's hellos, touching only
+// the records that change: the goodbyes (departed_) in order; the stayings
+// less the departed ones; last block's hellos that stay merged in as
+// stayings. The active stayings follow when they are up to date.
+void AxisSortSpace::UpdateStayings() {
+  leaving_.clear();
+  for (const Departure &d : departed_) {
+    goodbyes_.push_back(d.record);
+    if (!d.wasHello) leaving_.push_back(d.record);
+  }
+  std::sort(goodbyes_.begin(), goodbyes_.end(), ByOrder);
+  std::sort(leaving_.begin(), leaving_.end(), ByOrder);
+  RemoveByOrder(stayings_, leaving_);
+  joining_.clear();
+  for (PairRecord *r : hellos_) {
+    if (r->state == PairState::Goodbye) continue;
+    r->state = PairState::Staying;
+    joining_.push_back(r);
+  }
+  hellos_.clear();
+  MergeByOrder(stayings_, joining_, previous_);
+  if (activeStayingsVersion_ != stayingsVersion_) return;  // rebuilt when next needed
+  RemoveByOrder(activeStayings_, leaving_);
+  std::size_t kept = 0;
+  for (PairRecord *r : joining_) {
+    const bool frozenPair =
+        proxies_[static_cast<std::size_t>(r->proxyA)].frozen && proxies_[static_cast<std::size_t>(r->proxyB)].frozen;
+    if (!frozenPair) joining_[kept++] = r;
+  }
+  joining_.resize(kept);
+  MergeByOrder(activeStayings_, joining_, previous_);
+}
+
 void AxisSortSpace::ComputeEvents() {
-  auto byOrder = [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); };
+  auto byOrder = ByOrder;
   const bool keysChanged = keysChanged_;
   if (keysChanged) RerankReported();
   candidates_.clear();
@@ -118,19 +201,12 @@ void AxisSortSpace::ComputeEvents() {
   lastKeepFrozenPairs_ = keepFrozenPairs_;
   for (std::uint64_t key : eraseKeys_) overlaps_.Erase(key);
 
-  // Last block's pairs, in order, split into goodbyes and stayings. With no
-  // hello last block and no goodbye now, the stayings are as they were.
+  // Last block's pairs, in order, split into goodbyes and stayings.
   goodbyes_.clear();
-  if (keysChanged || anyGoodbye || !hellos_.empty()) {
-    previous_.clear();
-    if (keysChanged) {
-      previous_.assign(stayings_.begin(), stayings_.end());
-      previous_.insert(previous_.end(), hellos_.begin(), hellos_.end());
-      std::sort(previous_.begin(), previous_.end(), byOrder);
-    } else {
-      std::merge(stayings_.begin(), stayings_.end(), hellos_.begin(), hellos_.end(), std::back_inserter(previous_),
-                 byOrder);
-    }
+  if (keysChanged) {
+    previous_.assign(stayings_.begin(), stayings_.end());
+    previous_.insert(previous_.end(), hellos_.begin(), hellos_.end());
+    std::sort(previous_.begin(), previous_.end(), byOrder);
     hellos_.clear();
     stayings_.clear();
     for (PairRecord *r : previous_) {
@@ -142,7 +218,10 @@ void AxisSortSpace::ComputeEvents() {
       }
     }
     ++stayingsVersion_;
+  } else if (anyGoodbye || !hellos_.empty()) {
+    UpdateStayings();
   }
+  departed_.clear();
   keysChanged_ = false;
 
   // New pairs in order; the last ones go unreported if records run out.

@@ -70,10 +70,12 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilte
   for (int i = 0; i < g; ++i) *out++ = goodbyes_[static_cast<std::size_t>(iter->nextGoodbye + i)];
   for (int i = 0; i < h; ++i) *out++ = hellos_[static_cast<std::size_t>(iter->nextHello + i)];
   if (stayings == StayingFilter::Active) {
-    BuildActiveStayings();
-    auto at = std::lower_bound(activeStayings_.begin(), activeStayings_.end(), iter->nextStaying);
-    for (; at != activeStayings_.end() && *at < iter->nextStaying + s; ++at)
-      *out++ = stayings_[static_cast<std::size_t>(*at)];
+    if (s > 0) {  // the active ones among stayings_[nextStaying, nextStaying + s)
+      BuildActiveStayings();
+      const PairOrder last = stayings_[static_cast<std::size_t>(iter->nextStaying + s - 1)]->Order();
+      for (auto at = ActiveFrom(iter->nextStaying); at != activeStayings_.end() && (*at)->Order() <= last; ++at)
+        *out++ = *at;
+    }
   } else {
     for (int i = 0; i < s; ++i) *out++ = stayings_[static_cast<std::size_t>(iter->nextStaying + i)];
   }
@@ -89,15 +91,27 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilte
   return goodbyesLeft - g + hellosLeft - h + stayingsLeft - s > 0;
 }
 
+// The first active staying at or after stayings_[index].
+std::vector<PairRecord *>::const_iterator AxisSortSpace::ActiveFrom(int index) const {
+  if (index >= static_cast<int>(stayings_.size())) return activeStayings_.end();
+  return std::lower_bound(activeStayings_.begin(), activeStayings_.end(), stayings_[static_cast<std::size_t>(index)],
+                          [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); });
+}
+
 // A chunk of stayings only: the next active stayings, as many as fit; true
 // while more remain.
 bool AxisSortSpace::FillActiveStayings(PairIterator *iter, PairChunk *chunk) {
   BuildActiveStayings();
-  auto at = std::lower_bound(activeStayings_.begin(), activeStayings_.end(), iter->nextStaying);
+  auto at = ActiveFrom(iter->nextStaying);
   const PairRecord **out = chunk->array;
-  for (; at != activeStayings_.end() && out - chunk->array < chunk->size; ++at)
-    *out++ = stayings_[static_cast<std::size_t>(*at)];
-  iter->nextStaying = at != activeStayings_.end() ? *at : static_cast<int>(stayings_.size());
+  for (; at != activeStayings_.end() && out - chunk->array < chunk->size; ++at) *out++ = *at;
+  // Resume at the next active staying's place in stayings_.
+  iter->nextStaying = static_cast<int>(stayings_.size());
+  if (at != activeStayings_.end()) {
+    auto place = std::lower_bound(stayings_.begin(), stayings_.end(), *at,
+                                  [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); });
+    iter->nextStaying = static_cast<int>(place - stayings_.begin());
+  }
   chunk->goodbyeFirst = chunk->goodbyeEnd = chunk->helloFirst = chunk->helloEnd = 0;
   chunk->stayingEnd = static_cast<int>(out - chunk->array);
   return at != activeStayings_.end();

@@ -4,7 +4,9 @@
 
 #include "MeMessage.h"
 
+#include <algorithm>
 #include <unordered_map>
+#include <vector>
 
 namespace karma::mcd {
 
@@ -39,9 +41,15 @@ bool AxisSortSpace::Validate() const {
     if (movedFlag_[static_cast<std::size_t>(s)] && !dirty_) return Fail("a moved mark survived the sort");
   }
   if (unfrozen != static_cast<int>(unfrozen_.size())) return Fail("unfrozen list size");
+  std::vector<const PairRecord *> active;
   for (const PairRecord *r : stayings_) {
     if (r->state != PairState::Staying) return Fail("a staying record in another state");
+    if (!(proxies_[static_cast<std::size_t>(r->proxyA)].frozen && proxies_[static_cast<std::size_t>(r->proxyB)].frozen))
+      active.push_back(r);
   }
+  if (activeStayingsVersion_ == stayingsVersion_ &&
+      !std::equal(active.begin(), active.end(), activeStayings_.begin(), activeStayings_.end()))
+    return Fail("the active stayings are not the stayings of an unfrozen proxy");
   for (int k = 0; k < axisCount_; ++k) {
     const EndpointAxis &ax = axis_[k];
     if (!ax.IsSorted()) return Fail("an axis is not sorted");
