@@ -64,8 +64,38 @@ void AxisSortSpace::SortAxes() {
   moved_.clear();
 }
 
+void AxisSortSpace::NoteFrozenChange(int slot) {
+  if (frozenChanged_.size() >= 64) {  // cheaper to rebuild than to patch
+    ++stayingsVersion_;
+    frozenChanged_.clear();
+    return;
+  }
+  frozenChanged_.push_back(slot);
+}
+
+// Up to date with the stayings and the frozen flags: patched for the
+// proxies frozen or thawed since (their staying pairs join or leave), or
+// rebuilt.
 void AxisSortSpace::BuildActiveStayings() {
-  if (activeStayingsVersion_ == stayingsVersion_) return;
+  auto byOrder = [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); };
+  if (activeStayingsVersion_ == stayingsVersion_) {
+    for (int slot : frozenChanged_) {
+      overlaps_.ForEachOf(slot, [&](OverlapEntry &e) {
+        if (e.record < 0) return;
+        PairRecord *r = &pairs_.At(e.record);
+        if (r->state != PairState::Staying) return;
+        const bool active = !(proxies_[static_cast<std::size_t>(r->proxyA)].frozen &&
+                              proxies_[static_cast<std::size_t>(r->proxyB)].frozen);
+        auto at = std::lower_bound(activeStayings_.begin(), activeStayings_.end(), r, byOrder);
+        const bool present = at != activeStayings_.end() && *at == r;
+        if (active && !present) activeStayings_.insert(at, r);
+        if (!active && present) activeStayings_.erase(at);
+      });
+    }
+    frozenChanged_.clear();
+    return;
+  }
+  frozenChanged_.clear();
   activeStayings_.clear();
   for (PairRecord *r : stayings_) {
     const bool frozenA = proxies_[static_cast<std::size_t>(r->proxyA)].frozen;

@@ -86,20 +86,23 @@
 //  - moved_ lists the Live proxies whose interval was set since the last
 //    sort (movedFlag_ marks them); the sort visits only the endpoints near
 //    them (EndpointAxis::SortNear), with the same swaps as a full pass.
-//  - touched_ holds the keys of the overlap entries that swaps and new
-//    proxies added, changed or erased since the last EndChanges. Unless
-//    fullWalk_ is set (a freeze or unfreeze, a removal, a pair filter or
-//    culling change, a key change, a change of SetKeepFrozenPairs, or hellos
-//    dropped for want of records), no other entry can have changed whether
-//    it is reportable, and ComputeEvents walks only these.
+//  - touched_ holds the keys of the overlap entries that swaps, new proxies
+//    and pair filters added, changed or erased since the last EndChanges,
+//    and touchedProxies_ the proxies frozen, thawed, removed or given new
+//    culling parameters (all their entries, found through the table's
+//    per-slot lists). Unless fullWalk_ is set (a key change, a change of
+//    SetKeepFrozenPairs, or hellos dropped for want of records), no other
+//    entry can have changed whether it is reportable, and ComputeEvents
+//    settles only these.
 //  - The stayings are last block's stayings and hellos less the goodbyes:
 //    unchanged when nothing said hello or goodbye, else the goodbyes found
 //    by their Order() and last block's hellos merged in, without reading
 //    the records that stay (departed_ lists the records detached).
 //  - GetActivePairs hands out the events like GetPairs, leaving out the
 //    stayings of two frozen proxies (activeStayings_: the others, in
-//    Order(); kept up to date with the stayings, rebuilt after a key change
-//    or a freeze or unfreeze): with the same chunk boundaries while
+//    Order(); kept up to date with the stayings and, through frozenChanged_,
+//    with the frozen flags when next used; rebuilt after a key change or
+//    many freezes): with the same chunk boundaries while
 //    goodbyes or hellos remain, then full chunks of the remaining active
 //    stayings. Their
 //    McdIntersect would be skipped anyway (the bridge's rule), so a caller
@@ -332,6 +335,10 @@ class AxisSortSpace {
   void NoteTouched(std::uint64_t key) {
     if (!fullWalk_) touched_.push_back(key);
   }
+  void NoteTouchedProxy(int slot) {
+    if (!fullWalk_) touchedProxies_.push_back(slot);
+  }
+  void NoteFrozenChange(int slot);
   void SortAxes();
   void BuildActiveStayings();
 
@@ -384,9 +391,11 @@ class AxisSortSpace {
   std::vector<std::uint8_t> movedFlag_;
   std::vector<int> movedPositions_;
   std::vector<std::uint64_t> touched_;
+  std::vector<int> touchedProxies_;  // proxies whose every entry may have changed
   bool fullWalk_ = true;
   bool lastKeepFrozenPairs_ = false;
   std::vector<PairRecord *> activeStayings_;  // in Order()
+  std::vector<int> frozenChanged_;            // proxies frozen or thawed since activeStayings_ was brought up to date
   std::uint64_t stayingsVersion_ = 1, activeStayingsVersion_ = 0;
   struct Departure {
     PairRecord *record;

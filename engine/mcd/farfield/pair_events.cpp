@@ -184,19 +184,21 @@ void AxisSortSpace::ComputeEvents() {
   eraseKeys_.clear();
 
   // Settle the overlap entries: every one, or (see "Cost" in the header)
-  // only those swaps and new proxies touched, the others being unable to
-  // have changed.
+  // only the touched ones and those of the touched proxies, the others
+  // being unable to have changed.
   const bool full = fullWalk_ || keysChanged || droppedHellos_ > 0 || keepFrozenPairs_ != lastKeepFrozenPairs_;
   bool anyGoodbye = false;
   if (full) {
     for (int i = 0; i < overlaps_.Size(); ++i) anyGoodbye = SettleEntry(overlaps_.At(i)) || anyGoodbye;
   } else {
+    for (int slot : touchedProxies_) overlaps_.ForEachOf(slot, [this](OverlapEntry &e) { touched_.push_back(e.key); });
     std::sort(touched_.begin(), touched_.end());
     touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
     for (std::uint64_t key : touched_)
       if (OverlapEntry *e = overlaps_.Find(key)) anyGoodbye = SettleEntry(*e) || anyGoodbye;
   }
   touched_.clear();
+  touchedProxies_.clear();
   fullWalk_ = false;
   lastKeepFrozenPairs_ = keepFrozenPairs_;
   for (std::uint64_t key : eraseKeys_) overlaps_.Erase(key);

@@ -90,7 +90,7 @@ bool AxisSortSpace::SetCulling(ProxyId id, CullingTable *table, int cullingIndex
     return false;
   }
   Proxy &p = proxies_[static_cast<std::size_t>(id)];
-  fullWalk_ = true;
+  NoteTouchedProxy(id);
   p.table = table;  // NULL clears the parameters
   p.cullingIndex = cullingIndex;
   p.cullingId = cullingId;
@@ -102,7 +102,7 @@ bool AxisSortSpace::Remove(ProxyId id) {
   if (!RequireInside(api) || !CheckProxy(id, api)) return false;
   Proxy &p = proxies_[static_cast<std::size_t>(id)];
   DropUnfrozen(id);
-  fullWalk_ = true;
+  NoteTouchedProxy(id);
   if (p.state == ProxyState::Pending) {
     p.state = ProxyState::Retired;  // never reached the arrays: no pairs
     retired_.push_back(id);
@@ -176,8 +176,8 @@ bool AxisSortSpace::Freeze(ProxyId id) {
   if (!p.frozen) {
     p.frozen = true;
     DropUnfrozen(id);
-    fullWalk_ = true;
-    ++stayingsVersion_;
+    NoteTouchedProxy(id);
+    NoteFrozenChange(id);
   }
   return true;
 }
@@ -188,8 +188,8 @@ bool AxisSortSpace::Unfreeze(ProxyId id) {
   if (p.frozen) {
     p.frozen = false;
     NoteUnfrozen(id);
-    fullWalk_ = true;
-    ++stayingsVersion_;
+    NoteTouchedProxy(id);
+    NoteFrozenChange(id);
   }
   return true;
 }

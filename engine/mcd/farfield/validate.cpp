@@ -47,7 +47,7 @@ bool AxisSortSpace::Validate() const {
     if (!(proxies_[static_cast<std::size_t>(r->proxyA)].frozen && proxies_[static_cast<std::size_t>(r->proxyB)].frozen))
       active.push_back(r);
   }
-  if (activeStayingsVersion_ == stayingsVersion_ &&
+  if (activeStayingsVersion_ == stayingsVersion_ && frozenChanged_.empty() &&
       !std::equal(active.begin(), active.end(), activeStayings_.begin(), activeStayings_.end()))
     return Fail("the active stayings are not the stayings of an unfrozen proxy");
   for (int k = 0; k < axisCount_; ++k) {
@@ -80,6 +80,21 @@ bool AxisSortSpace::Validate() const {
     }
   }
   if (overlapping != static_cast<long long>(entries.size())) return Fail("a pair in the table does not overlap");
+  // The per-slot lists: every entry reached once from each of its slots.
+  std::unordered_map<std::uint64_t, int> reached;
+  for (int s = 0; s < slots; ++s) {
+    int steps = 0;
+    for (int i = overlaps_.Head(s); i >= 0; ++steps) {
+      if (steps > overlaps_.Size()) return Fail("a per-slot list loops");
+      const OverlapEntry &e = overlaps_.Entries()[static_cast<std::size_t>(i)];
+      if (e.SlotLo() != s && e.SlotHi() != s) return Fail("an entry in the list of a slot it does not name");
+      ++reached[e.key];
+      i = e.next[OverlapTable::Side(e, s)];
+    }
+  }
+  for (const OverlapEntry &e : overlaps_.Entries()) {
+    if (reached[e.key] != 2) return Fail("an entry not in both its slots' lists");
+  }
   // Records: each reported one owned by its entry; lists in order.
   int owned = 0;
   for (const auto &kv : entries) owned += kv.second >= 0;
