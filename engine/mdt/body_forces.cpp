@@ -4,7 +4,7 @@
 // would overflow, is rejected with a warning and leaves the accumulator as
 // it was.
 #include "MeMessage.h"
-#include "mdt_internal.h"
+#include "active_sets.h"
 
 using namespace karma::mdt;
 
@@ -43,6 +43,7 @@ extern "C" {
 void MEAPI MdtBodyAddForce(const MdtBodyID body, const MeReal fx, const MeReal fy, const MeReal fz) {
   static const char *fn = "MdtBodyAddForce";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  noteDriven(body);
   const MeVector3 f = {fx, fy, fz};
   ME_REQUIRE_ARG(accumulate(body->force, f), fn, "force (%g, %g, %g) is not finite or overflows; ignored", (double)fx,
                  (double)fy, (double)fz);
@@ -51,6 +52,7 @@ void MEAPI MdtBodyAddForce(const MdtBodyID body, const MeReal fx, const MeReal f
 void MEAPI MdtBodyAddTorque(const MdtBodyID body, const MeReal tx, const MeReal ty, const MeReal tz) {
   static const char *fn = "MdtBodyAddTorque";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  noteDriven(body);
   const MeVector3 t = {tx, ty, tz};
   ME_REQUIRE_ARG(accumulate(body->torque, t), fn, "torque (%g, %g, %g) is not finite or overflows; ignored", (double)tx,
                  (double)ty, (double)tz);
@@ -60,6 +62,7 @@ void MEAPI MdtBodyAddForceAtPosition(const MdtBodyID body, const MeReal fx, cons
                                      const MeReal px, const MeReal py, const MeReal pz) {
   static const char *fn = "MdtBodyAddForceAtPosition";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  noteDriven(body);
   const MeVector3 f = {fx, fy, fz};
   const MeVector3 p = {px, py, pz};
   ME_REQUIRE_ARG(accumulateAt(body, body->force, body->torque, f, p), fn,
@@ -70,6 +73,7 @@ void MEAPI MdtBodyAddForceAtPosition(const MdtBodyID body, const MeReal fx, cons
 void MEAPI MdtBodyAddImpulse(const MdtBodyID body, const MeReal jx, const MeReal jy, const MeReal jz) {
   static const char *fn = "MdtBodyAddImpulse";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  noteDriven(body);
   const MeVector3 j = {jx, jy, jz};
   ME_REQUIRE_ARG(accumulate(body->impulse, j), fn, "impulse (%g, %g, %g) is not finite or overflows; ignored",
                  (double)jx, (double)jy, (double)jz);
@@ -79,6 +83,7 @@ void MEAPI MdtBodyAddImpulseAtPosition(const MdtBodyID body, const MeReal jx, co
                                        const MeReal px, const MeReal py, const MeReal pz) {
   static const char *fn = "MdtBodyAddImpulseAtPosition";
   ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  noteDriven(body);
   const MeVector3 j = {jx, jy, jz};
   const MeVector3 p = {px, py, pz};
   ME_REQUIRE_ARG(accumulateAt(body, body->impulse, body->angularImpulse, j, p), fn,

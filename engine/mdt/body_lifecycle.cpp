@@ -10,7 +10,7 @@
 // bridge's body-destroy callback (MstSetWorldHandlers), so it cannot drive
 // the slot's next body.
 #include "MeMessage.h"
-#include "constraint.h"
+#include "active_sets.h"
 
 namespace karma::mdt {
 
@@ -36,6 +36,7 @@ void initBody(MdtBody *b, MdtWorldID world) {
   b->enabled = FALSE;
   b->userData = nullptr;
   b->sortKey = 0;
+  b->awakeSlot = -1;
   updateTransform(b);
 }
 
@@ -101,14 +102,20 @@ void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   // leave them without bodies (the program may set new ones or destroy them).
   for (void *s = nextConstraintSlot(p, nullptr); s; s = nextConstraintSlot(p, s)) {
     auto *c = static_cast<MdtConstraint *>(s);
+    if (c->linked[0] == body || c->linked[1] == body) unlinkConstraint(c);
     if (c->body[0] != body && c->body[1] != body) continue;
+    unlinkConstraint(c);
     if (c->enabled) MeWarning(0, "MdtBodyDestroy: an enabled %s still used this body; it was disabled", c->type->name);
     c->enabled = FALSE;
     c->body[0] = c->body[1] = nullptr;
   }
-  if (body->enabled) --p->enabledCount;
+  if (body->enabled) {
+    --p->enabledCount;
+    removeAwake(p, body);
+  }
   body->enabled = FALSE;
   body->alive = FALSE;
+  body->drivenListed = FALSE;
   body->collisionModel = nullptr;
   retireBody(p, body);
 }
@@ -122,6 +129,7 @@ void MEAPI MdtBodyEnable(const MdtBodyID body) {
   body->awakeSteps = 0;
   MdtWorldPrivate *p = body->world->priv;
   ++p->enabledCount;
+  addAwake(p, body);
   if (p->bodyEnableCB) p->bodyEnableCB(body, TRUE, p->bodyEnableData);
 }
 
@@ -131,6 +139,8 @@ void MEAPI MdtBodyDisable(const MdtBodyID body) {
   body->enabled = FALSE;
   MdtWorldPrivate *p = body->world->priv;
   --p->enabledCount;
+  removeAwake(p, body);
+  noteDriven(body);  // the program may have added forces before disabling it
   if (p->bodyEnableCB) p->bodyEnableCB(body, FALSE, p->bodyEnableData);
 }
 

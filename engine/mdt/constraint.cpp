@@ -4,8 +4,9 @@
 #include <cstring>
 #include <new>
 
+#include "MdtContact.h"
 #include "MeMessage.h"
-#include "constraint.h"
+#include "active_sets.h"
 
 namespace karma::mdt {
 
@@ -106,6 +107,14 @@ const char *MEAPI MdtConstraintTypeName(const MdtConstraintType t) {
 
 void MEAPI MdtConstraintDestroy(const MdtConstraintID c) {
   if (!c) return;
+  unlinkConstraint(c);
+  // A group frees its contacts itself; a contact enabled alone before it
+  // joined the group may still be linked.
+  if (c->type->id == MdtConstraintTypeContactGroup) {
+    MdtContactGroupID g = MdtConstraintDCastContactGroup(c);
+    for (MdtContactID k = MdtContactGroupGetFirstContact(g); k; k = MdtContactGroupGetNextContact(g, k))
+      unlinkConstraint(MdtContactQuaConstraint(k));
+  }
   if (c->type->destroy) c->type->destroy(c);
   releaseConstraintSlot(c->world->priv, c);
 }
@@ -117,6 +126,7 @@ void MEAPI MdtConstraintEnable(const MdtConstraintID c) {
   if (c->type->id != MdtConstraintTypeContactGroup) {
     ME_REQUIRE_ARG(c->body[0] != nullptr, fn, "%s has no bodies; set them before enabling", c->type->name);
   }
+  linkConstraint(c);
   c->enabled = TRUE;
 }
 
@@ -140,6 +150,7 @@ void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0
                  "a body belongs to another world");
   c->body[0] = body0;
   c->body[1] = body1;
+  linkConstraint(c);
   attachDefault(c);
   if (c->type->attach) c->type->attach(c);
   c->warmRows = 0;

@@ -157,6 +157,13 @@ struct MdtConstraint {
   int warmRows;
   // Scratch of the step (partitioning).
   int mark;
+  // The body lists (active_sets.h): the bodies whose lists hold this
+  // constraint and its neighbours there; gatherStamp marks it as reached
+  // by the current gather.
+  MdtBody *linked[2];
+  MdtConstraint *linkNext[2];
+  MdtConstraint *linkPrev[2];
+  std::uint64_t gatherStamp;
   // Contacts owned by a contact group are stepped through the group.
   MdtConstraint *owner;
 };

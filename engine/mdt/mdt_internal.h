@@ -62,6 +62,11 @@ struct MdtBody {
   MeMatrix3 geomStiffness;  // world frame, from last step's constraint forces
   int index;
   int mark;
+  // Active sets (active_sets.h): the index in the awake list, whether the
+  // body is in the driven list, and the head of its list of constraints.
+  int awakeSlot;
+  MeBool drivenListed;
+  struct MdtConstraint *firstConstraint;
 };
 
 namespace karma::mdt {
@@ -69,6 +74,7 @@ struct StepScratch;
 // Constraint pools a world may have: the first and up to this many grown
 // ones, each doubling the slots (constraint_slots.cpp).
 inline constexpr int kMaxConstraintPools = 24;
+struct ActiveSets;
 }  // namespace karma::mdt
 
 struct MdtWorldPrivate {
@@ -81,6 +87,7 @@ struct MdtWorldPrivate {
   unsigned constraintSlotSize;
   std::uint64_t nextConstraintSerial;
   karma::mdt::StepScratch *scratch;  // step work arrays, reused across steps
+  karma::mdt::ActiveSets *active;    // what the step touches (active_sets.h)
   MdtContactImportanceCBPtr importance;
   MdtBodyEnableCallbackPtr bodyEnableCB;  // called by MdtBodyEnable / MdtBodyDisable
   void *bodyEnableData;

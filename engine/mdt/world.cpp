@@ -6,6 +6,7 @@
 
 #include "MeMemory.h"
 #include "MeMessage.h"
+#include "active_sets.h"
 #include "step.h"
 
 using namespace karma::mdt;
@@ -59,12 +60,17 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
   }
   if (ok) {
     p->scratch = new (std::nothrow) StepScratch();
-    ok = p->scratch != nullptr;
+    p->active = new (std::nothrow) ActiveSets();
+    ok = p->scratch != nullptr && p->active != nullptr;
   }
   if (!ok) {
     if (constraintsOk) MePoolDestroy(&p->constraints);
     if (bodiesOk) MePoolDestroy(&p->bodies);
-    if (p) MeMemoryAPI.destroy(p);
+    if (p) {
+      delete p->scratch;
+      delete p->active;
+      MeMemoryAPI.destroy(p);
+    }
     if (w) MeMemoryAPI.destroy(w);
     MeWarning(0, "MdtWorldCreate: out of memory for a world of %u bodies", maxBodies);
     return nullptr;
@@ -90,6 +96,7 @@ void MEAPI MdtWorldDestroy(const MdtWorldID world) {
   releaseConstraintPools(p);  // constraints own nothing outside their slot
   MePoolDestroy(&p->bodies);       // every body goes with the pool
   delete p->scratch;
+  delete p->active;
   MeMemoryAPI.destroy(p);
   MeMemoryAPI.destroy(world);
 }
@@ -121,7 +128,6 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   world->priv->lastStepSize = stepSize;
   StepScratch &s = *world->priv->scratch;
   s.stats = MdtWorldStepStats{};
-  s.partitionRows.clear();
   s.arena.reset();
   const StepClock clock(s.budget);
   wakeDrivenBodies(world);
@@ -131,11 +137,19 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   ctx.invH = (MeReal)1 / stepSize;
   ctx.epsilon = world->params.epsilon;
   ctx.gamma = world->params.gamma;
-  for (const Partition &part : s.partitions) {
+  s.partitionRows.assign(s.partitions.size(), 0);
+  s.freePartitions.clear();
+  for (size_t i = 0; i < s.partitions.size(); ++i) {
+    const Partition &part = s.partitions[i];
     s.stats.bodies += part.bodyCount;
     s.stats.constraints += part.constraintCount;
-    if (stepPartition(world, s, part, ctx)) ++s.stats.sleeping;
+    if (part.constraintCount == 0) {
+      s.freePartitions.push_back((int)i);  // one body, no rows: batched below
+    } else if (stepPartition(world, s, (int)i, ctx)) {
+      ++s.stats.sleeping;
+    }
   }
+  s.stats.sleeping += stepFreeBodies(world, s, ctx);
   s.stats.partitions = (int)s.partitions.size();
   s.solveWarnings.endStep(stepSize);
   clock.stop(s.stats);

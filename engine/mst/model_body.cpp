@@ -13,6 +13,9 @@ void MEAPI BodyEnableHandler(MdtBodyID body, MeBool enabled, void *) {
   auto space = static_cast<McdSpaceID>(McdModelGetSpace(model));
   if (!space) return;
   if (enabled) {
+    // Frozen models are not visited before a step (step_bounds.cpp): the
+    // body's sort key reaches its model here.
+    McdModelSetInheritedSortKey(model, MdtBodyGetSortKey(body));
     McdSpaceUnfreezeModel(model);
   } else if (!McdSpaceModelIsFrozen(model)) {
     // Freeze it where the body came to rest (the space's AABB is from

@@ -16,7 +16,7 @@
 // the box's centre plus the box's half diagonal (>= the distance to any
 // point of the shape); a non-finite r (an unbounded shape) counts as 0.
 // Models without a body, and models of disabled bodies, get margin 0 (the
-// tolerance only): they do not move.
+// tolerance only): they do not move. Only unfrozen models are visited.
 //
 // Sort keys: each model with a body inherits its body's sort key
 // (McdModelSetInheritedSortKey), which orders its pairs unless the model's
@@ -24,8 +24,10 @@
 // apart (collision keys in [0, 2^15 - 1], dynamics keys in [0, 2^31 - 1])
 // and says nothing of one deriving from the other; inheriting makes keys set
 // on bodies alone order the collision pairs too, and changes nothing for a
-// user who sets both.
+// user who sets both. A frozen model (its body asleep) takes the key when
+// its body wakes (model_body.cpp).
 #include "mst_internal.h"
+#include "space/space_internal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,15 +68,17 @@ void PrepareModelsForStep(MstUniverseID u, MeReal h) {
   MdtWorldGetGravity(u->world, g);
   const MeReal gravity = Norm(g);
   const MeReal stepSize = h > 0 ? h : 0;
-  McdSpaceModelIterator it;
-  McdSpaceModelIteratorBegin(u->space, &it);
-  McdModelID model = nullptr;
-  while (McdSpaceGetModel(u->space, &it, &model)) {
+  // Unfrozen models only, in slot order: a frozen model's box is not
+  // updated, so its padding is unused until it is unfrozen (and a model
+  // freezes with padding 0, model_body.cpp); its body's sort key reaches it
+  // when the body wakes.
+  static_cast<McdSpace *>(u->space)->core->ForEachUnfrozen([&](int, void *user) {
+    auto model = static_cast<McdModelID>(user);
     MdtBodyID body = McdModelGetBody(model);
     if (body) McdModelSetInheritedSortKey(model, MdtBodyGetSortKey(body));
     const bool moving = body && MdtBodyIsEnabled(body);
     McdModelSetBoundsPadding(model, moving ? StepMargin(model, body, stepSize, gravity, u->sizes.lengthScale) : 0);
-  }
+  });
 }
 
 }  // namespace karma::mst

@@ -1,7 +1,10 @@
 // transitions.cpp: MstBridgeUpdateContacts (the guide's loop) and
 // MstHandleTransitions (hello: McdHello; goodbye: the contact group goes,
-// then McdGoodbye).
+// then McdGoodbye). The loop skips the pairs of two frozen models that stay
+// (a sleeping stack's contacts): their collision is nothing, so a step
+// costs the pairs that can change, not every kept pair.
 #include "mst_internal.h"
+#include "space/space_internal.h"
 
 extern "C" {
 
@@ -30,7 +33,9 @@ void MEAPI MstBridgeUpdateContacts(MstBridgeID b, McdSpaceID space, MdtWorldID w
   int overflow;
   do {
     McdModelPairContainerReset(b->pairs);
-    overflow = McdSpaceGetPairs(space, &iter, b->pairs);
+    // The pairs of McdSpaceGetPairs, in the same chunks, less the stayings
+    // of two frozen models, which MstHandleCollisions would skip.
+    overflow = karma::mcd::GetActivePairs(space, &iter, b->pairs);
     MstHandleTransitions(b->pairs);
     MstHandleCollisions(b->pairs, space, world, b);
   } while (overflow);

@@ -71,7 +71,7 @@ typedef struct MdtWorldParams {
 
 /* What the last MdtWorldStep did. */
 typedef struct MdtWorldStepStats {
-  int partitions;          /* partitions solved */
+  int partitions;          /* partitions stepped, one-body ones included */
   int sleeping;            /* of those, put to sleep at the end of the step */
   int bodies;              /* enabled bodies stepped */
   int constraints;         /* constraints simulated */
@@ -140,9 +140,13 @@ MEPUBLIC void MEAPI MdtWorldGetStepStats(const MdtWorldID world, MdtWorldStepSta
  * and -profile find it. An extension. */
 MEPUBLIC void MEAPI MdtWorldGetDiagnostics(const MdtWorldID world, MeDiagnosticFigures *figures);
 
-/* The partitions of the last step, in solve order: how many, and the bodies
- * and solved row count of partition i. Bodies are listed in breadth-first
- * order from the first body in (sort key, creation) order. */
+/* The partitions of the last step: how many, and the bodies and solved row
+ * count of partition i. Partitions are numbered in the order they are
+ * found, each from its first body in (sort key, creation) order, and their
+ * bodies are listed in breadth-first order from that body. A body joined to
+ * nothing is a partition of its own with 0 rows; such partitions are
+ * stepped together in one batch after the others, which changes no result
+ * (they share nothing). The others are solved in numbering order. */
 MEPUBLIC int MEAPI MdtWorldGetPartitionCount(const MdtWorldID world);
 MEPUBLIC int MEAPI MdtWorldGetPartitionBodyCount(const MdtWorldID world, const int partition);
 MEPUBLIC MdtBodyID MEAPI MdtWorldGetPartitionBody(const MdtWorldID world, const int partition, const int i);

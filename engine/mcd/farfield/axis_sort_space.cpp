@@ -65,7 +65,10 @@ bool AxisSortSpace::Init(int axes, int objectCount, int pairCount) {
   isNew_.assign(static_cast<std::size_t>(slots), 0);
   activePos_.assign(static_cast<std::size_t>(slots), -1);
   activeNewPos_.assign(static_cast<std::size_t>(slots), -1);
+  unfrozenPos_.assign(static_cast<std::size_t>(slots), -1);
+  movedFlag_.assign(static_cast<std::size_t>(slots), 0);
   overlaps_.Reserve(pairCount);
+  overlaps_.ReserveSlots(slots);
   pairs_.Create(pairCount);
   goodbyes_.reserve(static_cast<std::size_t>(pairCount));
   hellos_.reserve(static_cast<std::size_t>(pairCount));

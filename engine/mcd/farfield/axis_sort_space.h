@@ -77,6 +77,39 @@
 // its next EndChanges. It calls the AABB function on every unfrozen proxy
 // and re-sorts at once; EndChanges sorts whatever changed after it.
 //
+// ## Cost follows what moves (issue 17)
+// A frame touches what is unfrozen or has changed, not every proxy or pair:
+//  - unfrozen_ lists the Pending and Live proxies that are not frozen
+//    (unfrozenPos_[slot] is the index, -1 for the others); UpdateAll and
+//    ForEachUnfrozen walk it in ascending slot order, as a walk over every
+//    slot skipping the frozen ones would.
+//  - moved_ lists the Live proxies whose interval was set since the last
+//    sort (movedFlag_ marks them); the sort visits only the endpoints near
+//    them (EndpointAxis::SortNear), with the same swaps as a full pass.
+//  - touched_ holds the keys of the overlap entries that swaps, new proxies
+//    and pair filters added, changed or erased since the last EndChanges,
+//    and touchedProxies_ the proxies frozen, thawed, removed or given new
+//    culling parameters (all their entries, found through the table's
+//    per-slot lists). Unless fullWalk_ is set (a key change, a change of
+//    SetKeepFrozenPairs, or hellos dropped for want of records), no other
+//    entry can have changed whether it is reportable, and ComputeEvents
+//    settles only these.
+//  - The stayings are last block's stayings and hellos less the goodbyes:
+//    unchanged when nothing said hello or goodbye, else the goodbyes found
+//    by their Order() and last block's hellos merged in, without reading
+//    the records that stay (departed_ lists the records detached).
+//  - GetActivePairs hands out the events like GetPairs, leaving out the
+//    stayings of two frozen proxies (activeStayings_: the others, in
+//    Order(); kept up to date with the stayings and, through frozenChanged_,
+//    with the frozen flags when next used; rebuilt after a key change or
+//    many freezes): with the same chunk boundaries while
+//    goodbyes or hellos remain, then full chunks of the remaining active
+//    stayings. Their
+//    McdIntersect would be skipped anyway (the bridge's rule), so a caller
+//    that handles each chunk's transitions and then collides its pairs
+//    makes the same calls in the same order without paying for the frozen
+//    ones.
+//
 // ## Mapping of the public C API (for the Mcd wrapper)
 //   McdSpaceAxisSortCreate(fwk, axes, objectCount, pairCount)
 //                                     -> AxisSortSpace::Create(axes, objectCount, pairCount)
@@ -243,6 +276,15 @@ class AxisSortSpace {
   // events remain ("overflow: call again with the same iterator").
   bool GetPairs(PairIterator *iter, PairChunk *chunk);
   bool GetTransitions(PairIterator *iter, PairChunk *chunk);  // no stayings
+  // GetPairs less the stayings of two frozen proxies (see "Cost").
+  bool GetActivePairs(PairIterator *iter, PairChunk *chunk);
+  // Calls fn(id, user) for each unfrozen proxy, in ascending slot order.
+  template <class Fn>
+  void ForEachUnfrozen(Fn &&fn) {
+    SortUnfrozen();
+    unfrozenWalk_.assign(unfrozen_.begin(), unfrozen_.end());
+    for (int id : unfrozenWalk_) fn(id, proxies_[static_cast<std::size_t>(id)].user);
+  }
   // The current events, each list in Order() order.
   std::span<PairRecord *const> Goodbyes() const { return goodbyes_; }
   std::span<PairRecord *const> Hellos() const { return hellos_; }
@@ -274,12 +316,31 @@ class AxisSortSpace {
   void SweepNewProxies();
   // pair_events.cpp
   void ComputeEvents();
+  bool SettleEntry(OverlapEntry &e);
+  void UpdateStayings();
   void RerankReported();
   void StartPair(PairRecord *r, int slotA, int slotB);
   void RetireGoodbyes();
   bool Reportable(const OverlapEntry &e) const;
   bool Culled(const Proxy &a, const Proxy &b) const;
-  bool FillChunk(PairIterator *iter, PairChunk *chunk, bool withStaying, const char *api);
+  enum class StayingFilter { None, All, Active };
+  bool FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilter stayings, const char *api);
+  bool FillActiveStayings(PairIterator *iter, PairChunk *chunk);
+  std::vector<PairRecord *>::const_iterator ActiveFrom(int index) const;
+  // active sets (see "Cost"; active_sets.cpp)
+  void NoteUnfrozen(int slot);
+  void DropUnfrozen(int slot);
+  void SortUnfrozen();
+  void NoteMoved(int slot);
+  void NoteTouched(std::uint64_t key) {
+    if (!fullWalk_) touched_.push_back(key);
+  }
+  void NoteTouchedProxy(int slot) {
+    if (!fullWalk_) touchedProxies_.push_back(slot);
+  }
+  void NoteFrozenChange(int slot);
+  void SortAxes();
+  void BuildActiveStayings();
 
   int axes_ = kAllAxes;
   int axisCount_ = 0;
@@ -322,6 +383,26 @@ class AxisSortSpace {
   };
   std::vector<Candidate> candidates_;
   std::vector<PairRecord *> previous_;
+
+  // Active sets (see "Cost").
+  std::vector<int> unfrozen_, unfrozenPos_, unfrozenWalk_;
+  bool unfrozenSorted_ = true;
+  std::vector<int> moved_;
+  std::vector<std::uint8_t> movedFlag_;
+  std::vector<int> movedPositions_;
+  std::vector<std::uint64_t> touched_;
+  std::vector<int> touchedProxies_;  // proxies whose every entry may have changed
+  bool fullWalk_ = true;
+  bool lastKeepFrozenPairs_ = false;
+  std::vector<PairRecord *> activeStayings_;  // in Order()
+  std::vector<int> frozenChanged_;            // proxies frozen or thawed since activeStayings_ was brought up to date
+  std::uint64_t stayingsVersion_ = 1, activeStayingsVersion_ = 0;
+  struct Departure {
+    PairRecord *record;
+    bool wasHello;
+  };
+  std::vector<Departure> departed_;              // records detached by this ComputeEvents
+  std::vector<PairRecord *> leaving_, joining_;  // scratch of UpdateStayings
 };
 
 }  // namespace karma::mcd

@@ -106,27 +106,32 @@ class EndpointAxis {
   // when a max moved left past another slot's min (overlap ends).
   template <class OnSwap>
   void Sort(OnSwap &&onSwap) {
-    Endpoint *e = ends_.data();
     const int n = Size();
     for (int i = 1; i < n; ++i) {
-      if (!Greater(e[i - 1], e[i])) continue;
-      const Endpoint moving = e[i];
-      int j = i;
-      do {
-        const Endpoint passed = e[j - 1];
-        e[j] = passed;
-        Place(passed, j);
-        --j;
-        if (moving.IsMax() != passed.IsMax()) {
-          // A min passing a max leftwards starts an overlap; a max passing
-          // a min leftwards ends one.
-          e[j] = moving;
-          Place(moving, j);
-          onSwap(moving.Slot(), passed.Slot(), !moving.IsMax());
+      if (Greater(ends_[static_cast<std::size_t>(i - 1)], ends_[static_cast<std::size_t>(i)])) Insert(i, onSwap);
+    }
+  }
+  // The same insertion sort, the same swaps in the same order, visiting
+  // only the indices where it can do anything, when the array was sorted
+  // and then only the endpoints now at `positions` (ascending, distinct)
+  // changed value. The endpoints that kept their values are still in order
+  // among themselves, so the sort has nothing to do at index i > p + 1 once
+  // e[i - 1] <= e[i] past the last changed position p: the run from p stops
+  // there and resumes at the next changed position. Cost: O(changed + swaps).
+  template <class OnSwap>
+  void SortNear(std::span<const int> positions, OnSwap &&onSwap) {
+    const int n = Size();
+    int next = 1;  // the first index not yet visited
+    for (int p : positions) {
+      int i = p > next ? p : next;
+      for (; i < n; ++i) {
+        if (Greater(ends_[static_cast<std::size_t>(i - 1)], ends_[static_cast<std::size_t>(i)])) {
+          Insert(i, onSwap);
+        } else if (i > p) {
+          break;
         }
-      } while (j > 0 && Greater(e[j - 1], moving));
-      e[j] = moving;
-      Place(moving, j);
+      }
+      next = i + 1;
     }
   }
 
@@ -143,6 +148,29 @@ class EndpointAxis {
   int MaxPos(int s) const { return maxPos_[static_cast<std::size_t>(s)]; }
 
  private:
+  // One step of the insertion sort: e[i] moves left past every endpoint
+  // greater than it (the prefix [0, i) being sorted), with the swap calls.
+  template <class OnSwap>
+  void Insert(int i, OnSwap &onSwap) {
+    Endpoint *e = ends_.data();
+    const Endpoint moving = e[i];
+    int j = i;
+    do {
+      const Endpoint passed = e[j - 1];
+      e[j] = passed;
+      Place(passed, j);
+      --j;
+      if (moving.IsMax() != passed.IsMax()) {
+        // A min passing a max leftwards starts an overlap; a max passing
+        // a min leftwards ends one.
+        e[j] = moving;
+        Place(moving, j);
+        onSwap(moving.Slot(), passed.Slot(), !moving.IsMax());
+      }
+    } while (j > 0 && Greater(e[j - 1], moving));
+    e[j] = moving;
+    Place(moving, j);
+  }
   void Place(const Endpoint &e, int i) {
     auto &pos = e.IsMax() ? maxPos_ : minPos_;
     pos[static_cast<std::size_t>(e.Slot())] = i;

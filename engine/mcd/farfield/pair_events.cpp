@@ -69,57 +69,162 @@ void AxisSortSpace::RerankReported() {
   }
 }
 
-void AxisSortSpace::ComputeEvents() {
-  // The pairs reported by the previous EndChanges, in order.
-  auto byOrder = [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); };
-  previous_.clear();
-  if (keysChanged_) {
-    RerankReported();
-    previous_.assign(stayings_.begin(), stayings_.end());
-    previous_.insert(previous_.end(), hellos_.begin(), hellos_.end());
-    std::sort(previous_.begin(), previous_.end(), byOrder);
-    keysChanged_ = false;
-  } else {
-    std::merge(stayings_.begin(), stayings_.end(), hellos_.begin(), hellos_.end(), std::back_inserter(previous_),
-               byOrder);
+// Settles one overlap entry: detaches its record if the pair is no longer
+// reportable (true then), collects it as a candidate if it is reportable
+// without a record, and marks it for erasure if it neither overlaps nor
+// owns a record.
+bool AxisSortSpace::SettleEntry(OverlapEntry &e) {
+  const bool reportable = Reportable(e);
+  bool goodbye = false;
+  if (e.record >= 0 && !reportable) {
+    PairRecord &r = pairs_.At(e.record);
+    departed_.push_back({&r, r.state == PairState::Hello});
+    r.state = PairState::Goodbye;
+    e.record = -1;
+    goodbye = true;
   }
-  goodbyes_.clear();
+  if (e.record >= 0) return goodbye;
+  const Proxy &a = proxies_[static_cast<std::size_t>(e.SlotLo())];
+  const Proxy &b = proxies_[static_cast<std::size_t>(e.SlotHi())];
+  if (reportable) {
+    const std::uint64_t ra = Packed(a.key, a.serial), rb = Packed(b.key, b.serial);
+    candidates_.push_back({PairOrder{std::min(ra, rb), std::max(ra, rb)}, e.key});
+  } else if (!e.overlapping || a.state != ProxyState::Live || b.state != ProxyState::Live) {
+    eraseKeys_.push_back(e.key);
+  }
+  return goodbye;
+}
+
+namespace {
+
+bool ByOrder(const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); }
+
+// Few records move in or out at a time: then a search and a block move
+// each; else one pass.
+constexpr std::size_t kFew = 8;
+
+// Removes from `list` (ascending by Order()) each record of `gone` (also
+// ascending) that it holds.
+void RemoveByOrder(std::vector<PairRecord *> &list, const std::vector<PairRecord *> &gone) {
+  if (gone.empty()) return;
+  if (gone.size() <= kFew) {
+    for (PairRecord *r : gone) {
+      auto found = std::lower_bound(list.begin(), list.end(), r, ByOrder);
+      if (found != list.end() && *found == r) list.erase(found);
+    }
+    return;
+  }
+  std::size_t out = 0, g = 0;
+  auto at = list.begin();
+  for (PairRecord *r : gone) {
+    auto found = std::lower_bound(at, list.end(), r, ByOrder);
+    if (found == list.end() || *found != r) continue;
+    const std::size_t pos = static_cast<std::size_t>(found - list.begin());
+    while (g < pos) list[out++] = list[g++];
+    ++g;  // drop it
+    at = found + 1;
+  }
+  while (g < list.size()) list[out++] = list[g++];
+  list.resize(out);
+}
+
+// Merges `joining` (ascending by Order()) into `list` (ascending).
+void MergeByOrder(std::vector<PairRecord *> &list, const std::vector<PairRecord *> &joining,
+                  std::vector<PairRecord *> &scratch) {
+  if (joining.empty()) return;
+  if (joining.size() <= kFew) {
+    for (PairRecord *r : joining) list.insert(std::upper_bound(list.begin(), list.end(), r, ByOrder), r);
+    return;
+  }
+  scratch.clear();
+  std::merge(list.begin(), list.end(), joining.begin(), joining.end(), std::back_inserter(scratch), ByOrder);
+  list.swap(scratch);
+}
+
+}  // namespace
+
+// The stayings after some goodbyes or last block's hellos, touching only
+// the records that change: the goodbyes (departed_) in order; the stayings
+// less the departed ones; last block's hellos that stay merged in as
+// stayings. The active stayings follow when they are up to date.
+void AxisSortSpace::UpdateStayings() {
+  leaving_.clear();
+  for (const Departure &d : departed_) {
+    goodbyes_.push_back(d.record);
+    if (!d.wasHello) leaving_.push_back(d.record);
+  }
+  std::sort(goodbyes_.begin(), goodbyes_.end(), ByOrder);
+  std::sort(leaving_.begin(), leaving_.end(), ByOrder);
+  RemoveByOrder(stayings_, leaving_);
+  joining_.clear();
+  for (PairRecord *r : hellos_) {
+    if (r->state == PairState::Goodbye) continue;
+    r->state = PairState::Staying;
+    joining_.push_back(r);
+  }
   hellos_.clear();
-  stayings_.clear();
+  MergeByOrder(stayings_, joining_, previous_);
+  if (activeStayingsVersion_ != stayingsVersion_) return;  // rebuilt when next needed
+  RemoveByOrder(activeStayings_, leaving_);
+  std::size_t kept = 0;
+  for (PairRecord *r : joining_) {
+    const bool frozenPair =
+        proxies_[static_cast<std::size_t>(r->proxyA)].frozen && proxies_[static_cast<std::size_t>(r->proxyB)].frozen;
+    if (!frozenPair) joining_[kept++] = r;
+  }
+  joining_.resize(kept);
+  MergeByOrder(activeStayings_, joining_, previous_);
+}
+
+void AxisSortSpace::ComputeEvents() {
+  auto byOrder = ByOrder;
+  const bool keysChanged = keysChanged_;
+  if (keysChanged) RerankReported();
   candidates_.clear();
   eraseKeys_.clear();
 
-  // Walk every overlap entry once: detach records whose pair is no longer
-  // reportable, collect reportable pairs without a record, and drop entries
-  // that neither overlap nor own a record.
-  for (int i = 0; i < overlaps_.Size(); ++i) {
-    OverlapEntry &e = overlaps_.At(i);
-    const bool reportable = Reportable(e);
-    if (e.record >= 0 && !reportable) {
-      pairs_.At(e.record).state = PairState::Goodbye;
-      e.record = -1;
-    }
-    if (e.record >= 0) continue;
-    const Proxy &a = proxies_[static_cast<std::size_t>(e.SlotLo())];
-    const Proxy &b = proxies_[static_cast<std::size_t>(e.SlotHi())];
-    if (reportable) {
-      const std::uint64_t ra = Packed(a.key, a.serial), rb = Packed(b.key, b.serial);
-      candidates_.push_back({PairOrder{std::min(ra, rb), std::max(ra, rb)}, e.key});
-    } else if (!e.overlapping || a.state != ProxyState::Live || b.state != ProxyState::Live) {
-      eraseKeys_.push_back(e.key);
-    }
+  // Settle the overlap entries: every one, or (see "Cost" in the header)
+  // only the touched ones and those of the touched proxies, the others
+  // being unable to have changed.
+  const bool full = fullWalk_ || keysChanged || droppedHellos_ > 0 || keepFrozenPairs_ != lastKeepFrozenPairs_;
+  bool anyGoodbye = false;
+  if (full) {
+    for (int i = 0; i < overlaps_.Size(); ++i) anyGoodbye = SettleEntry(overlaps_.At(i)) || anyGoodbye;
+  } else {
+    for (int slot : touchedProxies_) overlaps_.ForEachOf(slot, [this](OverlapEntry &e) { touched_.push_back(e.key); });
+    std::sort(touched_.begin(), touched_.end());
+    touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
+    for (std::uint64_t key : touched_)
+      if (OverlapEntry *e = overlaps_.Find(key)) anyGoodbye = SettleEntry(*e) || anyGoodbye;
   }
+  touched_.clear();
+  touchedProxies_.clear();
+  fullWalk_ = false;
+  lastKeepFrozenPairs_ = keepFrozenPairs_;
   for (std::uint64_t key : eraseKeys_) overlaps_.Erase(key);
 
-  // Split last block's pairs into goodbyes and stayings, keeping the order.
-  for (PairRecord *r : previous_) {
-    if (r->state == PairState::Goodbye) {
-      goodbyes_.push_back(r);
-    } else {
-      r->state = PairState::Staying;
-      stayings_.push_back(r);
+  // Last block's pairs, in order, split into goodbyes and stayings.
+  goodbyes_.clear();
+  if (keysChanged) {
+    previous_.assign(stayings_.begin(), stayings_.end());
+    previous_.insert(previous_.end(), hellos_.begin(), hellos_.end());
+    std::sort(previous_.begin(), previous_.end(), byOrder);
+    hellos_.clear();
+    stayings_.clear();
+    for (PairRecord *r : previous_) {
+      if (r->state == PairState::Goodbye) {
+        goodbyes_.push_back(r);
+      } else {
+        r->state = PairState::Staying;
+        stayings_.push_back(r);
+      }
     }
+    ++stayingsVersion_;
+  } else if (anyGoodbye || !hellos_.empty()) {
+    UpdateStayings();
   }
+  departed_.clear();
+  keysChanged_ = false;
 
   // New pairs in order; the last ones go unreported if records run out.
   std::sort(candidates_.begin(), candidates_.end());

@@ -26,6 +26,7 @@ bool AxisSortSpace::DisablePair(ProxyId a, ProxyId b) {
     return false;
   }
   if (disabled_.insert(SlotPairKey(a, b)).second) {
+    NoteTouched(SlotPairKey(a, b));
     ++proxies_[static_cast<std::size_t>(a)].disabledCount;
     ++proxies_[static_cast<std::size_t>(b)].disabledCount;
   }
@@ -40,6 +41,7 @@ bool AxisSortSpace::EnablePair(ProxyId a, ProxyId b) {
     return false;
   }
   if (disabled_.erase(SlotPairKey(a, b)) > 0) {
+    NoteTouched(SlotPairKey(a, b));
     --proxies_[static_cast<std::size_t>(a)].disabledCount;
     --proxies_[static_cast<std::size_t>(b)].disabledCount;
   }

@@ -24,14 +24,25 @@ void AxisSortSpace::PairIteratorBegin(PairIterator *iter) const {
 }
 
 bool AxisSortSpace::GetPairs(PairIterator *iter, PairChunk *chunk) {
-  return FillChunk(iter, chunk, true, "McdSpaceGetPairs");
+  return FillChunk(iter, chunk, StayingFilter::All, "McdSpaceGetPairs");
 }
 
 bool AxisSortSpace::GetTransitions(PairIterator *iter, PairChunk *chunk) {
-  return FillChunk(iter, chunk, false, "McdSpaceGetTransitions");
+  return FillChunk(iter, chunk, StayingFilter::None, "McdSpaceGetTransitions");
 }
 
-bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withStaying, const char *api) {
+// The chunks of GetPairs, each with its stayings of two frozen proxies left
+// out, while goodbyes or hellos remain: the same boundaries, so the
+// transitions of each chunk come before the same stayings as in GetPairs.
+// Once only stayings remain, where chunks fall changes nothing for a caller
+// that handles each chunk's transitions and then its pairs in order, so
+// each chunk is filled with active stayings (FillActiveStayings).
+bool AxisSortSpace::GetActivePairs(PairIterator *iter, PairChunk *chunk) {
+  return FillChunk(iter, chunk, StayingFilter::Active, "McdSpaceGetPairs");
+}
+
+bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, StayingFilter stayings, const char *api) {
+  const bool withStaying = stayings != StayingFilter::None;
   if (!iter || !chunk || !chunk->array || chunk->size < 1) {
     MeWarning(0, "%s: NULL iterator or container, or a container of no size; no pairs", api);
     return false;
@@ -48,6 +59,7 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withSta
   const int goodbyesLeft = static_cast<int>(goodbyes_.size()) - iter->nextGoodbye;
   const int hellosLeft = static_cast<int>(hellos_.size()) - iter->nextHello;
   const int stayingsLeft = withStaying ? static_cast<int>(stayings_.size()) - iter->nextStaying : 0;
+  if (stayings == StayingFilter::Active && goodbyesLeft == 0 && hellosLeft == 0) return FillActiveStayings(iter, chunk);
 
   const int g = std::min(goodbyesLeft, chunk->size);
   const int room = chunk->size - g;
@@ -57,7 +69,16 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withSta
   const PairRecord **out = chunk->array;
   for (int i = 0; i < g; ++i) *out++ = goodbyes_[static_cast<std::size_t>(iter->nextGoodbye + i)];
   for (int i = 0; i < h; ++i) *out++ = hellos_[static_cast<std::size_t>(iter->nextHello + i)];
-  for (int i = 0; i < s; ++i) *out++ = stayings_[static_cast<std::size_t>(iter->nextStaying + i)];
+  if (stayings == StayingFilter::Active) {
+    if (s > 0) {  // the active ones among stayings_[nextStaying, nextStaying + s)
+      BuildActiveStayings();
+      const PairOrder last = stayings_[static_cast<std::size_t>(iter->nextStaying + s - 1)]->Order();
+      for (auto at = ActiveFrom(iter->nextStaying); at != activeStayings_.end() && (*at)->Order() <= last; ++at)
+        *out++ = *at;
+    }
+  } else {
+    for (int i = 0; i < s; ++i) *out++ = stayings_[static_cast<std::size_t>(iter->nextStaying + i)];
+  }
   iter->nextGoodbye += g;
   iter->nextHello += h;
   iter->nextStaying += s;
@@ -66,8 +87,34 @@ bool AxisSortSpace::FillChunk(PairIterator *iter, PairChunk *chunk, bool withSta
   chunk->goodbyeEnd = g;
   chunk->helloFirst = g;
   chunk->helloEnd = g + h;
-  chunk->stayingEnd = g + h + s;
+  chunk->stayingEnd = static_cast<int>(out - chunk->array);
   return goodbyesLeft - g + hellosLeft - h + stayingsLeft - s > 0;
+}
+
+// The first active staying at or after stayings_[index].
+std::vector<PairRecord *>::const_iterator AxisSortSpace::ActiveFrom(int index) const {
+  if (index >= static_cast<int>(stayings_.size())) return activeStayings_.end();
+  return std::lower_bound(activeStayings_.begin(), activeStayings_.end(), stayings_[static_cast<std::size_t>(index)],
+                          [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); });
+}
+
+// A chunk of stayings only: the next active stayings, as many as fit; true
+// while more remain.
+bool AxisSortSpace::FillActiveStayings(PairIterator *iter, PairChunk *chunk) {
+  BuildActiveStayings();
+  auto at = ActiveFrom(iter->nextStaying);
+  const PairRecord **out = chunk->array;
+  for (; at != activeStayings_.end() && out - chunk->array < chunk->size; ++at) *out++ = *at;
+  // Resume at the next active staying's place in stayings_.
+  iter->nextStaying = static_cast<int>(stayings_.size());
+  if (at != activeStayings_.end()) {
+    auto place = std::lower_bound(stayings_.begin(), stayings_.end(), *at,
+                                  [](const PairRecord *l, const PairRecord *r) { return l->Order() < r->Order(); });
+    iter->nextStaying = static_cast<int>(place - stayings_.begin());
+  }
+  chunk->goodbyeFirst = chunk->goodbyeEnd = chunk->helloFirst = chunk->helloEnd = 0;
+  chunk->stayingEnd = static_cast<int>(out - chunk->array);
+  return at != activeStayings_.end();
 }
 
 }  // namespace karma::mcd

@@ -3,7 +3,9 @@
 //
 // OverlapTable invariants: a hash slot sits at its home or after it in the
 // probe sequence with no free slot in between; slots_ and dense_ hold the
-// same keys, each slot's index naming its entry in dense_.
+// same keys, each slot's index naming its entry in dense_; every entry is in
+// exactly the lists of its two slots, prev/next naming its neighbours there
+// and head_ the first of each list.
 #include "pair_table.h"
 
 namespace karma::mcd {
@@ -43,7 +45,8 @@ OverlapEntry &OverlapTable::FindOrAdd(std::uint64_t key) {
   Slot &slot = slots_[SlotOf(key)];
   if (slot.key != key) {
     slot = Slot{key, static_cast<int>(dense_.size())};
-    dense_.push_back(OverlapEntry{key, -1, false});
+    dense_.push_back(OverlapEntry{key, -1, false, {-1, -1}, {-1, -1}});
+    Link(slot.index);
   }
   return dense_[static_cast<std::size_t>(slot.index)];
 }
@@ -54,9 +57,10 @@ void OverlapTable::Erase(std::uint64_t key) {
   if (slots_[i].key != key) return;
   // Keep dense_ packed: the last entry moves into the erased one's place.
   const int index = slots_[i].index;
+  Unlink(index);
   const std::uint64_t lastKey = dense_.back().key;
   if (lastKey != key) {
-    dense_[static_cast<std::size_t>(index)] = dense_.back();
+    Relocate(static_cast<int>(dense_.size()) - 1, index);
     slots_[SlotOf(lastKey)].index = index;
   }
   dense_.pop_back();
@@ -72,6 +76,61 @@ void OverlapTable::Erase(std::uint64_t key) {
     }
   }
   slots_[hole] = Slot{OverlapEntry::kEmpty, -1};
+}
+
+// The per-slot lists: entry `index` at the front of both its slots' lists.
+void OverlapTable::Link(int index) {
+  OverlapEntry &e = dense_[static_cast<std::size_t>(index)];
+  const int slots[2] = {e.SlotLo(), e.SlotHi()};
+  for (int side = 0; side < 2; ++side) {
+    int &head = head_[static_cast<std::size_t>(slots[side])];
+    e.prev[side] = -1;
+    e.next[side] = head;
+    if (head >= 0) {
+      OverlapEntry &h = dense_[static_cast<std::size_t>(head)];
+      h.prev[Side(h, slots[side])] = index;
+    }
+    head = index;
+  }
+}
+
+void OverlapTable::Unlink(int index) {
+  OverlapEntry &e = dense_[static_cast<std::size_t>(index)];
+  const int slots[2] = {e.SlotLo(), e.SlotHi()};
+  for (int side = 0; side < 2; ++side) {
+    const int p = e.prev[side], n = e.next[side];
+    if (p >= 0) {
+      OverlapEntry &pe = dense_[static_cast<std::size_t>(p)];
+      pe.next[Side(pe, slots[side])] = n;
+    } else {
+      head_[static_cast<std::size_t>(slots[side])] = n;
+    }
+    if (n >= 0) {
+      OverlapEntry &ne = dense_[static_cast<std::size_t>(n)];
+      ne.prev[Side(ne, slots[side])] = p;
+    }
+  }
+}
+
+// Moves the (linked) entry at `from` to the free place `to`, pointing its
+// neighbours and heads at the new place.
+void OverlapTable::Relocate(int from, int to) {
+  OverlapEntry &e = dense_[static_cast<std::size_t>(to)];
+  e = dense_[static_cast<std::size_t>(from)];
+  const int slots[2] = {e.SlotLo(), e.SlotHi()};
+  for (int side = 0; side < 2; ++side) {
+    const int p = e.prev[side], n = e.next[side];
+    if (p >= 0) {
+      OverlapEntry &pe = dense_[static_cast<std::size_t>(p)];
+      pe.next[Side(pe, slots[side])] = to;
+    } else {
+      head_[static_cast<std::size_t>(slots[side])] = to;
+    }
+    if (n >= 0) {
+      OverlapEntry &ne = dense_[static_cast<std::size_t>(n)];
+      ne.prev[Side(ne, slots[side])] = to;
+    }
+  }
 }
 
 void OverlapTable::Grow() {

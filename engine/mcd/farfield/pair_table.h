@@ -4,10 +4,11 @@
 // axes (in the axes' rank order, see endpoint_axis.h), whether or not it is
 // reported (frozen-frozen, disabled and culled pairs are kept so that an
 // unfreeze or an enable can say hello without a search). The entries are
-// packed in one array (walked once per step, in O(entries)) and found
-// through an open-addressing hash keyed by the two slots (lower slot in the
-// high half). It grows as more pairs overlap; only the reported records
-// below are capped.
+// packed in one array (walked in O(entries) when everything must be looked
+// at) and found through an open-addressing hash keyed by the two slots
+// (lower slot in the high half); each entry is also in a doubly linked list
+// per slot it names, so a proxy's entries are found in O(its entries). It
+// grows as more pairs overlap; only the reported records below are capped.
 //
 // PairPool: the PairRecords the space reports, exactly pairCount of them
 // (the guide's pairCount). A record keeps its index and address from its
@@ -74,6 +75,10 @@ struct OverlapEntry {
   std::uint64_t key;  // SlotPairKey, or kEmpty
   int record;         // PairRecord index when reported, else -1
   bool overlapping;   // false: overlap ended this block, awaiting its goodbye
+  // The entry's place in its two slots' lists (OverlapTable::ForEachOf):
+  // [0] in the list of SlotLo(), [1] in that of SlotHi(); -1 ends a list.
+  int next[2];
+  int prev[2];
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
   int SlotLo() const { return static_cast<int>(key >> 32); }
   int SlotHi() const { return static_cast<int>(key & 0xffffffffu); }
@@ -93,8 +98,26 @@ class OverlapTable {
   // Dense access for a full walk in O(Size()): entries [0, Size()).
   OverlapEntry &At(int i) { return dense_[static_cast<std::size_t>(i)]; }
   std::span<const OverlapEntry> Entries() const { return dense_; }
+  // Room for slots [0, slotCount) in the per-slot lists.
+  void ReserveSlots(int slotCount) { head_.assign(static_cast<std::size_t>(slotCount), -1); }
+  // Calls fn(entry) for every entry naming `slot` (in no set order); fn
+  // must not add or erase entries.
+  template <class Fn>
+  void ForEachOf(int slot, Fn &&fn) {
+    for (int i = head_[static_cast<std::size_t>(slot)]; i >= 0;) {
+      OverlapEntry &e = dense_[static_cast<std::size_t>(i)];
+      i = e.next[Side(e, slot)];
+      fn(e);
+    }
+  }
+  // The head of slot's list, for Validate.
+  int Head(int slot) const { return head_[static_cast<std::size_t>(slot)]; }
+  static int Side(const OverlapEntry &e, int slot) { return e.SlotLo() == slot ? 0 : 1; }
 
  private:
+  void Link(int index);
+  void Unlink(int index);
+  void Relocate(int from, int to);
   struct Slot {
     std::uint64_t key;  // OverlapEntry::kEmpty when free
     int index;          // into dense_
@@ -105,6 +128,7 @@ class OverlapTable {
 
   std::vector<OverlapEntry> dense_;  // the entries, packed
   std::vector<Slot> slots_;          // power-of-two size, load <= 1/2
+  std::vector<int> head_;            // by proxy slot: first entry naming it, or -1
 };
 
 class PairPool {

@@ -54,6 +54,7 @@ ProxyId AxisSortSpace::InsertImpl(void *user, const MeReal min[3], const MeReal 
   p.serial = nextSerial_++;
   p.state = ProxyState::Pending;
   pending_.push_back(slot);
+  NoteUnfrozen(slot);
   ++proxyCount_;
   return slot;
 }
@@ -89,6 +90,7 @@ bool AxisSortSpace::SetCulling(ProxyId id, CullingTable *table, int cullingIndex
     return false;
   }
   Proxy &p = proxies_[static_cast<std::size_t>(id)];
+  NoteTouchedProxy(id);
   p.table = table;  // NULL clears the parameters
   p.cullingIndex = cullingIndex;
   p.cullingId = cullingId;
@@ -99,6 +101,8 @@ bool AxisSortSpace::Remove(ProxyId id) {
   const char *api = "McdSpaceRemoveModel";
   if (!RequireInside(api) || !CheckProxy(id, api)) return false;
   Proxy &p = proxies_[static_cast<std::size_t>(id)];
+  DropUnfrozen(id);
+  NoteTouchedProxy(id);
   if (p.state == ProxyState::Pending) {
     p.state = ProxyState::Retired;  // never reached the arrays: no pairs
     retired_.push_back(id);
@@ -137,6 +141,7 @@ bool AxisSortSpace::SetAabb(ProxyId id, const MeReal min[3], const MeReal max[3]
     for (int k = 0; k < axisCount_; ++k) {
       axis_[k].SetInterval(id, min[axisIndex_[k]], max[axisIndex_[k]]);
     }
+    NoteMoved(id);
     dirty_ = true;
   }
   return true;
@@ -156,27 +161,36 @@ void AxisSortSpace::UpdateAll() {
   const char *api = "McdSpaceUpdateAll";
   if (!RequireInside(api)) return;
   if (aabbFn_) {
-    const int n = static_cast<int>(proxies_.size());
-    for (int id = 0; id < n; ++id) {
-      const Proxy &p = proxies_[static_cast<std::size_t>(id)];
-      if (p.frozen || (p.state != ProxyState::Live && p.state != ProxyState::Pending)) continue;
+    ForEachUnfrozen([this, api](int id, void *user) {
       MeReal min[3], max[3];
-      aabbFn_(p.user, aabbFnData_, min, max);
+      aabbFn_(user, aabbFnData_, min, max);
       SetAabb(id, min, max, api);
-    }
+    });
   }
   Synchronize();
 }
 
 bool AxisSortSpace::Freeze(ProxyId id) {
   if (!CheckProxy(id, "McdSpaceFreezeModel")) return false;
-  proxies_[static_cast<std::size_t>(id)].frozen = true;
+  Proxy &p = proxies_[static_cast<std::size_t>(id)];
+  if (!p.frozen) {
+    p.frozen = true;
+    DropUnfrozen(id);
+    NoteTouchedProxy(id);
+    NoteFrozenChange(id);
+  }
   return true;
 }
 
 bool AxisSortSpace::Unfreeze(ProxyId id) {
   if (!CheckProxy(id, "McdSpaceUnfreezeModel")) return false;
-  proxies_[static_cast<std::size_t>(id)].frozen = false;
+  Proxy &p = proxies_[static_cast<std::size_t>(id)];
+  if (p.frozen) {
+    p.frozen = false;
+    NoteUnfrozen(id);
+    NoteTouchedProxy(id);
+    NoteFrozenChange(id);
+  }
   return true;
 }
 

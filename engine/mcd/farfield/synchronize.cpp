@@ -28,6 +28,7 @@ void AxisSortSpace::OnAxisSwap(int axis, int a, int b, bool begins) {
   ++swaps_;
   if (!OverlapsOnOtherAxes(axis, a, b)) return;
   const std::uint64_t key = SlotPairKey(a, b);
+  NoteTouched(key);
   if (begins) {
     overlaps_.FindOrAdd(key).overlapping = true;  // new, or back within the block
   } else if (OverlapEntry *e = overlaps_.Find(key)) {
@@ -60,9 +61,7 @@ void AxisSortSpace::Synchronize() {
   // the rank-order invariant makes that harmless.
   if (dirty_) {
     swaps_ = 0;
-    for (int k = 0; k < axisCount_; ++k) {
-      axis_[k].Sort([this, k](int a, int b, bool begins) { OnAxisSwap(k, a, b, begins); });
-    }
+    SortAxes();
     dirty_ = false;
   }
   // 3. New proxies.
@@ -119,7 +118,9 @@ void AxisSortSpace::SweepNewProxies() {
     }
     // Every open interval overlaps s on the sweep axis (rank order).
     for (int t : fresh ? active_ : activeNew_) {
-      if (OverlapsOnOtherAxes(0, s, t)) overlaps_.FindOrAdd(SlotPairKey(s, t)).overlapping = true;
+      if (!OverlapsOnOtherAxes(0, s, t)) continue;
+      NoteTouched(SlotPairKey(s, t));
+      overlaps_.FindOrAdd(SlotPairKey(s, t)).overlapping = true;
     }
     open(active_, activePos_, s);
     if (fresh) open(activeNew_, activeNewPos_, s);

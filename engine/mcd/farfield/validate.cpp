@@ -4,7 +4,9 @@
 
 #include "MeMessage.h"
 
+#include <algorithm>
 #include <unordered_map>
+#include <vector>
 
 namespace karma::mcd {
 
@@ -25,6 +27,29 @@ bool AxisSortSpace::Validate() const {
     if (st == ProxyState::Live) ++live;
   }
   if (live != proxyCount_) return Fail("proxy count");
+  // The active sets ("Cost" in the header): the unfrozen list holds exactly
+  // the live unfrozen proxies, each at its recorded index; nothing is left
+  // marked as moved after a sort; every stayings entry is still settled.
+  int unfrozen = 0;
+  for (int s = 0; s < slots; ++s) {
+    const Proxy &p = proxies_[static_cast<std::size_t>(s)];
+    const int pos = unfrozenPos_[static_cast<std::size_t>(s)];
+    const bool listed =
+        pos >= 0 && pos < static_cast<int>(unfrozen_.size()) && unfrozen_[static_cast<std::size_t>(pos)] == s;
+    if (listed != (p.state == ProxyState::Live && !p.frozen)) return Fail("unfrozen list");
+    unfrozen += listed;
+    if (movedFlag_[static_cast<std::size_t>(s)] && !dirty_) return Fail("a moved mark survived the sort");
+  }
+  if (unfrozen != static_cast<int>(unfrozen_.size())) return Fail("unfrozen list size");
+  std::vector<const PairRecord *> active;
+  for (const PairRecord *r : stayings_) {
+    if (r->state != PairState::Staying) return Fail("a staying record in another state");
+    if (!(proxies_[static_cast<std::size_t>(r->proxyA)].frozen && proxies_[static_cast<std::size_t>(r->proxyB)].frozen))
+      active.push_back(r);
+  }
+  if (activeStayingsVersion_ == stayingsVersion_ && frozenChanged_.empty() &&
+      !std::equal(active.begin(), active.end(), activeStayings_.begin(), activeStayings_.end()))
+    return Fail("the active stayings are not the stayings of an unfrozen proxy");
   for (int k = 0; k < axisCount_; ++k) {
     const EndpointAxis &ax = axis_[k];
     if (!ax.IsSorted()) return Fail("an axis is not sorted");
@@ -55,6 +80,21 @@ bool AxisSortSpace::Validate() const {
     }
   }
   if (overlapping != static_cast<long long>(entries.size())) return Fail("a pair in the table does not overlap");
+  // The per-slot lists: every entry reached once from each of its slots.
+  std::unordered_map<std::uint64_t, int> reached;
+  for (int s = 0; s < slots; ++s) {
+    int steps = 0;
+    for (int i = overlaps_.Head(s); i >= 0; ++steps) {
+      if (steps > overlaps_.Size()) return Fail("a per-slot list loops");
+      const OverlapEntry &e = overlaps_.Entries()[static_cast<std::size_t>(i)];
+      if (e.SlotLo() != s && e.SlotHi() != s) return Fail("an entry in the list of a slot it does not name");
+      ++reached[e.key];
+      i = e.next[OverlapTable::Side(e, s)];
+    }
+  }
+  for (const OverlapEntry &e : overlaps_.Entries()) {
+    if (reached[e.key] != 2) return Fail("an entry not in both its slots' lists");
+  }
   // Records: each reported one owned by its entry; lists in order.
   int owned = 0;
   for (const auto &kv : entries) owned += kv.second >= 0;

@@ -42,5 +42,9 @@ void SpaceAabb(const McdSpace *space, McdModelID model, MeReal min[3], MeReal ma
 void UpdateAndReadAabb(void *user, void *data, MeReal min[3], MeReal max[3]);
 // Initialises the McdModelPairs of the hellos of the last EndChanges.
 void InitHelloPairs(McdSpace *space);
+// McdSpaceGetPairs less the stayings of two frozen models
+// (AxisSortSpace::GetActivePairs): the same chunks, iterator and return
+// value, for a caller whose work on such a pair is nothing (the bridge).
+int GetActivePairs(McdSpaceID space, McdSpacePairIterator *iter, McdModelPairContainer *pairs);
 
 }  // namespace karma::mcd

@@ -27,7 +27,9 @@ McdSpace *SpaceOfPair(McdModelID a, McdModelID b, const char *fn) {
   return s;
 }
 
-int Fill(McdSpaceID s, McdSpacePairIterator *iter, McdModelPairContainer *c, bool staying, const char *fn) {
+enum class Want { Pairs, Transitions, ActivePairs };
+
+int Fill(McdSpaceID s, McdSpacePairIterator *iter, McdModelPairContainer *c, Want want, const char *fn) {
   ME_REQUIRE_ARG_RET(s != nullptr && iter != nullptr && c != nullptr, 0, fn, "space, iterator or container is NULL");
   ME_REQUIRE_ARG_RET(c->array != nullptr && c->size > 0, 0, fn, "the container has no array or no size");
   if (s->chunk.size() < (std::size_t)c->size) s->chunk.resize((std::size_t)c->size);
@@ -39,7 +41,9 @@ int Fill(McdSpaceID s, McdSpacePairIterator *iter, McdModelPairContainer *c, boo
   it.nextGoodbye = iter->nextGoodbye;
   it.nextHello = iter->nextHello;
   it.nextStaying = iter->nextStaying;
-  const bool more = staying ? s->core->GetPairs(&it, &chunk) : s->core->GetTransitions(&it, &chunk);
+  const bool more = want == Want::Pairs         ? s->core->GetPairs(&it, &chunk)
+                    : want == Want::Transitions ? s->core->GetTransitions(&it, &chunk)
+                                                : s->core->GetActivePairs(&it, &chunk);
   iter->nextGoodbye = it.nextGoodbye;
   iter->nextHello = it.nextHello;
   iter->nextStaying = it.nextStaying;
@@ -103,11 +107,15 @@ void MEAPI McdSpacePairIteratorBegin(McdSpaceID s, McdSpacePairIterator *iter) {
 }
 
 int MEAPI McdSpaceGetPairs(McdSpaceID s, McdSpacePairIterator *iter, McdModelPairContainer *c) {
-  return Fill(s, iter, c, true, "McdSpaceGetPairs");
+  return Fill(s, iter, c, Want::Pairs, "McdSpaceGetPairs");
 }
 
 int MEAPI McdSpaceGetTransitions(McdSpaceID s, McdSpacePairIterator *iter, McdModelPairContainer *c) {
-  return Fill(s, iter, c, false, "McdSpaceGetTransitions");
+  return Fill(s, iter, c, Want::Transitions, "McdSpaceGetTransitions");
 }
 
 }  // extern "C"
+
+int karma::mcd::GetActivePairs(McdSpaceID s, McdSpacePairIterator *iter, McdModelPairContainer *c) {
+  return Fill(s, iter, c, Want::ActivePairs, "McdSpaceGetPairs");
+}

@@ -1,8 +1,11 @@
 // gather.cpp: stage 1 of the step (step.h): the enabled bodies and
-// simulated constraints in sort-key order, and the partitions.
+// simulated constraints in sort-key order, and the partitions. Only what
+// is awake is touched: the bodies come from the awake list and the
+// constraints from their lists (active_sets.h).
 #include <algorithm>
 #include <cmath>
 
+#include "active_sets.h"
 #include "step.h"
 
 namespace karma::mdt {
@@ -26,44 +29,47 @@ bool simulated(const MdtConstraint *c) {
   return c->body[0]->enabled || (c->body[1] && c->body[1]->enabled);
 }
 
+// Waking: an enabled constraint between an enabled and a disabled body
+// enables the disabled one. Woken bodies join the end of the awake list and
+// their constraints are searched in turn, so chains wake through and an
+// island wakes as a whole. The bodies woken are the same whatever the
+// order; only the order of the enable callbacks follows the list.
+void wakeConnectedSleepers(ActiveSets &a) {
+  for (size_t i = 0; i < a.awake.size(); ++i) {
+    MdtBody *b = a.awake[i];
+    for (MdtConstraint *c = b->firstConstraint; c; c = nextAtBody(c, b)) {
+      if (!c->enabled || c->owner || !c->body[0] || !c->body[1]) continue;
+      MdtBody *other = c->body[0] == b ? c->body[1] : c->body[0];
+      if (!other->enabled) MdtBodyEnable(other);
+    }
+  }
+}
+
+// The enabled bodies and the simulated constraints, each sorted. Every
+// simulated constraint is in the list of one of its enabled bodies
+// (active_sets.h), so walking the awake bodies' lists finds them all; the
+// stamp keeps one joining two awake bodies from being taken twice.
+void gatherAwake(ActiveSets &a, StepScratch &s) {
+  s.bodies.assign(a.awake.begin(), a.awake.end());
+  std::sort(s.bodies.begin(), s.bodies.end(), bodyBefore);
+  const std::uint64_t stamp = ++a.gatherStamp;
+  s.constraints.clear();
+  for (MdtBody *b : s.bodies) {
+    for (MdtConstraint *c = b->firstConstraint; c; c = nextAtBody(c, b)) {
+      if (c->gatherStamp == stamp) continue;
+      c->gatherStamp = stamp;
+      if (simulated(c)) s.constraints.push_back(c);
+    }
+  }
+  std::sort(s.constraints.begin(), s.constraints.end(), constraintBefore);
+}
+
 }  // namespace
 
 void buildPartitions(MdtWorldID world, StepScratch &s) {
-  MdtWorldPrivate *p = world->priv;
-  // Waking: an enabled constraint between an enabled and a disabled body
-  // enables the disabled one; repeat until nothing changes (chains wake
-  // through). Sorted order keeps this deterministic.
-  s.constraints.clear();
-  for (void *slot = nextConstraintSlot(p, nullptr); slot; slot = nextConstraintSlot(p, slot)) {
-    auto *c = static_cast<MdtConstraint *>(slot);
-    if (c->enabled && !c->owner && c->body[0] && c->body[1]) s.constraints.push_back(c);
-  }
-  std::sort(s.constraints.begin(), s.constraints.end(), constraintBefore);
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (MdtConstraint *c : s.constraints) {
-      MdtBody *a = c->body[0], *b = c->body[1];
-      if (a->enabled != b->enabled) {
-        MdtBody *sleeper = a->enabled ? b : a;
-        MdtBodyEnable(sleeper);
-        changed = true;
-      }
-    }
-  }
-
-  // Gather.
-  s.bodies.clear();
-  for (void *slot = MePoolGetNextUsed(&p->bodies, nullptr); slot; slot = MePoolGetNextUsed(&p->bodies, slot)) {
-    auto *b = static_cast<MdtBody *>(slot);
-    if (b->enabled) s.bodies.push_back(b);
-  }
-  std::sort(s.bodies.begin(), s.bodies.end(), bodyBefore);
-  s.constraints.clear();
-  for (void *slot = nextConstraintSlot(p, nullptr); slot; slot = nextConstraintSlot(p, slot)) {
-    auto *c = static_cast<MdtConstraint *>(slot);
-    if (simulated(c)) s.constraints.push_back(c);
-  }
-  std::sort(s.constraints.begin(), s.constraints.end(), constraintBefore);
+  ActiveSets &active = *world->priv->active;
+  wakeConnectedSleepers(active);
+  gatherAwake(active, s);
 
   // Adjacency (body index -> constraint indices), in sorted order.
   const int nb = (int)s.bodies.size();

@@ -11,11 +11,12 @@ StepScratch::~StepScratch() {
   delete pgs;
 }
 
-bool stepPartition(MdtWorldID world, StepScratch &s, const Partition &part, const StepContext &ctx) {
+bool stepPartition(MdtWorldID world, StepScratch &s, int index, const StepContext &ctx) {
+  const Partition &part = s.partitions[(size_t)index];
   const StepArena::Mark mark = s.arena.mark();
   predictPartition(world, s, part, ctx.h);
   const PartitionRows rows = collectRows(world, s, part, ctx);
-  s.partitionRows.push_back(rows.kept);
+  s.partitionRows[(size_t)index] = rows.kept;
   s.stats.rows += rows.kept;
   s.stats.rowsRemoved += rows.count - rows.kept;
   const BodySpaceProblem problem = assembleProblem(s, part, rows, ctx);

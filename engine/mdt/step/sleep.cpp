@@ -25,6 +25,7 @@
 // (I^-1 the world-frame inverse inertia about the centre of mass).
 #include <climits>
 
+#include "active_sets.h"
 #include "step.h"
 
 namespace karma::mdt {
@@ -83,16 +84,22 @@ void clearAccumulators(MdtBody *b) {
 void wakeDrivenBodies(MdtWorldID world) {
   MdtWorldPrivate *p = world->priv;
   if (p->forcesDoNotWake) return;  // the FAQ's reading: forces wait for an enable
-  if (p->enabledCount == (unsigned)MePoolGetUsed(&p->bodies)) return;
-  // Pool order is fine here: each body is decided on its own accumulators.
-  for (void *slot = MePoolGetNextUsed(&p->bodies, nullptr); slot; slot = MePoolGetNextUsed(&p->bodies, slot)) {
-    auto *b = static_cast<MdtBody *>(slot);
+  // Only the driven list can hold a disabled body with a non-zero
+  // accumulator (active_sets.h). Each body is decided on its own
+  // accumulators, so the list's order does not matter; an enable callback
+  // may add to the list, hence the index.
+  std::vector<MdtBody *> &driven = p->active->driven;
+  for (size_t i = 0; i < driven.size(); ++i) {
+    MdtBody *b = driven[i];
+    if (!b->drivenListed) continue;  // destroyed (its slot may serve another body)
+    b->drivenListed = FALSE;
     if (b->enabled) continue;
     if (drivenPastThresholds(b, world->params))
       MdtBodyEnable(b);
     else
       clearAccumulators(b);
   }
+  driven.clear();
 }
 
 bool autoDisablePartition(MdtWorldID world, StepScratch &s, const Partition &part, MeReal h) {

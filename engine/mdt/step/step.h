@@ -9,7 +9,9 @@
 //                  constraints (the world is not a node, so world contacts
 //                  join nothing); an enabled body reaching a disabled one
 //                  wakes it.
-//   Per partition (pipeline.cpp):
+//   Per partition with constraints (pipeline.cpp); a partition of one body
+//   and no constraint has no rows, and all of those go through stages 2, 7
+//   and 8 together in one batch after the others (free_bodies.cpp):
 //   2. predict     (predict.cpp) velocities from the forces, before the
 //                  constraints (and geometric stiffness, stabilize.cpp);
 //   3. rows        (collect_rows.cpp) every constraint writes its rows (the row
@@ -75,7 +77,8 @@ struct StepScratch {
   std::vector<MdtConstraint *> partConstraints;
   std::vector<MdtConstraint *> found;  // one partition's constraints, while searching
   std::vector<Partition> partitions;
-  std::vector<int> partitionRows;  // rows solved per partition (after capping)
+  std::vector<int> partitionRows;   // rows solved per partition (after capping), by partition index
+  std::vector<int> freePartitions;  // indices of the partitions of one body and no constraint
   StepArena arena;
   PartitionSolver *activeSet;  // the solvers, one of each
   PartitionSolver *pgs;
@@ -86,8 +89,11 @@ struct StepScratch {
 
 // Stage 1: fills bodies, constraints, partitions (waking bodies).
 void buildPartitions(MdtWorldID world, StepScratch &s);
-// Stages 2-8 for one partition (pipeline.cpp); true if it went to sleep.
-bool stepPartition(MdtWorldID world, StepScratch &s, const Partition &p, const StepContext &ctx);
+// Stages 2-8 for partition `index` (pipeline.cpp); true if it went to sleep.
+bool stepPartition(MdtWorldID world, StepScratch &s, int index, const StepContext &ctx);
+// Stages 2, 7 and 8 for every partition in freePartitions, one stage at a
+// time over the batch (free_bodies.cpp); how many went to sleep.
+int stepFreeBodies(MdtWorldID world, StepScratch &s, const StepContext &ctx);
 
 // Stage 2.
 void predictPartition(MdtWorldID world, StepScratch &s, const Partition &p, MeReal h);
