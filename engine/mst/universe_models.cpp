@@ -14,8 +14,8 @@ bool RemoveModelAndItsContacts(McdModelID model, const char *fn) {
                       "model stays, nothing is destroyed");
     return false;
   }
-  for (int i = 0; i < space->pairCount; ++i) {
-    McdModelPair *p = &space->pairs[i];
+  for (McdModelPair &pair : space->pairs) {
+    McdModelPair *p = &pair;
     if (p->model1 != model && p->model2 != model) continue;
     if (p->responseData) {
       MdtContactGroupDestroy(static_cast<MdtContactGroupID>(p->responseData));

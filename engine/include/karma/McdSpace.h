@@ -33,9 +33,11 @@
  * with McdSpaceSetKeepFrozenPairs(space, 0) for the guide's plain "pairs of
  * frozen models are not reported" (they then say goodbye).
  *
- * Capacity: objectCount models, pairCount reported pairs. More overlapping
- * pairs than pairCount: the extra hellos wait (retried each block) and
- * McdSpaceEndChanges warns. */
+ * Capacity: objectCount models; pairCount reported pairs to begin with.
+ * More overlapping pairs than that: the space grows its pair storage (by as
+ * much again, at least 16; pairs keep their addresses), reports every pair,
+ * and McdSpaceEndChanges warns once per space (an extension: Karma 1.2 made
+ * the extra pairs wait). */
 #ifndef KARMA_MCDSPACE_H
 #define KARMA_MCDSPACE_H
 #include "MeCall.h"
@@ -69,8 +71,9 @@ typedef struct McdCullingTable McdCullingTable;
 /* Computes a model's world AABB for the space (after McdModelUpdate). */
 typedef void(MEAPI *McdSpaceAABBFnPtr)(McdModelID model, MeVector3 minCorner, MeVector3 maxCorner);
 
-/* A space of at most objectCount models and pairCount reported pairs
- * (both >= 1), inside a change block. NULL with a warning on bad input. */
+/* A space of at most objectCount models and, to begin with, pairCount
+ * reported pairs (both >= 1; see "Capacity" above), inside a change block.
+ * NULL with a warning on bad input. */
 MEPUBLIC McdSpaceID MEAPI McdSpaceAxisSortCreate(McdFrameworkID framework, int axes, int objectCount, int pairCount);
 /* Destroys the space; its models leave it (not destroyed, no goodbyes). */
 MEPUBLIC void MEAPI McdSpaceDestroy(McdSpaceID space);

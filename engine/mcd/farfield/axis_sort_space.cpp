@@ -155,7 +155,7 @@ SpaceStats AxisSortSpace::Stats() const {
   s.reported = static_cast<int>(hellos_.size() + stayings_.size());
   s.recordsInUse = pairs_.InUse();
   s.swaps = swaps_;
-  s.droppedHellos = droppedHellos_;
+  s.pairRecords = pairs_.Capacity();
   return s;
 }
 

@@ -186,11 +186,11 @@ struct PairChunk {
 };
 
 struct SpaceStats {
-  int overlaps = 0;       // pairs overlapping on all sorted axes (reported or not)
-  int reported = 0;       // hellos + stayings of the current events
-  int recordsInUse = 0;   // including goodbyes not yet retired
-  long long swaps = 0;    // endpoint swaps that changed an overlap, last sync
-  int droppedHellos = 0;  // hellos not reported for want of records, last EndChanges
+  int overlaps = 0;      // pairs overlapping on all sorted axes (reported or not)
+  int reported = 0;      // hellos + stayings of the current events
+  int recordsInUse = 0;  // including goodbyes not yet retired
+  long long swaps = 0;   // endpoint swaps that changed an overlap, last sync
+  int pairRecords = 0;   // pair records now (pairCount, or more once grown)
 };
 
 class AxisSortSpace {
@@ -364,7 +364,7 @@ class AxisSortSpace {
 
   std::vector<PairRecord *> goodbyes_, hellos_, stayings_;
   std::uint64_t generation_ = 0;  // bumped by every EndChanges
-  int droppedHellos_ = 0;
+  bool warnedGrowth_ = false;     // the pair records' growth has been reported
 
   bool changing_ = true;
   bool keepFrozenPairs_ = false;

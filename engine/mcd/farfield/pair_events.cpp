@@ -186,7 +186,7 @@ void AxisSortSpace::ComputeEvents() {
   // Settle the overlap entries: every one, or (see "Cost" in the header)
   // only the touched ones and those of the touched proxies, the others
   // being unable to have changed.
-  const bool full = fullWalk_ || keysChanged || droppedHellos_ > 0 || keepFrozenPairs_ != lastKeepFrozenPairs_;
+  const bool full = fullWalk_ || keysChanged || keepFrozenPairs_ != lastKeepFrozenPairs_;
   bool anyGoodbye = false;
   if (full) {
     for (int i = 0; i < overlaps_.Size(); ++i) anyGoodbye = SettleEntry(overlaps_.At(i)) || anyGoodbye;
@@ -226,25 +226,24 @@ void AxisSortSpace::ComputeEvents() {
   departed_.clear();
   keysChanged_ = false;
 
-  // New pairs in order; the last ones go unreported if records run out.
+  // New pairs in order; the records grow when they run out (pair_table.h),
+  // reported once per space.
   std::sort(candidates_.begin(), candidates_.end());
-  droppedHellos_ = 0;
+  const int capacity = pairs_.Capacity();
+  bool grew = false;
   for (const Candidate &c : candidates_) {
-    PairRecord *r = pairs_.Acquire();
-    if (!r) {
-      ++droppedHellos_;
-      continue;
-    }
+    PairRecord *r = pairs_.Acquire(&grew);
     OverlapEntry *e = overlaps_.Find(c.slots);
     StartPair(r, e->SlotLo(), e->SlotHi());
     e->record = r->index;
     hellos_.push_back(r);
   }
-  if (droppedHellos_ > 0) {
+  if (grew && !warnedGrowth_) {
     MeWarning(0,
-              "McdSpaceEndChanges: more overlapping pairs than pairCount (%d); %d new pairs not "
-              "reported this step (raise pairCount in McdSpaceAxisSortCreate)",
-              pairs_.Capacity(), droppedHellos_);
+              "McdSpaceEndChanges: more overlapping pairs than pairCount (%d); the space now keeps up to %d "
+              "(reported once per space: raise pairCount in McdSpaceAxisSortCreate to avoid growing)",
+              capacity, pairs_.Capacity());
+    warnedGrowth_ = true;
   }
 }
 

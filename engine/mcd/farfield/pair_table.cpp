@@ -141,17 +141,26 @@ void OverlapTable::Grow() {
 }
 
 void PairPool::Create(int count) {
-  records_.assign(static_cast<std::size_t>(count), PairRecord{});
+  records_.clear();
   free_.clear();
-  free_.reserve(static_cast<std::size_t>(count));
-  for (int i = count - 1; i >= 0; --i) {
-    records_[static_cast<std::size_t>(i)].index = i;
-    free_.push_back(i);
-  }
+  Grow(count);
 }
 
-PairRecord *PairPool::Acquire() {
-  if (free_.empty()) return nullptr;
+void PairPool::Grow(int more) {
+  const int first = Capacity();
+  for (int i = 0; i < more; ++i) {
+    records_.emplace_back();
+    records_.back().index = first + i;
+  }
+  free_.reserve(free_.size() + static_cast<std::size_t>(more));
+  for (int i = first + more - 1; i >= first; --i) free_.push_back(i);
+}
+
+PairRecord *PairPool::Acquire(bool *grew) {
+  if (free_.empty()) {
+    Grow(Capacity() < 16 ? 16 : Capacity());
+    *grew = true;
+  }
   PairRecord &r = records_[static_cast<std::size_t>(free_.back())];
   free_.pop_back();
   return &r;

@@ -10,15 +10,19 @@
 // per slot it names, so a proxy's entries are found in O(its entries). It
 // grows as more pairs overlap; only the reported records below are capped.
 //
-// PairPool: the PairRecords the space reports, exactly pairCount of them
-// (the guide's pairCount). A record keeps its index and address from its
-// hello to its goodbye; it returns to the pool when the change block after
-// its goodbye begins, and is only then handed to a new pair.
+// PairPool: the PairRecords the space reports: pairCount of them (the
+// guide's pairCount) to begin with; when every record is in use the pool
+// grows by as many again (at least 16), so no overlapping pair goes
+// unreported. A record keeps its index and address from its hello to its
+// goodbye (records are added at the back of a deque and never move); it
+// returns to the pool when the change block after its goodbye begins, and
+// is only then handed to a new pair.
 #ifndef KARMA_MCD_FARFIELD_PAIR_TABLE_H
 #define KARMA_MCD_FARFIELD_PAIR_TABLE_H
 
 #include <compare>
 #include <cstdint>
+#include <deque>
 #include <span>
 #include <vector>
 
@@ -136,15 +140,18 @@ class PairPool {
   void Create(int count);
   int Capacity() const { return static_cast<int>(records_.size()); }
   int InUse() const { return Capacity() - static_cast<int>(free_.size()); }
-  // A free record, or nullptr when all pairCount records are in use.
-  PairRecord *Acquire();
+  // A free record, the lowest free index first; when none is free the pool
+  // first grows by its capacity (at least 16 records) and sets *grew.
+  PairRecord *Acquire(bool *grew);
   void Release(PairRecord *r);
   PairRecord &At(int index) { return records_[static_cast<std::size_t>(index)]; }
   const PairRecord &At(int index) const { return records_[static_cast<std::size_t>(index)]; }
 
  private:
-  std::vector<PairRecord> records_;  // never reallocated after Create
-  std::vector<int> free_;            // LIFO; lowest indices handed out first
+  void Grow(int more);
+
+  std::deque<PairRecord> records_;  // grown at the back only: records never move
+  std::vector<int> free_;           // LIFO; lowest indices handed out first
 };
 
 }  // namespace karma::mcd

@@ -23,9 +23,18 @@ McdSpace *SpaceOf(McdModelID model, const char *fn) {
   return static_cast<McdSpace *>(model->space);
 }
 
+// Adds McdModelPairs until there is one per pair record.
+void GrowPairs(McdSpace *s) {
+  while ((int)s->pairs.size() < s->core->PairCapacity()) {
+    s->pairs.emplace_back();
+    s->pairs.back().m_spaceIndex = -1;
+  }
+}
+
 void InitHelloPairs(McdSpace *s) {
+  GrowPairs(s);
   for (PairRecord *r : s->core->Hellos()) {
-    McdModelPair *p = &s->pairs[r->index];
+    McdModelPair *p = &s->pairs[(std::size_t)r->index];
     if (p->m_helloed) McdGoodbye(p);  // the last user never said goodbye
     *p = McdModelPair{};
     p->model1 = static_cast<McdModelID>(r->userA);
@@ -54,12 +63,11 @@ McdSpaceID MEAPI McdSpaceAxisSortCreate(McdFrameworkID fw, int axes, int objectC
   s->framework = fw;
   s->pairCount = pairCount;
   s->core = AxisSortSpace::Create(axes, objectCount, pairCount);
-  s->pairs = static_cast<McdModelPair *>(MeMemoryAPI.createZeroed(sizeof(McdModelPair) * (std::size_t)pairCount));
-  if (!s->core || !s->pairs) {
+  if (!s->core) {
     McdSpaceDestroy(s);
     return nullptr;
   }
-  for (int i = 0; i < pairCount; ++i) s->pairs[i].m_spaceIndex = -1;
+  GrowPairs(s);
   s->core->SetKeepFrozenPairs(true);
   // The AABB callback can only be set outside a block; the new space is
   // empty, so leaving and re-entering its first block changes nothing.
@@ -76,11 +84,8 @@ void MEAPI McdSpaceDestroy(McdSpaceID s) {
       McdModelSetSpaceData(static_cast<McdModelID>(s->core->ProxyUser(id)), nullptr, -1);
     AxisSortSpace::Destroy(s->core);
   }
-  if (s->pairs) {
-    for (int i = 0; i < s->pairCount; ++i)
-      if (s->pairs[i].m_helloed) McdGoodbye(&s->pairs[i]);
-    MeMemoryAPI.destroy(s->pairs);
-  }
+  for (McdModelPair &p : s->pairs)
+    if (p.m_helloed) McdGoodbye(&p);
   s->~McdSpace();
   MeMemoryAPI.destroy(s);
 }

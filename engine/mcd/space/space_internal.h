@@ -6,8 +6,9 @@
 //    model->spaceIndex == its ProxyId; the proxy's user pointer is the model
 //    and its key the model's EffectiveSortKey.
 //  - pairs[i] is the McdModelPair of the core's PairRecord with index i
-//    (pairCount of them): one McdModelPair per record, so its identity runs
-//    from hello to goodbye. EndChanges (re)initialises the pair of every
+//    (pairCount of them at first, more when the core's records grow: they
+//    are added at the back and never move): one McdModelPair per record, so
+//    its identity and address run from hello to goodbye. EndChanges (re)initialises the pair of every
 //    hello record: model1 = the record's proxyA (the lower sort key, or the
 //    earlier insertion between equal keys: "Pair order" in
 //    farfield/axis_sort_space.h), userData and
@@ -20,13 +21,14 @@
 #include "axis_sort_space.h"
 #include "mcd_internal.h"
 
+#include <deque>
 #include <vector>
 
 struct McdSpace {
   karma::mcd::AxisSortSpace *core;
   McdFramework *framework;
-  McdModelPair *pairs;  // pairCount, MeMemoryAPI
-  int pairCount;
+  std::deque<McdModelPair> pairs;  // one per core pair record, grown with them
+  int pairCount;                   // as created (the first size of `pairs`)
   McdSpaceAABBFnPtr aabbFn;
   std::vector<const karma::mcd::PairRecord *> chunk;
 };

@@ -47,7 +47,7 @@ int Fill(McdSpaceID s, McdSpacePairIterator *iter, McdModelPairContainer *c, Wan
   iter->nextGoodbye = it.nextGoodbye;
   iter->nextHello = it.nextHello;
   iter->nextStaying = it.nextStaying;
-  for (int i = 0; i < chunk.stayingEnd; ++i) c->array[i] = &s->pairs[chunk.array[i]->index];
+  for (int i = 0; i < chunk.stayingEnd; ++i) c->array[i] = &s->pairs[(std::size_t)chunk.array[i]->index];
   c->goodbyeFirst = chunk.goodbyeFirst;
   c->goodbyeEnd = chunk.goodbyeEnd;
   c->helloFirst = chunk.helloFirst;

@@ -122,14 +122,17 @@ TEST(McdSpaceLifecycle, OverflowDeliversEveryPairInChunks) {
   EXPECT_EQ(e.calls, 15);
 }
 
-TEST(McdSpaceLifecycle, PairCountExceededWarnsAndWaits) {
+TEST(McdSpaceLifecycle, PairCountExceededGrowsAndWarnsOnce) {
   WarningCapture w;
   Balls b({0, 0.1f, 0.2f}, /*pairCount=*/2);
   McdSpaceUpdateAll(b.space);
   Events e = Step(b.space);
-  EXPECT_EQ(e.hello.size(), 2u);
-  EXPECT_GE(w.count(), 1u);
+  EXPECT_EQ(e.hello.size(), 3u);  // every overlapping pair, not pairCount of them
+  EXPECT_EQ(w.count(), 1u);
   EXPECT_TRUE(w.lastMentions("McdSpaceEndChanges"));
+  e = Step(b.space);
+  EXPECT_EQ(e.staying.size(), 3u);
+  EXPECT_EQ(w.count(), 1u);
 }
 
 TEST(McdSpaceLifecycle, ModelIteratorCountAndUserData) {
