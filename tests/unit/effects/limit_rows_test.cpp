@@ -3,6 +3,7 @@
 // past it, a motor only when it is on (engine/mdt/rows.cpp, addStopRow and
 // addLimitRows).
 #include "mdt/mdt_test_support.h"
+#include "support/spinner.h"
 
 using namespace mdt_test;
 
@@ -11,29 +12,13 @@ namespace {
 constexpr MeReal kH = (MeReal)0.01;
 constexpr int kHingeRows = 5;  // the hinge alone: three linear, two angular
 
-// A body on a hinge about z to the world, spinning at `rate` about z, no
-// gravity.
-struct Spinner {
-  MdtBodyID body;
-  MdtHingeID hinge;
-  MdtLimitID limit;
-  Spinner(MdtWorldID w, MeReal rate) {
-    MdtWorldSetAutoDisable(w, FALSE);
-    body = MdtBodyCreate(w);
-    MdtBodySetAngularVelocity(body, 0, 0, rate);
-    MdtBodyEnable(body);
-    hinge = MdtHingeCreate(w);
-    MdtHingeSetBodies(hinge, body, nullptr);
-    MdtHingeSetAxis(hinge, 0, 0, 1);
-    MdtHingeEnable(hinge);
-    limit = MdtHingeGetLimit(hinge);
-  }
-  MeReal rate() const {
-    MeVector3 w;
-    MdtBodyGetAngularVelocity(body, w);
-    return w[2];
-  }
-};
+using karma_test::Spinner;
+
+// A spinner (support/spinner.h) in a world that does not put it to sleep.
+Spinner AwakeSpinner(MdtWorldID w, MeReal rate) {
+  MdtWorldSetAutoDisable(w, FALSE);
+  return Spinner(w, rate);
+}
 
 int stepRows(MdtWorldID w) {
   MdtWorldStep(w, kH);
@@ -47,7 +32,7 @@ TEST(LimitRows, AHardStopHasARowOnlyWhenReachedWithinTheStep) {
   // a row exactly in the steps that start with angle + rate h >= 0.5 (the
   // stop within reach), none before the impact or after the rebound.
   World w;
-  Spinner s(w, 1);
+  Spinner s = AwakeSpinner(w, 1);
   MdtSingleLimitSetStop(MdtLimitGetLowerLimit(s.limit), -(MeReal)0.5);
   MdtSingleLimitSetStop(MdtLimitGetUpperLimit(s.limit), (MeReal)0.5);
   MdtLimitActivateLimits(s.limit, TRUE);
@@ -68,7 +53,7 @@ TEST(LimitRows, AHardStopHasARowOnlyWhenReachedWithinTheStep) {
 
 TEST(LimitRows, ASoftStopHasARowOnlyPastTheStop) {
   World w;
-  Spinner s(w, 1);
+  Spinner s = AwakeSpinner(w, 1);
   MdtSingleLimitID up = MdtLimitGetUpperLimit(s.limit);
   MdtSingleLimitSetStop(up, (MeReal)0.3);
   MdtSingleLimitSetStiffness(up, 20);
@@ -88,7 +73,7 @@ TEST(LimitRows, ASoftStopHasARowOnlyPastTheStop) {
 
 TEST(LimitRows, LimitsSwitchedOnButFarAwayCostNothing) {
   World w;
-  Spinner s(w, 0);
+  Spinner s = AwakeSpinner(w, 0);
   MdtSingleLimitSetStop(MdtLimitGetLowerLimit(s.limit), -1);
   MdtSingleLimitSetStop(MdtLimitGetUpperLimit(s.limit), 1);
   MdtLimitActivateLimits(s.limit, TRUE);
@@ -97,7 +82,7 @@ TEST(LimitRows, LimitsSwitchedOnButFarAwayCostNothing) {
 
 TEST(LimitRows, AMotorHasARowOnlyWhenOn) {
   World w;
-  Spinner s(w, 0);
+  Spinner s = AwakeSpinner(w, 0);
   EXPECT_EQ(stepRows(w), kHingeRows);           // default: no motor
   MdtLimitSetLimitedForceMotor(s.limit, 2, 0);  // zero force: off
   EXPECT_EQ(stepRows(w), kHingeRows);

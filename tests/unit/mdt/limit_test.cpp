@@ -3,27 +3,13 @@
 #include <cmath>
 
 #include "mdt_test_support.h"
+#include "support/spinner.h"
 
 using namespace mdt_test;
 
 namespace {
 
-// A body on a hinge about z to the world, spinning at `rate` about z.
-struct Spinner {
-  MdtBodyID body;
-  MdtHingeID hinge;
-  MdtLimitID limit;
-  Spinner(MdtWorldID w, MeReal rate) {
-    body = MdtBodyCreate(w);
-    MdtBodySetAngularVelocity(body, 0, 0, rate);
-    MdtBodyEnable(body);
-    hinge = MdtHingeCreate(w);
-    MdtHingeSetBodies(hinge, body, nullptr);
-    MdtHingeSetAxis(hinge, 0, 0, 1);
-    MdtHingeEnable(hinge);
-    limit = MdtHingeGetLimit(hinge);
-  }
-};
+using karma_test::Spinner;
 
 }  // namespace
 
