@@ -87,7 +87,8 @@ typedef struct MdtWorldStepStats {
   int keaCycles;           /* partitions stopped by a detected cycle */
   int iterativePartitions; /* partitions solved by the iterative solver */
   int budgetLevel;         /* least accurate step-budget level used: 0 exact,
-                              1 exact:8, 2 iterative; -1 without a budget */
+                              1 exact:8, 2 iterative; -1 after a step without
+                              a budget */
   int budgetSweeps;        /* fewest iterative sweeps the budget gave, 0 if none */
   MeReal budgetPredicted;  /* step budget: predicted solve time (microseconds) */
   MeReal budgetMeasured;   /* step budget: measured step time (microseconds) */
