@@ -10,8 +10,23 @@ namespace karma::scenes {
 
 namespace {
 
-// Axes (rows) of the rotation Ry(yaw) Rx(a) Rz(b).
-Axes Tilt(double yaw, double a, double b) {
+// A fixed pseudo-random sequence in [-1, 1) (64-bit LCG, top bits).
+class Sequence {
+ public:
+  double next() {
+    state_ = state_ * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(state_ >> 11) / (double)(1ull << 52) - 1;
+  }
+
+ private:
+  std::uint64_t state_ = 0x4b61726d61ull;  // "Karma"
+};
+
+constexpr ShapeSpec kCube = {ShapeKind::kBox, 0.5, 0.5, 0.5};
+
+}  // namespace
+
+Axes TiltAxes(double yaw, double a, double b) {
   const double cy = std::cos(yaw), sy = std::sin(yaw), ca = std::cos(a), sa = std::sin(a), cb = std::cos(b),
                sb = std::sin(b);
   // Column-vector matrix M = Ry Rx Rz; the body axes are M's columns.
@@ -30,22 +45,6 @@ Axes Tilt(double yaw, double a, double b) {
     for (int i = 0; i < 3; ++i) R[axis][i] = m[i][axis];
   return R;
 }
-
-// A fixed pseudo-random sequence in [-1, 1) (64-bit LCG, top bits).
-class Sequence {
- public:
-  double next() {
-    state_ = state_ * 6364136223846793005ull + 1442695040888963407ull;
-    return (double)(state_ >> 11) / (double)(1ull << 52) - 1;
-  }
-
- private:
-  std::uint64_t state_ = 0x4b61726d61ull;  // "Karma"
-};
-
-constexpr ShapeSpec kCube = {ShapeKind::kBox, 0.5, 0.5, 0.5};
-
-}  // namespace
 
 SceneSpec ToppleSpec() {
   SceneSpec s;
@@ -89,7 +88,7 @@ SceneSpec Pile1000Spec() {
     for (int j = 0; j < 10; ++j)
       for (int k = 0; k < 10; ++k) {
         const double yaw = 0.3 * random.next(), a = 0.1 * random.next(), b = 0.1 * random.next();
-        s.bodies.push_back({kCube, 5, {(i - 4.5) * 0.7, 0.6 + 0.7 * j, (k - 4.5) * 0.7}, Tilt(yaw, a, b), 0});
+        s.bodies.push_back({kCube, 5, {(i - 4.5) * 0.7, 0.6 + 0.7 * j, (k - 4.5) * 0.7}, TiltAxes(yaw, a, b), 0});
       }
   s.expectation = Expectation::kNothingLost;
   s.capacity = {1000, 1001, 20000, 30000};

@@ -125,5 +125,8 @@ double ShapeVolume(const ShapeSpec &s);
 Vec3 UniformInertia(const ShapeSpec &s, double mass);
 // The lowest y of a shape at `position` with `axes`.
 double LowestPoint(const ShapeSpec &s, const Vec3 &position, const Axes &axes);
+// The body axes (rows: each axis in world coordinates, y up) of the rotation
+// Ry(yaw) Rx(a) Rz(b): the pile's boxes and the tests that rebuild them.
+Axes TiltAxes(double yaw, double a, double b);
 
 }  // namespace karma::scenes

@@ -18,30 +18,20 @@
 #include <vector>
 
 #include "Mst.h"
+#include "scene_spec.h"
 
 namespace {
 
 constexpr MeReal kStep = (MeReal)1 / 60;
 constexpr MeReal kSide = (MeReal)0.5;
 
-// Rotation rows of Ry(yaw) Rx(a) Rz(b) (rows: body axes in world, y up).
+// Rotation rows of Ry(yaw) Rx(a) Rz(b) (rows: body axes in world, y up),
+// as the anchor scenes' pile builds them (scene_spec.h).
 void Orientation(MeMatrix3 R, double yaw, double a, double b) {
-  const double cy = std::cos(yaw), sy = std::sin(yaw), ca = std::cos(a), sa = std::sin(a), cb = std::cos(b),
-               sb = std::sin(b);
-  const double Ry[3][3] = {{cy, 0, sy}, {0, 1, 0}, {-sy, 0, cy}};
-  const double Rx[3][3] = {{1, 0, 0}, {0, ca, -sa}, {0, sa, ca}};
-  const double Rz[3][3] = {{cb, -sb, 0}, {sb, cb, 0}, {0, 0, 1}};
-  double t[3][3] = {}, m[3][3] = {};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) t[i][j] += Ry[i][k] * Rx[k][j];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) m[i][j] += t[i][k] * Rz[k][j];
+  const karma::scenes::Axes axes = karma::scenes::TiltAxes(yaw, a, b);
   for (int axis = 0; axis < 3; ++axis)
-    for (int i = 0; i < 3; ++i) R[axis][i] = (MeReal)m[i][axis];
+    for (int i = 0; i < 3; ++i) R[axis][i] = (MeReal)axes[(size_t)axis][(size_t)i];
 }
-
 // A universe with y up, a ground plane y = 0 and one material of friction
 // 0.4 and no restitution (pile1000's), auto-disable off.
 struct Scene {
