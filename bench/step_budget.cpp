@@ -1,14 +1,18 @@
 // step_budget.cpp: MdtWorldSetStepBudget on an anchor scene, against the
 // fixed settings it chooses between, in one run:
-//   build/release/bench/step_budget topple|pile1000 [STEPS]
-// For each fixed setting (exact, exact:8, iterative:50/20/10/5) and each
-// budget (a fraction of the exact run's dynamics time, measured first in
-// the same run) it prints the median microseconds per whole step
-// (collision and dynamics), the scene's error figure, and for the budgets
-// the median dynamics time against the budget, the share of steps within
-// 20 % of it, and the error the fixed settings predict at that cost: the
-// smallest error among the fixed settings whose whole step costs no more.
-// Medians skip the first tenth of the steps (the cost model learning).
+//   build/release/bench/step_budget topple|pile1000 [STEPS] [--reps N]
+// It first measures two dynamics times (MdtWorldStep alone): exact's, with
+// an unbounded budget, and the floor, with a starved one (the step outside
+// the solves plus the cheapest solves: no budget buys less). Budgets are
+// fractions of exact's; one below the floor is marked so. For each fixed
+// setting (exact, exact:8, iterative:50/20/10/5) and each budget it prints
+// the median microseconds per whole step (collision and dynamics), the
+// scene's error figure, and for the budgets the median dynamics time
+// against the budget, the share of steps within 20 % of it, and the error
+// the fixed settings predict at that cost: the smallest error among the
+// fixed settings whose whole step costs no more. Every figure is the
+// median of N runs (default 3), run interleaved setting by setting; the
+// medians inside a run skip its first tenth of steps (the model learning).
 //   build/release/bench/step_budget topple|pile1000 --trace BUDGET [STEPS]
 // prints what the budget chose at each step instead.
 #include <algorithm>
@@ -16,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cctype>
 #include <cstring>
 #include <functional>
 #include <limits>
@@ -110,54 +115,119 @@ int Trace(const std::string &sceneName, double budget, int steps) {
   return 0;
 }
 
+// The median outcome of `reps` runs of each setting, run interleaved
+// (setting 1, 2, ..., then again) so that the machine's drift in speed
+// touches every setting alike.
+std::vector<Outcome> RunInterleaved(const std::string &scene, const std::vector<Setting> &settings, int steps,
+                                    int reps) {
+  std::vector<std::vector<Outcome>> runs(settings.size());
+  for (int r = 0; r < reps; ++r)
+    for (size_t k = 0; k < settings.size(); ++k) runs[k].push_back(Run(scene, settings[k], steps));
+  std::vector<Outcome> medians;
+  for (const std::vector<Outcome> &v : runs) {
+    const auto median = [&](double Outcome::*field) {
+      std::vector<double> x;
+      for (const Outcome &o : v) x.push_back(o.*field);
+      return Median(x);
+    };
+    Outcome m;
+    m.wholeMedian = median(&Outcome::wholeMedian);
+    m.dynamicsMedian = median(&Outcome::dynamicsMedian);
+    m.withinShare = median(&Outcome::withinShare);
+    m.error = median(&Outcome::error);
+    for (const Outcome &o : v) {
+      m.worstLevel = std::max(m.worstLevel, o.worstLevel);
+      if (o.fewestSweeps) m.fewestSweeps = m.fewestSweeps ? std::min(m.fewestSweeps, o.fewestSweeps) : o.fewestSweeps;
+    }
+    medians.push_back(m);
+  }
+  return medians;
+}
+
+struct Options {
+  std::string scene;
+  int steps = 0;
+  int reps = 3;
+  double trace = 0;  // > 0: print the budget's choices at this budget
+};
+
+bool ParseOptions(int argc, char **argv, Options &o) {
+  if (argc < 2) return false;
+  o.scene = argv[1];
+  if (o.scene != "topple" && o.scene != "pile1000") return false;
+  o.steps = o.scene == "topple" ? 600 : 120;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--trace" && i + 1 < argc)
+      o.trace = std::atof(argv[++i]);
+    else if (a == "--reps" && i + 1 < argc)
+      o.reps = std::max(1, std::atoi(argv[++i]));
+    else if (std::isdigit((unsigned char)a[0]))
+      o.steps = std::atoi(a.c_str());
+    else
+      return false;
+  }
+  return o.trace >= 0;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
-  const std::string scene = argc > 1 ? argv[1] : "";
-  if (scene != "topple" && scene != "pile1000") {
-    std::fprintf(stderr, "usage: %s topple|pile1000 [STEPS] | %s topple|pile1000 --trace BUDGET [STEPS]\n", argv[0],
-                 argv[0]);
+  Options opt;
+  if (!ParseOptions(argc, argv, opt)) {
+    std::fprintf(stderr, "usage: %s topple|pile1000 [STEPS] [--reps N (3)] [--trace BUDGET]\n", argv[0]);
     return 2;
   }
-  const int defaultSteps = scene == "topple" ? 600 : 120;
-  if (argc > 3 && !std::strcmp(argv[2], "--trace"))
-    return Trace(scene, std::atof(argv[3]), argc > 4 ? std::atoi(argv[4]) : defaultSteps);
-  const int steps = argc > 2 ? std::atoi(argv[2]) : defaultSteps;
+  if (opt.trace > 0) return Trace(opt.scene, opt.trace, opt.steps);
+  const std::string &scene = opt.scene;
   const char *errorName = scene == "topple" ? "worst top-box drift" : "deepest overlap";
 
-  // The exact run with an unbounded budget measures exact's dynamics time.
-  const Outcome exactTimed = Run(scene, {"exact (timed)", MdtKeaMethodActiveSet, 0, 1e9}, steps);
-  const double exactDynamics = exactTimed.dynamicsMedian;
+  // An unbounded budget measures exact's dynamics time; a starved one the
+  // floor: the step's cost outside the solves plus the cheapest solves,
+  // which no budget can go below.
+  const std::vector<Setting> timed = {{"exact (timed)", MdtKeaMethodActiveSet, 0, 1e9},
+                                      {"floor (timed)", MdtKeaMethodActiveSet, 0, 1e-3}};
+  const std::vector<Outcome> timedOut = RunInterleaved(scene, timed, opt.steps, opt.reps);
+  const double exactDynamics = timedOut[0].dynamicsMedian, floorDynamics = timedOut[1].dynamicsMedian;
 
-  std::vector<Setting> fixed = {{"exact", MdtKeaMethodActiveSet, 0, 0},   {"exact:8", MdtKeaMethodActiveSet, 8, 0},
-                                {"iterative:50", MdtKeaMethodPGS, 50, 0}, {"iterative:20", MdtKeaMethodPGS, 20, 0},
-                                {"iterative:10", MdtKeaMethodPGS, 10, 0}, {"iterative:5", MdtKeaMethodPGS, 5, 0}};
-  std::vector<Outcome> fixedOut;
-  std::printf("%s, %d steps; the exact solver's dynamics: %.1f us per step\n\n", scene.c_str(), steps, exactDynamics);
+  const std::vector<Setting> fixed = {
+      {"exact", MdtKeaMethodActiveSet, 0, 0},   {"exact:8", MdtKeaMethodActiveSet, 8, 0},
+      {"iterative:50", MdtKeaMethodPGS, 50, 0}, {"iterative:20", MdtKeaMethodPGS, 20, 0},
+      {"iterative:10", MdtKeaMethodPGS, 10, 0}, {"iterative:5", MdtKeaMethodPGS, 5, 0}};
+  std::vector<Setting> budgets;
+  std::vector<double> fractions = {1.0, 0.85, 0.7, 0.55};
+  for (double fraction : fractions) {
+    const double budget = fraction * exactDynamics;
+    char name[96];
+    std::snprintf(name, sizeof name, "budget %.0f us (%.0f%% of exact%s)", budget, fraction * 100,
+                  budget < floorDynamics ? ", below the floor" : "");
+    budgets.push_back({name, MdtKeaMethodActiveSet, 0, budget});
+  }
+  std::vector<Setting> all = fixed;
+  all.insert(all.end(), budgets.begin(), budgets.end());
+  const std::vector<Outcome> out = RunInterleaved(scene, all, opt.steps, opt.reps);
+
+  std::printf(
+      "%s, %d steps, medians of %d interleaved runs; dynamics per step: exact %.1f us, floor %.1f us (%.0f%%)\n\n",
+      scene.c_str(), opt.steps, opt.reps, exactDynamics, floorDynamics, 100 * floorDynamics / exactDynamics);
   std::printf(
       "| setting | us per step (whole) | %s (mm) | dynamics us / budget | steps within 20%% | levels used | "
       "predicted %s (mm) |\n",
       errorName, errorName);
   std::printf("|---|---|---|---|---|---|---|\n");
-  for (const Setting &s : fixed) {
-    fixedOut.push_back(Run(scene, s, steps));
-    const Outcome &o = fixedOut.back();
-    std::printf("| %s | %.1f | %.2f | | | | |\n", s.name.c_str(), o.wholeMedian, o.error * 1e3);
-  }
-  for (double fraction : {1.0, 0.85, 0.7, 0.55}) {
-    const double budget = fraction * exactDynamics;
-    char name[64];
-    std::snprintf(name, sizeof name, "budget %.0f us (%.0f%% of exact)", budget, fraction * 100);
-    const Outcome o = Run(scene, {name, MdtKeaMethodActiveSet, 0, budget}, steps);
+  for (size_t k = 0; k < fixed.size(); ++k)
+    std::printf("| %s | %.1f | %.2f | | | | |\n", fixed[k].name.c_str(), out[k].wholeMedian, out[k].error * 1e3);
+  for (size_t b = 0; b < budgets.size(); ++b) {
+    const Outcome &o = out[fixed.size() + b];
     double predicted = std::numeric_limits<double>::infinity();
     for (size_t k = 0; k < fixed.size(); ++k)
-      if (fixedOut[k].wholeMedian <= o.wholeMedian) predicted = std::min(predicted, fixedOut[k].error);
+      if (out[k].wholeMedian <= o.wholeMedian) predicted = std::min(predicted, out[k].error);
     char levels[64], sweeps[16] = "", predictedText[32] = "none cheaper";
     if (o.fewestSweeps) std::snprintf(sweeps, sizeof sweeps, ":%d", o.fewestSweeps);
     std::snprintf(levels, sizeof levels, "down to %s%s", MdtWorldGetStepBudgetLevelName(o.worstLevel), sweeps);
     if (std::isfinite(predicted)) std::snprintf(predictedText, sizeof predictedText, "%.2f", predicted * 1e3);
-    std::printf("| %s | %.1f | %.2f | %.2f | %.0f%% | %s | %s |\n", name, o.wholeMedian, o.error * 1e3,
-                o.dynamicsMedian / budget, o.withinShare * 100, levels, predictedText);
+    std::printf("| %s | %.1f | %.2f | %.2f | %.0f%% | %s | %s |\n", budgets[b].name.c_str(), o.wholeMedian,
+                o.error * 1e3, o.dynamicsMedian / budgets[b].budget, o.withinShare * 100, levels, predictedText);
   }
   return 0;
 }

@@ -100,15 +100,21 @@ TEXT
 
 \`MdtWorldSetStepBudget(world, microseconds)\` lets the engine choose, per partition and per step,
 the most accurate of exact, exact:8 and the iterative solver with 10 to 50 sweeps whose predicted
-cost fits the partition's share of the budget (\`engine/mdt/step/step_budget.h\`). The tables
-come from \`build/bench/bench/step_budget topple\` and \`step_budget pile1000 120\`: the fixed
-settings first, then budgets at fractions of the exact solver's own dynamics time measured at the
-start of the same run. "dynamics us / budget" is the median of the measured \`MdtWorldStep\` time
-over the budget (the budget covers the dynamics, not collision); "steps within 20%" the share of
-steps whose dynamics time was within 20% of the budget; "predicted" the smallest error among the
-fixed settings whose whole step costs no more than the budgeted run's, which is what the sweep
-says that time can buy. The step outside the solves (gathering, rows, integration) is a floor no
-solver choice lowers: a budget below it is exceeded.
+cost fits the partition's share of the budget (\`engine/mdt/step/step_budget.h\`). A partition is
+priced by the solves or sweeps it made last step (a warm-started partition at rest stops after one
+or two), and it moves back to a more accurate level only when that level fits 80% of its share,
+so that noise in the clock does not toggle it. The tables come from
+\`build/bench/bench/step_budget topple\` and \`step_budget pile1000 120\`: every figure is the median
+of three runs made setting by setting in turn. Two dynamics times are measured first: the exact
+solver's (an unbounded budget) and the floor (a starved budget: the step outside the solves plus
+the cheapest solves, which no budget can go below); the budgets are fractions of the first, and
+one below the floor is marked so. "dynamics us / budget" is the median of the measured
+\`MdtWorldStep\` time over the budget (the budget covers the dynamics, not collision); "steps within
+20%" the share of steps whose dynamics time was within 20% of the budget; "predicted" the smallest
+error among the fixed settings whose whole step costs no more than the budgeted run's, which is
+what the sweep says that time can buy. On these scenes the solves are a minority of the step
+(topple's floor is about three quarters of the exact step), so the range a budget can buy is
+narrow.
 
 ### topple
 

@@ -19,14 +19,15 @@ struct SolverChoice {
   BudgetChoice budget;  // when budgeted
 };
 
-SolverChoice chooseSolver(MdtWorldID world, const StepScratch &s, int rows) {
+SolverChoice chooseSolver(MdtWorldID world, const StepScratch &s, const BodySpaceProblem &problem) {
+  const int rows = problem.rowCount;
   const MdtWorldParams &params = world->params;
   SolverChoice c;
   c.settings.maxIterations = params.keaMaxIterations;
   c.settings.tolerance = params.keaTolerance;
   if (s.budget.on()) {
     c.budgeted = true;
-    c.budget = s.budget.choose(rows);
+    c.budget = s.budget.choose(problem.identity, rows);
     c.iterative = c.budget.iterative;
     if (c.budget.maxIterations > 0) c.settings.maxIterations = c.budget.maxIterations;
     return c;
@@ -44,7 +45,7 @@ SolveReport runSolver(StepScratch &s, const SolverChoice &c, const BodySpaceProb
   const Clock::time_point t0 = Clock::now();
   const SolveReport report = solver->solve(problem, c.settings, s.arena, lambda);
   const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
-  s.budget.recordSolve(c.budget, problem.rowCount, report.iterations, (MeReal)us);
+  s.budget.recordSolve(problem.identity, c.budget, problem.rowCount, report.iterations, (MeReal)us);
   return report;
 }
 
@@ -53,7 +54,7 @@ SolveReport runSolver(StepScratch &s, const SolverChoice &c, const BodySpaceProb
 std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpaceProblem &problem) {
   std::span<MeReal> lambda = s.arena.take<MeReal>((size_t)problem.rowCount);
   if (problem.rowCount == 0) return lambda;
-  const SolverChoice choice = chooseSolver(world, s, problem.rowCount);
+  const SolverChoice choice = chooseSolver(world, s, problem);
   const bool iterative = choice.iterative;
   if (iterative) ++s.stats.iterativePartitions;
   const SolveReport report = runSolver(s, choice, problem, lambda);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace karma::mdt {
 
@@ -14,6 +15,10 @@ constexpr const char *kNames[StepBudget::kLevels] = {"exact", "exact:8", "iterat
 // Work of one exact linear solve of n rows: n^(3/2), between a banded
 // factorisation (n) and a dense one (n^3) for the partitions contacts make.
 MeReal exactWork(int rows) { return (MeReal)rows * std::sqrt((MeReal)rows); }
+
+// Work of an iterative solve of n rows that makes `sweeps` sweeps: one
+// pass to prepare the rows (M^-1 J^T, diagonals, blocks) and one per sweep.
+MeReal iterativeWork(int rows, MeReal sweeps) { return (MeReal)rows * (1 + sweeps); }
 
 }  // namespace
 
@@ -33,48 +38,89 @@ void StepBudget::endStep(MeReal stepMicroseconds) {
   exact_.decay();
   iterative_.decay();
   exactSolves_.decay();
+  sweepsCapped_.decay();
+  sweepsStopped_.decay();
   overhead_.decay();
   MeReal outside = std::max<MeReal>(0, stepMicroseconds - spent_);
   if (overhead_.time > 0) outside = std::min(outside, kOutlier * overhead_.ratio());
   overhead_.add(outside, 1);
   expectedRows_ = rowsSoFar_;
+  std::sort(current_.begin(), current_.end(),
+            [](const PartitionRecord &a, const PartitionRecord &b) { return a.identity < b.identity; });
+  last_.swap(current_);
+  current_.clear();
 }
 
-MeReal StepBudget::predictedCost(const BudgetChoice &c, int rows) const {
-  if (c.iterative) return iterative_.ratio() * (MeReal)rows * (MeReal)c.maxIterations;
-  MeReal solves = exactSolves_.ratio();
-  if (c.maxIterations > 0) solves = std::min(solves, (MeReal)c.maxIterations);
-  return exact_.ratio() * exactWork(rows) * solves;
+const StepBudget::PartitionRecord *StepBudget::remembered(std::uintptr_t partition) const {
+  if (partition == 0) return nullptr;
+  const auto it = std::lower_bound(last_.begin(), last_.end(), partition,
+                                   [](const PartitionRecord &r, std::uintptr_t id) { return r.identity < id; });
+  return it != last_.end() && it->identity == partition ? &*it : nullptr;
 }
 
-BudgetChoice StepBudget::choose(int rows) const {
+MeReal StepBudget::expectedIterations(const BudgetChoice &c, const PartitionRecord *last) const {
+  const MeReal cap = c.maxIterations > 0 ? (MeReal)c.maxIterations : MEINFINITY;
+  const bool sameKind = last && (last->level == 2) == c.iterative;
+  if (sameKind && last->iterations < last->cap) return std::clamp((MeReal)last->iterations, (MeReal)1, cap);
+  // It ran to its cap: it may use all of a larger one.
+  if (sameKind && c.iterative) return cap;
+  if (sameKind) return std::clamp(std::max(exactSolves_.ratio(), (MeReal)last->iterations), (MeReal)1, cap);
+  if (!c.iterative) return std::clamp(exactSolves_.ratio(), (MeReal)1, cap);
+  // A fraction f of iterative solves ran to their cap; the others stopped
+  // after s sweeps on the mean.
+  const MeReal f = sweepsCapped_.ratio();
+  return f * cap + (1 - f) * std::clamp(sweepsStopped_.ratio(), (MeReal)1, cap);
+}
+
+MeReal StepBudget::predictedCost(const BudgetChoice &c, std::uintptr_t partition, int rows) const {
+  const MeReal iterations = expectedIterations(c, remembered(partition));
+  if (c.iterative) return iterative_.ratio() * iterativeWork(rows, iterations);
+  return exact_.ratio() * exactWork(rows) * iterations;
+}
+
+BudgetChoice StepBudget::choose(std::uintptr_t partition, int rows) const {
   const int rowsLeft = std::max(rows, expectedRows_ - rowsSoFar_);
   const MeReal left = budget_ - overhead_.ratio() - predicted_;
   const MeReal share = left * (MeReal)rows / (MeReal)rowsLeft;
+  const PartitionRecord *last = remembered(partition);
+  // Hysteresis: a partition moves to a more accurate level than last
+  // step's only when that level fits kUpgradeShare of its share, so that
+  // noise in the measured costs does not toggle it between levels (each
+  // change of solver starts the new one from the other's impulses).
+  const auto fits = [&](const BudgetChoice &c) {
+    const MeReal room = last && c.level < last->level ? kUpgradeShare * share : share;
+    return predictedCost(c, partition, rows) <= room;
+  };
   const BudgetChoice exact{0, false, 0};
-  if (predictedCost(exact, rows) <= share) return exact;
+  if (fits(exact)) return exact;
   const BudgetChoice capped{1, false, kCappedSolves};
-  if (predictedCost(capped, rows) <= share) return capped;
-  const MeReal perSweep = iterative_.ratio() * (MeReal)rows;
-  const MeReal fit = share > 0 ? std::floor(share / perSweep) : 0;
-  const int sweeps = (int)std::clamp<MeReal>(fit, kMinSweeps, kMaxSweeps);
+  if (fits(capped)) return capped;
+  int sweeps = kMinSweeps;
+  while (sweeps < kMaxSweeps && fits(BudgetChoice{2, true, sweeps + 1})) ++sweeps;
   return BudgetChoice{2, true, sweeps};
 }
 
-void StepBudget::recordSolve(const BudgetChoice &c, int rows, int solves, MeReal microseconds) {
-  const MeReal predicted = predictedCost(c, rows);
+void StepBudget::recordSolve(std::uintptr_t partition, const BudgetChoice &c, int rows, int solves,
+                             MeReal microseconds) {
+  const MeReal predicted = predictedCost(c, partition, rows);
   predicted_ += predicted;
   // The model learns from at most kOutlier times its prediction: a solve
   // the machine interrupted must not reprice the next steps.
   const MeReal learned = std::min(microseconds, kOutlier * predicted);
   const int done = std::max(solves, 1);
   if (c.iterative) {
-    iterative_.add(learned, (MeReal)rows * (MeReal)done);
+    iterative_.add(learned, iterativeWork(rows, (MeReal)done));
+    const bool capped = done >= c.maxIterations;
+    sweepsCapped_.add(capped ? 1 : 0, 1);
+    if (!capped) sweepsStopped_.add((MeReal)done, 1);
     fewestSweeps_ = fewestSweeps_ == 0 ? c.maxIterations : std::min(fewestSweeps_, c.maxIterations);
   } else {
     exact_.add(learned, exactWork(rows) * (MeReal)done);
     if (c.level == 0) exactSolves_.add((MeReal)done, 1);
   }
+  if (partition != 0)
+    current_.push_back(
+        {partition, c.level, done, c.maxIterations > 0 ? c.maxIterations : std::numeric_limits<int>::max()});
   rowsSoFar_ += rows;
   spent_ += microseconds;
   worstLevel_ = std::max(worstLevel_, c.level);

@@ -12,18 +12,30 @@
 // where `overhead` is the predicted cost of the step outside the solves,
 // `spent` the predicted cost of this step's solves so far (predicted, not
 // measured, so that one interrupted solve does not starve the partitions
-// after it) and `rowsLeft` the
-// rows the step is expected to solve from this partition on (last step's
-// total minus this step's so far). At level 2, k is the most sweeps that
-// fit the share, at least kMinSweeps however little is left (fewer sweeps
-// let a resting stack fall: topple's stacks stand at 10, not at 5). The world's
+// after it) and `rowsLeft` the rows the step is expected to solve from this
+// partition on (last step's total minus this step's so far). At level 2, k
+// is the most sweeps that fit the share, at least kMinSweeps however little
+// is left (fewer sweeps let a resting stack fall: topple's stacks stand at
+// 10, not at 5). Hysteresis: a level more accurate than the one the
+// partition had last step must fit kUpgradeShare of the share. The world's
 // method (MdtWorldSetKeaMethod) and size rule (MdtWorldSetKeaIterativeRows)
-// are set aside while a budget is on.
+// are set aside while a budget is on. When even level 2 at kMinSweeps does
+// not fit, the step runs over its budget: the budget cannot buy less than
+// the step's cost outside the solves plus the cheapest solves.
 //
 // Cost model, learned from the step's own clock as the world runs:
-//   exact levels  c_exact * n^(3/2) * s   (s: linear solves, the mean seen
-//                                          at level 0; at most 8 at level 1)
-//   iterative     c_iter * n * k
+//   exact levels  c_exact * n^(3/2) * s      (s linear solves)
+//   iterative     c_iter * n * (1 + s)       (s sweeps; one pass prepares)
+// where s is what the partition made last step at the same kind of level
+// if it stopped short of its cap (a warm-started solve of a resting
+// partition stops after a sweep or a solve or two). If it ran to its cap,
+// s is the new cap (iterative) or at least what it made (exact). For a
+// partition with no record at that kind of level, s is learned over all
+// partitions: for exact levels the mean linear solves at level 0;
+// for the iterative level f * k + (1 - f) * s', where f is the share of
+// solves that ran to their cap and s' the mean sweeps of those that
+// stopped short. s never exceeds the level's cap. A partition is known
+// from one step to the next by its identity (problem.h).
 // Each coefficient is the ratio of exponentially weighted sums of measured
 // time and work (weights decay by kDecay per step), started from a prior of
 // kPriorWork units at kPriorMicroseconds each, so a level never yet run is
@@ -37,6 +49,8 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
+#include <vector>
 
 #include "MdtWorld.h"
 #include "MePrecision.h"
@@ -58,6 +72,7 @@ class StepBudget {
   static constexpr int kMinSweeps = 10;
   static constexpr MeReal kDecay = (MeReal)0.9;
   static constexpr MeReal kOutlier = 3;
+  static constexpr MeReal kUpgradeShare = (MeReal)0.8;
   static constexpr MeReal kPriorWork = 100;
   static constexpr MeReal kPriorMicroseconds = (MeReal)0.02;  // per unit of work
 
@@ -74,12 +89,13 @@ class StepBudget {
   void beginStep();
   void endStep(MeReal stepMicroseconds);
 
-  // The settings for a partition of `rows` rows about to be solved.
-  BudgetChoice choose(int rows) const;
-  // The predicted cost of a solve of `rows` rows with `choice`.
-  MeReal predictedCost(const BudgetChoice &choice, int rows) const;
+  // The settings for partition `partition` (its identity, problem.h; 0:
+  // none) of `rows` rows about to be solved.
+  BudgetChoice choose(std::uintptr_t partition, int rows) const;
+  // The predicted cost of that partition's solve with `choice`.
+  MeReal predictedCost(const BudgetChoice &choice, std::uintptr_t partition, int rows) const;
   // What that solve did: `solves` linear solves or sweeps in `microseconds`.
-  void recordSolve(const BudgetChoice &choice, int rows, int solves, MeReal microseconds);
+  void recordSolve(std::uintptr_t partition, const BudgetChoice &choice, int rows, int solves, MeReal microseconds);
 
   // This step so far (for the step stats).
   int worstLevel() const { return worstLevel_; }
@@ -107,17 +123,33 @@ class StepBudget {
     }
   };
 
+  // What a partition's solve did last step.
+  struct PartitionRecord {
+    std::uintptr_t identity = 0;
+    int level = 0;
+    int iterations = 0;  // linear solves or sweeps made
+    int cap = 0;         // the cap it was given (INT_MAX: none)
+  };
+  // Last step's record of `partition`, or null.
+  const PartitionRecord *remembered(std::uintptr_t partition) const;
+  // The linear solves or sweeps a solve with `choice` is expected to make.
+  MeReal expectedIterations(const BudgetChoice &choice, const PartitionRecord *last) const;
+
   MeReal budget_ = 0;
-  Average exact_;              // microseconds per n^(3/2) per solve
-  Average iterative_;          // microseconds per row per sweep
-  Average exactSolves_{1, 1};  // linear solves per exact solve at level 0
-  Average overhead_{0, 1};     // microseconds of the step outside the solves
-  int expectedRows_ = 0;       // rows the last step solved
-  int rowsSoFar_ = 0;          // rows solved this step
-  MeReal spent_ = 0;           // measured solve microseconds this step
-  MeReal predicted_ = 0;       // predicted solve microseconds this step
-  int worstLevel_ = -1;        // least accurate level used this step
-  int fewestSweeps_ = 0;       // fewest sweeps given at level 2 this step
+  Average exact_;                         // microseconds per n^(3/2) per solve
+  Average iterative_;                     // microseconds per row per pass (iterativeWork)
+  Average exactSolves_{1, 1};             // linear solves per exact solve at level 0
+  Average sweepsCapped_{1, 1};            // share of iterative solves that ran to their cap
+  Average sweepsStopped_{1, 1};           // sweeps of iterative solves that stopped short
+  Average overhead_{0, 1};                // microseconds of the step outside the solves
+  int expectedRows_ = 0;                  // rows the last step solved
+  int rowsSoFar_ = 0;                     // rows solved this step
+  MeReal spent_ = 0;                      // measured solve microseconds this step
+  MeReal predicted_ = 0;                  // predicted solve microseconds this step
+  std::vector<PartitionRecord> last_;     // last step's partitions, by identity
+  std::vector<PartitionRecord> current_;  // this step's so far
+  int worstLevel_ = -1;                   // least accurate level used this step
+  int fewestSweeps_ = 0;                  // fewest sweeps given at level 2 this step
 };
 
 // Brackets one MdtWorldStep: begins the budget's step when it is made, and

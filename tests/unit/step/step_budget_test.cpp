@@ -5,6 +5,7 @@
 // fixed setting it must choose.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "step_budget.h"
@@ -22,10 +23,10 @@ using step_test::Scene;
 struct TrueCosts {
   double exactPerWork = 0.02;  // microseconds per n^(3/2) per linear solve
   double exactSolves = 3;      // linear solves per exact solve
-  double iterPerWork = 0.05;   // microseconds per row per sweep
+  double iterPerWork = 0.05;   // microseconds per row per pass (one to prepare, one per sweep)
   double overhead = 50;        // microseconds per step outside the solves
   double solveTime(const BudgetChoice &c, int rows) const {
-    if (c.iterative) return iterPerWork * rows * c.maxIterations;
+    if (c.iterative) return iterPerWork * rows * (1 + c.maxIterations);
     const double solves = c.maxIterations > 0 ? std::min(exactSolves, (double)c.maxIterations) : exactSolves;
     return exactPerWork * rows * std::sqrt((double)rows) * solves;
   }
@@ -43,10 +44,12 @@ double RunSimulated(StepBudget &budget, const TrueCosts &truth, const std::vecto
     budget.beginStep();
     total = truth.overhead;
     if (lastChoices) lastChoices->clear();
-    for (int rows : partitionRows) {
-      const BudgetChoice c = budget.choose(rows);
+    for (size_t k = 0; k < partitionRows.size(); ++k) {
+      const int rows = partitionRows[k];
+      const std::uintptr_t partition = k + 1;
+      const BudgetChoice c = budget.choose(partition, rows);
       const double t = truth.solveTime(c, rows);
-      budget.recordSolve(c, rows, truth.solves(c), (MeReal)t);
+      budget.recordSolve(partition, c, rows, truth.solves(c), (MeReal)t);
       total += t;
       if (lastChoices) lastChoices->push_back(c);
     }
@@ -78,23 +81,87 @@ TEST(StepBudget, ChoosesTheMostAccurateLevelThatFitsItsShare) {
   RunSimulated(budget, truth, {400}, 60);  // learns the iterative cost too
   const int rows = 400;
   const BudgetChoice exact{0, false, 0};
-  const double exactCost = budget.predictedCost(exact, rows);
+  const double exactCost = budget.predictedCost(exact, 0, rows);
   // One partition: its share is all the budget leaves after the overhead.
   // A budget just above overhead + exact cost chooses exact; just below, not.
   budget.setBudget((MeReal)(budget.overhead() + exactCost * 1.01));
   budget.beginStep();
-  EXPECT_EQ(budget.choose(rows).level, 0);
+  EXPECT_EQ(budget.choose(0, rows).level, 0);
   budget.setBudget((MeReal)(budget.overhead() + exactCost * 0.99));
-  EXPECT_NE(budget.choose(rows).level, 0);
-  // Iterative: k sweeps fit and k + 1 do not.
-  const double perSweep = budget.iterativeCoefficient() * rows;
-  budget.setBudget((MeReal)(budget.overhead() + perSweep * 12.5));
-  const BudgetChoice c = budget.choose(rows);
+  EXPECT_NE(budget.choose(0, rows).level, 0);
+  // Iterative, solves that ran to their caps: k sweeps (and the
+  // preparing pass) fit and k + 1 do not.
+  const double perPass = budget.iterativeCoefficient() * rows;
+  budget.setBudget((MeReal)(budget.overhead() + perPass * 13.5));
+  const BudgetChoice c = budget.choose(0, rows);
   ASSERT_EQ(c.level, 2);
   EXPECT_EQ(c.maxIterations, 12);
   // Nothing left still runs the fewest sweeps.
   budget.setBudget((MeReal)1e-3);
-  EXPECT_EQ(budget.choose(rows).maxIterations, StepBudget::kMinSweeps);
+  EXPECT_EQ(budget.choose(0, rows).maxIterations, StepBudget::kMinSweeps);
+}
+
+// Steps a starved budget (every solve iterative) through partitions 1 and 2
+// of `rows` rows: partition 1 converges after `stopsAfter` sweeps, partition
+// 2 runs to its cap; each solve takes exactly the passes it makes.
+void RunIterativePair(StepBudget &budget, const TrueCosts &truth, int rows, int stopsAfter, int steps) {
+  budget.setBudget((MeReal)1e-3);
+  for (int step = 0; step < steps; ++step) {
+    budget.beginStep();
+    for (std::uintptr_t partition : {1u, 2u}) {
+      const BudgetChoice c = budget.choose(partition, rows);
+      const int sweeps = partition == 1 ? std::min(stopsAfter, c.maxIterations) : c.maxIterations;
+      budget.recordSolve(partition, c, rows, sweeps, (MeReal)(truth.iterPerWork * rows * (1 + sweeps)));
+    }
+    budget.endStep(1);
+  }
+}
+
+TEST(StepBudget, PricesAPartitionByTheSweepsItMadeLastStep) {
+  StepBudget budget;
+  TrueCosts truth;
+  const int rows = 100;
+  budget.setBudget(1e9);
+  RunSimulated(budget, truth, {rows, rows}, 60);  // exact: 12 passes' time
+  RunIterativePair(budget, truth, rows, 2, 100);
+  EXPECT_NEAR(budget.iterativeCoefficient(), truth.iterPerWork, 1e-4 * truth.iterPerWork);
+  const BudgetChoice fifty{2, true, 50};
+  const double perPass = truth.iterPerWork * rows;
+  // Partition 1 stopped after 2 sweeps: any cap of 2 or more costs 3 passes.
+  EXPECT_NEAR(budget.predictedCost(fifty, 1, rows), 3 * perPass, 1e-3 * perPass);
+  // Partition 2 ran to its cap: a cap of 50 costs 51 passes.
+  EXPECT_NEAR(budget.predictedCost(fifty, 2, rows), 51 * perPass, 1e-3 * perPass);
+  // Unknown partitions: half the solves ran to their cap, half stopped
+  // after 2: 1 + (50 + 2) / 2 passes.
+  EXPECT_NEAR(budget.predictedCost(fifty, 0, rows), 27 * perPass, 1e-2 * perPass);
+  EXPECT_NEAR(budget.predictedCost(fifty, 77, rows), 27 * perPass, 1e-2 * perPass);
+  // So a share of 10 passes buys partition 1 the most sweeps, and the
+  // others the fewest.
+  budget.setBudget((MeReal)(budget.overhead() + 2 * 10 * perPass));
+  budget.beginStep();
+  EXPECT_EQ(budget.choose(1, rows).maxIterations, StepBudget::kMaxSweeps);
+  EXPECT_EQ(budget.choose(2, rows).maxIterations, StepBudget::kMinSweeps);
+}
+
+TEST(StepBudget, APartitionMovesToAMoreAccurateLevelOnlyWhenItFitsWithRoom) {
+  StepBudget budget;
+  TrueCosts truth;
+  const int rows = 100;
+  budget.setBudget(1e9);
+  RunSimulated(budget, truth, {rows, rows}, 60);  // learns the exact cost
+  RunIterativePair(budget, truth, rows, 2, 60);   // both partitions now iterative
+  const BudgetChoice exact{0, false, 0};
+  const double exactCost = budget.predictedCost(exact, 1, rows);
+  ASSERT_NEAR(exactCost, budget.predictedCost(exact, 0, rows), 1e-6 * exactCost);
+  // Partition 1 of 2 (equal rows) gets half of what the budget leaves.
+  const auto budgetForShare = [&](double share) { return (MeReal)(budget.overhead() + 2 * share); };
+  budget.setBudget(budgetForShare(exactCost / 0.9));  // exact fits in 90% of the share
+  budget.beginStep();
+  EXPECT_EQ(budget.choose(1, rows).level, 2);   // last step iterative: needs kUpgradeShare
+  EXPECT_EQ(budget.choose(0, rows).level, 0);   // no memory: exact fits
+  EXPECT_EQ(budget.choose(77, rows).level, 0);  // unknown identity: the same
+  budget.setBudget(budgetForShare(exactCost / (0.98 * StepBudget::kUpgradeShare)));
+  EXPECT_EQ(budget.choose(1, rows).level, 0);
 }
 
 TEST(StepBudget, HoldsItsBudgetWithinTwentyPercentOnASceneWhoseCostItCanPredict) {
