@@ -113,7 +113,7 @@ one below the floor is marked so. "dynamics us / budget" is the median of the me
 20%" the share of steps whose dynamics time was within 20% of the budget; "predicted" the smallest
 error among the fixed settings whose whole step costs no more than the budgeted run's, which is
 what the sweep says that time can buy. On these scenes the solves are a minority of the step
-(topple's floor is about three quarters of the exact step), so the range a budget can buy is
+(each table's first line gives its floor as a share of the exact step), so the range a budget can buy is
 narrow.
 
 ### topple
