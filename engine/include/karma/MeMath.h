@@ -41,40 +41,16 @@ ME_EXTERN_C_BEGIN
 
 /* ---- MeVector3 ---------------------------------------------------------- */
 
-/* v = (x, y, z) */
-MEPUBLIC void MEAPI MeVector3Set(MeVector3 v, MeReal x, MeReal y, MeReal z);
-/* out = in */
-MEPUBLIC void MEAPI MeVector3Copy(MeVector3 out, const MeVector3 in);
-/* out = a + b */
-MEPUBLIC void MEAPI MeVector3Add(MeVector3 out, const MeVector3 a, const MeVector3 b);
-/* out = a - b */
-MEPUBLIC void MEAPI MeVector3Subtract(MeVector3 out, const MeVector3 a, const MeVector3 b);
-/* v = s * v (in place) */
-MEPUBLIC void MEAPI MeVector3Scale(MeVector3 v, MeReal s);
-/* out = s * v */
-MEPUBLIC void MEAPI MeVector3MultiplyScalar(MeVector3 out, const MeVector3 v, MeReal s);
-/* v = v + s * a (in place) */
-MEPUBLIC void MEAPI MeVector3MultiplyAdd(MeVector3 v, MeReal s, const MeVector3 a);
-/* v = -v (in place) */
-MEPUBLIC void MEAPI MeVector3Negate(MeVector3 v);
-/* returns a . b = sum_i a[i] b[i] */
-MEPUBLIC MeReal MEAPI MeVector3Dot(const MeVector3 a, const MeVector3 b);
-/* out = a x b (right-handed: x cross y = z) */
-MEPUBLIC void MEAPI MeVector3Cross(MeVector3 out, const MeVector3 a, const MeVector3 b);
-/* returns |v|^2 = v . v */
-MEPUBLIC MeReal MEAPI MeVector3MagnitudeSqr(const MeVector3 v);
-/* returns |v| */
-MEPUBLIC MeReal MEAPI MeVector3Magnitude(const MeVector3 v);
+/* Set, Copy, Add, Subtract, Scale, MultiplyScalar, MultiplyAdd, Negate,
+ * Dot, Cross, MagnitudeSqr, Magnitude, Normalize and AllFinite are defined
+ * inline in MeMathInline.h, included at the end of this header. */
+
 /* returns |a - b| */
 MEPUBLIC MeReal MEAPI MeVector3Distance(const MeVector3 a, const MeVector3 b);
 /* returns |a - b|^2 */
 MEPUBLIC MeReal MEAPI MeVector3DistanceSqr(const MeVector3 a, const MeVector3 b);
-/* v = v / |v| in place; returns the old |v|. A zero vector stays zero (returns 0). */
-MEPUBLIC MeReal MEAPI MeVector3Normalize(MeVector3 v);
 /* TRUE when every component is exactly zero */
 MEPUBLIC MeBool MEAPI MeVector3IsZero(const MeVector3 v);
-/* TRUE when no component is NaN or infinite */
-MEPUBLIC MeBool MEAPI MeVector3AllFinite(const MeVector3 v);
 /* p, q = unit vectors spanning the plane normal to n, with p x q = n/|n|
  * (so p, q, n/|n| is a right-handed orthonormal basis); a zero n counts as z.
  * n comes first, as in Karma. */
@@ -227,5 +203,7 @@ MEPUBLIC void MEAPI MeQuaternionFiniteRotation(MeVector4 q, const MeVector3 omeg
 MEPUBLIC void MEAPI MeHSVtoRGB(MeReal h, MeReal s, MeReal v, float rgb[3]);
 
 ME_EXTERN_C_END
+
+#include "MeMathInline.h"
 
 #endif /* KARMA_MEMATH_H */
