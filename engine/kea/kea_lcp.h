@@ -185,6 +185,12 @@ struct KeaOptions {
    * step (a resting scene). The answer meets the same contract; only
    * rounding differs from a fresh factor. */
   KeaFactorMemory factorMemory = KeaFactorMemory::Off;
+  /* KeaSolveSparse: the caller built rowStart and col itself and vouches
+   * that they meet the CSR rules above (starts ascending from 0, columns in
+   * range and strictly ascending within a row, every diagonal present), so
+   * only the values, b, the bounds and the options are checked. A caller
+   * that breaks the promise gets undefined behaviour, not BadInput. */
+  bool trustedStructure = false;
 };
 
 struct KeaResult {

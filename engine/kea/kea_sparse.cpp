@@ -184,7 +184,8 @@ void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace
   static const char *const kName = "KeaSolveSparse";
   /* A problem with the kept factor's structure had it validated before. */
   const bool knownStructure =
-      o.factorMemory != KeaFactorMemory::Off && o.method == KeaMethod::ActiveSet && workspace.backend.keptStructure(p);
+      o.trustedStructure || (o.factorMemory != KeaFactorMemory::Off && o.method == KeaMethod::ActiveSet &&
+                             workspace.backend.keptStructure(p));
   if (knownStructure ? !detail::ValidateSparseValues(p, o, kName) : !detail::ValidateSparse(p, o, kName)) {
     BadInput(p.n, result);
     return;

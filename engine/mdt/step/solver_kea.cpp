@@ -264,7 +264,8 @@ class KeaSolver final : public PartitionSolver {
     opt.epsilon = 0;  // softness is already on the diagonal
     if (p.anyWarm) opt.warmStart = p.warm;
     opt.factorMemory = kea::KeaFactorMemory::WhenCheaper;
-    opt.warnings = false;  // the step reports, rate-limited (solve_warnings.h)
+    opt.trustedStructure = true;  // layoutColumns: ascending columns, every diagonal present
+    opt.warnings = false;         // the step reports, rate-limited (solve_warnings.h)
     kea::KeaSolveSparse(prob, opt, *memory.workspace, result_);
     report.iterations = result_.iterations;
     report.residual = result_.residual;

@@ -317,6 +317,34 @@ TEST(KeaSparse, LongChainIsSolved) {
   EXPECT_EQ(again.iterations, 1);
 }
 
+// trustedStructure skips the CSR checks (the caller built the structure),
+// never the checks of the values: the same answer bit for bit on a good
+// problem, and BadInput for a NaN in A or an infinite b.
+TEST(KeaSparse, ATrustedStructureStillHasItsValuesChecked) {
+  const Owned good = RandomSparse(12, 3, 5);
+  KeaOptions trusted;
+  trusted.trustedStructure = true;
+  const KeaResult checked = KeaSolveSparse(good.sparse(), KeaOptions{});
+  const KeaResult skipped = KeaSolveSparse(good.sparse(), trusted);
+  ASSERT_EQ(checked.status, KeaStatus::Solved);
+  EXPECT_EQ(skipped.status, KeaStatus::Solved);
+  EXPECT_EQ(skipped.lambda, checked.lambda);
+  Owned o = good;
+  o.val[3] = std::numeric_limits<MeReal>::quiet_NaN();
+  {
+    WarningCapture capture;
+    EXPECT_EQ(KeaSolveSparse(o.sparse(), trusted).status, KeaStatus::BadInput);
+    EXPECT_TRUE(capture.saw("bad input"));
+  }
+  o = good;
+  o.b[2] = std::numeric_limits<MeReal>::infinity();
+  {
+    WarningCapture capture;
+    EXPECT_EQ(KeaSolveSparse(o.sparse(), trusted).status, KeaStatus::BadInput);
+    EXPECT_TRUE(capture.saw("bad input"));
+  }
+}
+
 TEST(KeaSparse, BadCsrInputIsReportedWithoutCrashing) {
   const Owned good = RandomSparse(4, 2, 11);
   ASSERT_EQ(KeaSolveSparse(good.sparse(), KeaOptions{}).status, KeaStatus::Solved);
