@@ -1,6 +1,7 @@
 // box_specs.cpp: SCENES.md's box scenes: "topple" (six stacks of 0.5 m
 // cubes), "stack21" (21 flat boxes) and "pile1000" (1000 cubes dropped in
-// a 10 x 10 x 10 lattice with small deterministic tilts).
+// a 10 x 10 x 10 lattice with small deterministic tilts), and "pile10k"
+// (10,000 cubes in 100 columns of 100, issue 14's large scene).
 #include <cmath>
 #include <cstdint>
 
@@ -92,6 +93,33 @@ SceneSpec Pile1000Spec() {
       }
   s.expectation = Expectation::kNothingLost;
   s.capacity = {1000, 1001, 20000, 30000};
+  return s;
+}
+
+// A 10 x 10 grid of columns 1 m apart, each of 100 cubes of 0.5 m and 5 kg
+// 0.502 m apart (gaps of 2 mm, the lowest 2 mm above the ground), each cube
+// turned by a pseudo-random yaw of up to 0.3 rad and tilts of up to 0.01
+// rad: the columns land, the gaps close from the bottom up (the top cube,
+// having fallen the 0.2 m of all the gaps below it, meets the one below at
+// about sqrt(2 g 0.2 m) = 2 m/s) and each column rests as one stack of about
+// 1,200 contact rows, its own partition.
+SceneSpec Pile10kSpec() {
+  SceneSpec s;
+  s.name = "pile10k";
+  s.steps = 600;
+  s.friction = {0.4, 0.4};  // boxes, ground
+  s.groundMaterial = 1;
+  Sequence random;
+  for (int i = 0; i < 10; ++i)
+    for (int k = 0; k < 10; ++k)
+      for (int j = 0; j < 100; ++j) {
+        const double yaw = 0.3 * random.next(), a = 0.01 * random.next(), b = 0.01 * random.next();
+        s.bodies.push_back({kCube, 5, {(i - 4.5) * 1.0, 0.252 + 0.502 * j, (k - 4.5) * 1.0}, TiltAxes(yaw, a, b), 0});
+      }
+  s.expectation = Expectation::kNothingLost;
+  // pile1000's per-cube margins (20 pairs, 30 constraints): a standing
+  // column needs about 2 pairs a cube, but fallen columns heap up.
+  s.capacity = {10000, 10001, 200000, 300000};
   return s;
 }
 

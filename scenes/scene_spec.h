@@ -111,6 +111,9 @@ SceneSpec ToppleSpec();
 SceneSpec Stack21Spec();
 SceneSpec RagdollSpec();
 SceneSpec Pile1000Spec();
+// Not an anchor scene: 10,000 cubes in 100 columns (issue 14), for
+// bench/peers' growth from pile1000.
+SceneSpec Pile10kSpec();
 // The five in SCENES.md's order.
 std::vector<SceneSpec> AnchorSpecs();
 

@@ -1,6 +1,7 @@
 // karma_engine.cpp: this project's engine in the comparison: the anchor
 // scene as scenes/anchor_scene.h builds it (Mst, defaults: the exact Kea
-// solver), stepped without the scene's own bookkeeping.
+// solver, unless SetKarmaIterativeRows sends large partitions to the
+// iterative one), stepped without the scene's own bookkeeping.
 #include "anchor_scene.h"
 #include "peer_engine.h"
 
@@ -8,9 +9,13 @@ namespace karma::peers {
 
 namespace {
 
+int iterativeRows = 0;
+
 class KarmaEngine final : public PeerEngine {
  public:
-  explicit KarmaEngine(const SceneSpec &spec) : scene_(spec) {}
+  explicit KarmaEngine(const SceneSpec &spec) : scene_(spec) {
+    MdtWorldSetKeaIterativeRows(scene_.world(), iterativeRows);
+  }
   void step() override { scene_.advance(); }
   void states(std::vector<BodyState> &out) const override { scene_.states(out); }
   double penetration() override { return scenes::DeepestPenetration(scene_.models()); }
@@ -20,6 +25,8 @@ class KarmaEngine final : public PeerEngine {
 };
 
 }  // namespace
+
+void SetKarmaIterativeRows(int rows) { iterativeRows = rows; }
 
 std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec) { return std::make_unique<KarmaEngine>(spec); }
 

@@ -12,8 +12,15 @@
 // over the repetitions, the ratios of the medians to ODE's two solvers,
 // and the figures of SCENES.md from the last repetition.
 //
+// pile10k (10,000 cubes in 100 columns, not an anchor scene) runs only
+// when named in --scenes. When both piles run, a line per engine gives the
+// growth of the time per step from pile1000 to pile10k (ten times the
+// bodies); give both the same step count (--pile-steps, --pile10k-steps)
+// for a like-for-like ratio.
+//
 //   peer_bench [--scenes car,topple,...] [--engines karma,ode-step,...]
-//              [--reps N] [--steps N] [--pile-steps N] [--ode-contacts N]
+//              [--reps N] [--steps N] [--pile-steps N] [--pile10k-steps N]
+//              [--ode-contacts N] [--iterative-rows N]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -36,13 +43,16 @@ using karma::scenes::SceneSpec;
 // pile1000's first second: ODE's exact solver takes over a second a step
 // once the pile has landed (and Karma's exact solver a few hundred ms).
 constexpr int kDefaultPileSteps = 60;
+constexpr int kDefaultPile10kSteps = 60;
 
 struct Options {
   std::vector<std::string> scenes, engines;
   int reps = 5;
   int steps = 0;  // 0: each scene's own length
   int pileSteps = kDefaultPileSteps;
+  int pile10kSteps = kDefaultPile10kSteps;
   int odeContacts = 8;
+  int iterativeRows = 0;  // Karma's MdtWorldSetKeaIterativeRows
 };
 
 std::vector<EngineKind> AllEngines() {
@@ -85,12 +95,17 @@ bool Parse(int argc, char **argv, Options &o) {
       o.steps = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--pile-steps") && hasValue)
       o.pileSteps = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--pile10k-steps") && hasValue)
+      o.pile10kSteps = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--ode-contacts") && hasValue)
       o.odeContacts = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--iterative-rows") && hasValue)
+      o.iterativeRows = std::atoi(argv[++i]);
     else
       return false;
   }
-  return o.reps > 0 && o.steps >= 0 && o.pileSteps > 0 && o.odeContacts >= 1 && o.odeContacts <= 8;
+  return o.reps > 0 && o.steps >= 0 && o.pileSteps > 0 && o.pile10kSteps > 0 && o.odeContacts >= 1 &&
+         o.odeContacts <= 8 && o.iterativeRows >= 0;
 }
 
 // One run of a scene in an engine: the step time and the figures.
@@ -182,6 +197,52 @@ bool Wanted(const std::vector<std::string> &list, const std::string &name) {
   return list.empty() || std::find(list.begin(), list.end(), name) != list.end();
 }
 
+bool Named(const std::vector<std::string> &list, const std::string &name) {
+  return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+// The scene's step count under the options.
+int StepsOf(const SceneSpec &spec, const Options &o) {
+  int steps = spec.steps;
+  if (spec.name == "pile1000") steps = std::min(steps, o.pileSteps);
+  if (spec.name == "pile10k") steps = std::min(steps, o.pile10kSteps);
+  if (o.steps > 0) steps = std::min(steps, o.steps);
+  return steps;
+}
+
+// One scene's results, kept for the growth lines.
+struct SceneResults {
+  std::string scene;
+  int steps = 0;
+  std::vector<Result> results;
+};
+
+const Result *Find(const std::vector<SceneResults> &all, const std::string &scene, const std::string &engine,
+                   int &steps) {
+  for (const SceneResults &s : all)
+    if (s.scene == scene)
+      for (const Result &r : s.results)
+        if (r.engine == engine) {
+          steps = s.steps;
+          return &r;
+        }
+  return nullptr;
+}
+
+// Per engine that ran both piles: the ratio of the median times per step.
+void PrintGrowth(const std::vector<SceneResults> &all, const std::vector<EngineKind> &engines) {
+  for (const EngineKind &e : engines) {
+    int smallSteps = 0, largeSteps = 0;
+    const Result *small = Find(all, "pile1000", e.name, smallSteps);
+    const Result *large = Find(all, "pile10k", e.name, largeSteps);
+    if (!small || !large) continue;
+    std::printf(
+        "\n%s: pile1000 (%d steps) %s µs/step, pile10k (%d steps) %s µs/step: growth %.2f× for 10× the bodies\n",
+        e.name.c_str(), smallSteps, Micros(small->median()).c_str(), largeSteps, Micros(large->median()).c_str(),
+        large->median() / small->median());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -190,19 +251,23 @@ int main(int argc, char **argv) {
     std::fprintf(stderr,
                  "usage: %s [--scenes car,topple,stack21,ragdoll,pile1000] "
                  "[--engines karma,ode-step,ode-quickstep,bullet] [--reps N (5)] "
-                 "[--steps N (each scene's own)] [--pile-steps N (%d)] [--ode-contacts 1..8 (8)]\n",
-                 argv[0], kDefaultPileSteps);
+                 "[--steps N (each scene's own)] [--pile-steps N (%d)] [--pile10k-steps N (%d)] "
+                 "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact)]\n"
+                 "  scenes: the five anchor scenes (the default) and pile10k (only when named)\n",
+                 argv[0], kDefaultPileSteps, kDefaultPile10kSteps);
     return 2;
   }
 #if KARMA_PEERS_HAVE_ODE
   karma::peers::SetOdeMaxContacts(o.odeContacts);
 #endif
+  karma::peers::SetKarmaIterativeRows(o.iterativeRows);
   std::vector<EngineKind> engines;
   for (const EngineKind &e : AllEngines())
     if (Wanted(o.engines, e.name)) engines.push_back(e);
   std::vector<SceneSpec> specs;
   for (SceneSpec &s : karma::scenes::AnchorSpecs())
     if (Wanted(o.scenes, s.name)) specs.push_back(std::move(s));
+  if (Named(o.scenes, "pile10k")) specs.push_back(karma::scenes::Pile10kSpec());
   if (engines.empty() || specs.empty()) {
     std::fprintf(stderr, "peer_bench: no engine or no scene selected\n");
     return 2;
@@ -211,9 +276,9 @@ int main(int argc, char **argv) {
       "| scene (steps) | engine | µs/step, median [range] | × ODE step | × ODE QuickStep | stable "
       "| scene figures | max speed (m/s) | penetration (mm) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<SceneResults> all;
   for (const SceneSpec &spec : specs) {
-    int steps = spec.name == "pile1000" ? std::min(spec.steps, o.pileSteps) : spec.steps;
-    if (o.steps > 0) steps = std::min(steps, o.steps);
+    const int steps = StepsOf(spec, o);
     std::vector<Result> results(engines.size());
     for (int rep = 0; rep < o.reps; ++rep) {
       for (size_t k = 0; k < engines.size(); ++k) {
@@ -227,6 +292,8 @@ int main(int argc, char **argv) {
     }
     PrintScene(spec, steps, results);
     std::fflush(stdout);
+    all.push_back({spec.name, steps, results});
   }
+  PrintGrowth(all, engines);
   return 0;
 }

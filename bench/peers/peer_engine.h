@@ -35,6 +35,9 @@ struct EngineKind {
 };
 
 std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec);
+// MdtWorldSetKeaIterativeRows for the Karma engines built after the call
+// (0, the default: every partition solved exactly).
+void SetKarmaIterativeRows(int rows);
 #if KARMA_PEERS_HAVE_ODE
 std::unique_ptr<PeerEngine> MakeOdeStep(const SceneSpec &spec);
 std::unique_ptr<PeerEngine> MakeOdeQuickStep(const SceneSpec &spec);

@@ -1,0 +1,255 @@
+// Convergence of the iterative solver (projected Gauss-Seidel in body space,
+// MdtKeaMethodPGS) to the exact solver's answer (MdtKeaMethodActiveSet, the
+// default) as its sweep count grows, on a stack, a hanging chain and a small
+// pile; a heap that lands and sleeps; and bit-identical repeated runs.
+//
+// The measure: from the same state (the scene built afresh and stepped by
+// the exact solver, which is deterministic), one step with each solver; the
+// largest difference of a body's velocity after that step,
+//     e = max_b max(|v_b - v*_b|, r |w_b - w*_b|),
+// in units of g h (the speed gravity gives in one step), with r a body's
+// half size so that both terms are speeds of points on the body. After one
+// step from one state, v - v* = M^-1 J^T (lambda - lambda*): e measures the
+// solver's impulse error alone, without the chaos of a trajectory, and
+// Gauss-Seidel's error shrinks as the sweeps grow.
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "anchor_scene.h"
+#include "step_scene.h"
+#include "support/state_hash.h"
+
+namespace {
+
+using step_test::kG;
+using step_test::kH;
+using step_test::Scene;
+
+// A scene builder adds its bodies to the scene and returns them with each
+// one's half size r (the arm that turns angular velocity into speed).
+struct Body {
+  MdtBodyID body;
+  MeReal arm;
+};
+using Builder = std::function<std::vector<Body>(Scene &)>;
+
+constexpr int kExact = 0;  // "sweeps" of the exact solver
+
+// Each body's velocity (linear, then angular times its arm) after `settle`
+// exact steps and one step of the solver given (sweeps, or kExact).
+std::vector<MeReal> VelocitiesAfterOneStep(const Builder &build, int settle, int sweeps) {
+  Scene s(true, 64);
+  const std::vector<Body> bodies = build(s);
+  s.step(settle);
+  if (sweeps != kExact) {
+    MdtWorldSetKeaMethod(s.u->world, MdtKeaMethodPGS);
+    MdtWorldSetKeaMaxIterations(s.u->world, sweeps);
+  }
+  s.step();
+  std::vector<MeReal> out;
+  for (const Body &b : bodies) {
+    MeVector3 v, w;
+    MdtBodyGetLinearVelocity(b.body, v);
+    MdtBodyGetAngularVelocity(b.body, w);
+    for (int k = 0; k < 3; ++k) out.push_back(v[k]);
+    for (int k = 0; k < 3; ++k) out.push_back(w[k] * b.arm);
+  }
+  return out;
+}
+
+// e of the comment above, in units of g h.
+MeReal VelocityError(const std::vector<MeReal> &a, const std::vector<MeReal> &b) {
+  MeReal e = 0;
+  for (size_t i = 0; i < a.size(); ++i) e = std::fmax(e, std::fabs(a[i] - b[i]));
+  return e / (kG * kH);
+}
+
+// The sweep counts compared; the first is "very few".
+const std::vector<int> kSweeps = {1, 2, 5, 10, 20, 50};
+
+// The error after one step with each sweep count.
+std::vector<MeReal> Errors(const Builder &build, int settle, const std::vector<int> &sweeps) {
+  const std::vector<MeReal> exact = VelocitiesAfterOneStep(build, settle, kExact);
+  std::vector<MeReal> errors;
+  for (int n : sweeps) errors.push_back(VelocityError(VelocitiesAfterOneStep(build, settle, n), exact));
+  return errors;
+}
+
+// The checks: the fewest sweeps are measurably off (above `fewAbove`, so
+// the test can fail); the error never grows by more than 5% (Gauss-Seidel
+// decreases the error in A's energy norm, not in this max norm, so a sweep
+// may raise it a little) plus the floor below which both solvers' stopping
+// tolerances decide; the most sweeps end below `bound` and ten times below
+// the fewest.
+void ExpectConverges(const std::vector<int> &sweeps, const std::vector<MeReal> &errors, MeReal fewAbove, MeReal bound) {
+  // PGS stops once a sweep changes no row velocity by more than its
+  // tolerance (1e-4 in single precision, 1e-10 in double) relative to the
+  // right-hand side, and Kea's tolerance is of the same order: below about
+  // 1e-3 g h in single precision (1e-7 in double) the differences are where
+  // each solver stopped, not convergence.
+  const MeReal floor = sizeof(MeReal) == 4 ? (MeReal)1e-3 : (MeReal)1e-7;
+  for (size_t i = 0; i < sweeps.size(); ++i) std::printf("%5d sweeps: %.3g g h\n", sweeps[i], (double)errors[i]);
+  EXPECT_GT(errors.front(), fewAbove) << sweeps.front() << " sweeps already agree: the test could not fail";
+  for (size_t i = 1; i < errors.size(); ++i)
+    EXPECT_LE(errors[i], errors[i - 1] * (MeReal)1.05 + floor) << sweeps[i] << " sweeps";
+  EXPECT_LT(errors.back(), bound) << sweeps.back() << " sweeps";
+  EXPECT_LT(errors.back(), errors.front() / 10) << sweeps.back() << " sweeps are not ten times better";
+}
+
+// Eight 1 m cubes of 100 kg standing on one another, just touching: the
+// first step's contacts are new, so neither solver has a warm start.
+std::vector<Body> Stack(Scene &s) {
+  std::vector<Body> out;
+  for (int i = 0; i < 8; ++i) out.push_back({McdModelGetBody(s.box(1, 1, 1, 0, (MeReal)0.5 + (MeReal)i, 0)), 0.5});
+  return out;
+}
+
+// Ten rods of 1 kg, 0.4 m long and 0.1 m thick (no collision models),
+// end to end on a straight chain of ball joints from a world pivot 10 m
+// up, held at 40 degrees from the vertical and released: the joints carry
+// tension and the chain starts to swing. A rod's inertia about its centre
+// is m l^2/12 across its axis d and m t^2/6 along it (a square section of
+// side t), I = I_across (1 - d d^T) + I_along d d^T in world axes.
+std::vector<Body> Chain(Scene &s) {
+  const MeReal link = (MeReal)0.4, thick = (MeReal)0.1;
+  const MeReal d[3] = {std::sin((MeReal)0.7), -std::cos((MeReal)0.7), 0};
+  const MeReal across = link * link / 12, along = thick * thick / 6;
+  MeMatrix3 inertia;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) inertia[i][j] = (i == j ? across : 0) + (along - across) * d[i] * d[j];
+  std::vector<Body> out;
+  MdtBodyID previous = nullptr;
+  for (int i = 0; i < 10; ++i) {
+    const MeReal centre = ((MeReal)i + (MeReal)0.5) * link, end = (MeReal)i * link;
+    MdtBodyID b = MdtBodyCreate(s.u->world);
+    MdtBodySetMass(b, 1);
+    MdtBodySetInertiaTensor(b, inertia);
+    MdtBodySetPosition(b, centre * d[0], 10 + centre * d[1], 0);
+    MdtBodyEnable(b);
+    MdtBSJointID j = MdtBSJointCreate(s.u->world);
+    MdtBSJointSetBodies(j, b, previous);
+    MdtBSJointSetPosition(j, end * d[0], 10 + end * d[1], 0);
+    MdtBSJointEnable(j);
+    out.push_back({b, link / 2});
+    previous = b;
+  }
+  return out;
+}
+
+// 27 cubes of 0.5 m, 3 x 3 x 3 with 0.1 m gaps, each turned a little about
+// a different axis, dropped from 0.1 m.
+std::vector<Body> Pile(Scene &s) {
+  std::vector<Body> out;
+  int n = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k, ++n) {
+        McdModelID m = s.box((MeReal)0.5, (MeReal)0.5, (MeReal)0.5, (MeReal)0.6 * (MeReal)(i - 1),
+                             (MeReal)0.35 + (MeReal)0.6 * (MeReal)j, (MeReal)0.6 * (MeReal)(k - 1));
+        // A rotation of about 0.1 rad about the axis (sin n, 1, cos n).
+        const MeReal half = (MeReal)0.05, sn = std::sin((MeReal)n), cn = std::cos((MeReal)n);
+        const MeReal norm = std::sqrt(sn * sn + 1 + cn * cn), sh = std::sin(half) / norm;
+        MdtBodySetQuaternion(McdModelGetBody(m), std::cos(half), sh * sn, sh, sh * cn);
+        out.push_back({McdModelGetBody(m), 0.25});
+      }
+  return out;
+}
+
+// The bounds below hold in both precisions: single precision's own floor
+// (1e-3 g h, see ExpectConverges) is below each of them.
+
+TEST(PgsConvergence, AStackApproachesTheExactImpulsesAsSweepsGrow) {
+  // Cold (new contacts, no warm start) and settled for half a second (PGS
+  // starts from the exact solver's impulses of the step before).
+  ExpectConverges(kSweeps, Errors(Stack, 0, kSweeps), (MeReal)0.1, (MeReal)0.005);
+  ExpectConverges(kSweeps, Errors(Stack, 30, kSweeps), (MeReal)0.01, (MeReal)0.005);
+}
+
+TEST(PgsConvergence, AHangingChainApproachesTheExactImpulsesAsSweepsGrow) {
+  // Swinging for 10 steps: warm-started from the step before.
+  ExpectConverges(kSweeps, Errors(Chain, 10, kSweeps), (MeReal)0.1, (MeReal)0.01);
+  // From rest, cold: tension must travel down the ten links, and
+  // Gauss-Seidel needs many more sweeps on a chain than on a stack.
+  const std::vector<int> many = {1, 10, 50, 200, 1000};
+  ExpectConverges(many, Errors(Chain, 0, many), (MeReal)0.2, (MeReal)0.005);
+}
+
+TEST(PgsConvergence, ASmallPileApproachesTheExactImpulsesAsSweepsGrow) {
+  // Step 13 of the drop: the bottom layer has landed and the layers above
+  // strike it, so the impulses differ much from the step before's.
+  ExpectConverges(kSweeps, Errors(Pile, 12, kSweeps), (MeReal)1, (MeReal)0.005);
+}
+
+// A heap of 200 cubes of 0.5 m and 5 kg: a 5 x 8 x 5 lattice 0.7 m apart
+// (0.2 m gaps), each turned by a small pseudo-random yaw and tilt, like
+// pile1000 (scenes/box_specs.cpp), dropped on the ground with friction 0.4.
+karma::scenes::SceneSpec Heap200Spec() {
+  using namespace karma::scenes;
+  SceneSpec s;
+  s.name = "heap200";
+  s.friction = {0.4, 0.4};  // boxes, ground
+  s.groundMaterial = 1;
+  std::uint64_t state = 200;
+  auto next = [&state] {  // a 64-bit LCG's top bits, in [-1, 1)
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(state >> 11) / (double)(1ull << 52) - 1;
+  };
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 8; ++j)
+      for (int k = 0; k < 5; ++k) {
+        const double yaw = 0.3 * next(), a = 0.1 * next(), b = 0.1 * next();
+        s.bodies.push_back({{ShapeKind::kBox, 0.5, 0.5, 0.5},
+                            5,
+                            {(i - 2) * 0.7, 0.6 + 0.7 * j, (k - 2) * 0.7},
+                            TiltAxes(yaw, a, b),
+                            0});
+      }
+  s.expectation = Expectation::kNothingLost;
+  s.capacity = {200, 201, 4000, 6000};
+  return s;
+}
+
+TEST(Heap, AHeapOf200LandsAndSleepsWithNothingLost) {
+  // The default settings (the exact solver) with auto-disable on, the
+  // world's default (the anchor scenes turn it off). Within 10 s every body
+  // sleeps, none is below the ground or flung away (kNothingLost: no centre
+  // below 0.2 m, none farther than 20 m from the middle), and the boxes
+  // overlap by under 2 cm (a resting contact's depth is set by the contact
+  // tolerance, a few millimetres).
+  karma::scenes::AnchorScene scene(Heap200Spec());
+  MdtWorldSetAutoDisable(scene.world(), TRUE);
+  int steps = 0;
+  while (MdtWorldGetEnabledBodyCount(scene.world()) > 0 && steps < 600) {
+    scene.step();
+    ++steps;
+  }
+  std::printf("asleep after %d steps\n", steps);
+  EXPECT_EQ(MdtWorldGetEnabledBodyCount(scene.world()), 0u) << "still awake after 10 s";
+  EXPECT_GT(steps, 30) << "asleep before landing";
+  const karma::scenes::SceneFigures f = scene.finish();
+  std::printf("%s, penetration %.1f mm\n", f.detail.c_str(), f.penetration * 1e3);
+  EXPECT_TRUE(f.stable()) << f.detail;
+  EXPECT_LT(f.penetration, 0.02);
+}
+
+// Hash of the small pile's bodies after a second, with the given method.
+std::uint64_t PileHash(MdtKeaMethod method) {
+  Scene s(true, 64);
+  MdtWorldSetKeaMethod(s.u->world, method);
+  std::vector<MdtBodyID> bodies;
+  for (const Body &b : Pile(s)) bodies.push_back(b.body);
+  s.step(60);
+  return karma_test::HashBodies(bodies);
+}
+
+TEST(Determinism, RepeatedRunsOfAPileAreBitIdentical) {
+  for (MdtKeaMethod method : {MdtKeaMethodActiveSet, MdtKeaMethodPGS}) {
+    const std::uint64_t first = PileHash(method);
+    EXPECT_EQ(PileHash(method), first) << "method " << (int)method;
+  }
+  EXPECT_NE(PileHash(MdtKeaMethodActiveSet), PileHash(MdtKeaMethodPGS)) << "the hash does not see the solver";
+}
+
+}  // namespace
