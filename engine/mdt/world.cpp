@@ -13,6 +13,13 @@ using namespace karma::mdt;
 
 namespace {
 
+// Partitions of more rows than this are solved iteratively by default
+// (MdtWorldSetKeaIterativeRows): the exact active-set method pivots one row
+// at a time, so a partition that must change many rows of its active set
+// (a landing column of 100 boxes, about 1,200 rows) can cost it thousands
+// of linear solves in one step.
+constexpr int kDefaultIterativeRows = 1000;
+
 void setDefaultParams(MdtWorldParams &p, MeReal l, MeReal m) {
   p.gravity[0] = p.gravity[1] = p.gravity[2] = 0;
   p.epsilon = (MeReal)0.01 / m;
@@ -29,7 +36,7 @@ void setDefaultParams(MdtWorldParams &p, MeReal l, MeReal m) {
   p.keaMaxIterations = 0;
   p.keaTolerance = 0;
   p.geometricStiffness = 1;
-  p.keaIterativeRows = 0;
+  p.keaIterativeRows = kDefaultIterativeRows;
 }
 
 }  // namespace
@@ -94,7 +101,7 @@ void MEAPI MdtWorldDestroy(const MdtWorldID world) {
   unregisterWorldDiagnostics(world);
   MdtWorldPrivate *p = world->priv;
   releaseConstraintPools(p);  // constraints own nothing outside their slot
-  MePoolDestroy(&p->bodies);       // every body goes with the pool
+  MePoolDestroy(&p->bodies);  // every body goes with the pool
   delete p->scratch;
   delete p->active;
   MeMemoryAPI.destroy(p);

@@ -66,7 +66,7 @@ typedef struct MdtWorldParams {
   int keaMaxIterations;
   MeReal keaTolerance;
   MeReal geometricStiffness;
-  int keaIterativeRows; /* see MdtWorldSetKeaIterativeRows; 0 = never */
+  int keaIterativeRows; /* see MdtWorldSetKeaIterativeRows; 0 = never, default 1000 */
 } MdtWorldParams;
 
 /* What the last MdtWorldStep did. */
@@ -261,9 +261,11 @@ MEPUBLIC void MEAPI MdtWorldSetKeaTolerance(const MdtWorldID world, const MeReal
  * partition of more than `rows` constraint rows (after capping) is solved
  * by the iterative method (projected Gauss-Seidel, with the same iteration
  * cap and tolerance knobs) and one of at most `rows` exactly, so a car or a
- * rag doll stays exact beside a large heap. rows >= 0; 0 (the default)
- * solves every partition by the selected method. The step stats count the
- * partitions solved iteratively. */
+ * rag doll stays exact beside a large heap. rows >= 0; 0 solves every
+ * partition by the selected method. The default is 1000 rows: the exact
+ * method pivots one row at a time, and a partition that large can cost it
+ * thousands of linear solves in a step where many contacts change. The
+ * step stats count the partitions solved iteratively. */
 MEPUBLIC void MEAPI MdtWorldSetKeaIterativeRows(const MdtWorldID world, const int rows);
 MEPUBLIC int MEAPI MdtWorldGetKeaIterativeRows(const MdtWorldID world);
 

@@ -1,6 +1,7 @@
 // The per-partition choice of solver by size (MdtWorldSetKeaIterativeRows):
 // with the exact method, a partition of more rows than the threshold is
-// solved iteratively, one of at most that many exactly; 0 means never.
+// solved iteratively, one of at most that many exactly; 0 means never; the
+// default is 1000 rows.
 #include "step_scene.h"
 #include "support/warning_capture.h"
 
@@ -27,7 +28,7 @@ TEST(SolverChoice, APartitionAtTheThresholdIsExactAndOneRowMoreIsIterative) {
   const int rows = Stats(s).rows;
   ASSERT_GT(rows, 0);
   ASSERT_EQ(Stats(s).partitions, 1);
-  EXPECT_EQ(Stats(s).iterativePartitions, 0);  // default: never
+  EXPECT_EQ(Stats(s).iterativePartitions, 0);  // default: 1000 rows, far above
 
   MdtWorldSetKeaIterativeRows(s.u->world, rows);
   EXPECT_EQ(MdtWorldGetKeaIterativeRows(s.u->world), rows);
@@ -59,6 +60,32 @@ TEST(SolverChoice, ASmallStackStaysExactBesideALargeOneSolvedIteratively) {
     EXPECT_EQ(Stats(s).iterativePartitions, 1) << "step " << i;
     EXPECT_GE(Stats(s).keaFactorizations + Stats(s).keaStaleSolves, 1) << "step " << i;  // the small one
   }
+}
+
+TEST(SolverChoice, TheDefaultSendsOnlyPartitionsOfMoreThan1000RowsToTheIterativeSolver) {
+  Scene s;
+  EXPECT_EQ(MdtWorldGetKeaIterativeRows(s.u->world), 1000);
+  // A column of 30 boxes: 30 contact faces of four frictionless rows, 120
+  // rows, exact under the default; with a threshold below it, iterative;
+  // with 0 (never), exact again.
+  Column(s, 30, 0);
+  s.step(30);
+  ASSERT_EQ(Stats(s).partitions, 1);
+  ASSERT_EQ(Stats(s).rows, 120);
+  EXPECT_EQ(Stats(s).iterativePartitions, 0);
+  MdtWorldSetKeaIterativeRows(s.u->world, 119);
+  s.step();
+  EXPECT_EQ(Stats(s).iterativePartitions, 1);
+  MdtWorldSetKeaIterativeRows(s.u->world, 0);
+  s.step();
+  EXPECT_EQ(Stats(s).iterativePartitions, 0);
+  // A column of 260 boxes: 1,040 rows, iterative under the default.
+  Scene tall(true, 300);
+  Column(tall, 260, 0);
+  tall.step(2);
+  ASSERT_EQ(Stats(tall).partitions, 1);
+  ASSERT_EQ(Stats(tall).rows, 1040);
+  EXPECT_EQ(Stats(tall).iterativePartitions, 1);
 }
 
 TEST(SolverChoice, ANegativeThresholdWarnsAndIsIgnored) {
