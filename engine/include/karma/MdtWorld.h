@@ -66,7 +66,7 @@ typedef struct MdtWorldParams {
   int keaMaxIterations;
   MeReal keaTolerance;
   MeReal geometricStiffness;
-  int keaIterativeRows; /* see MdtWorldSetKeaIterativeRows; 0 = never, default 1000 */
+  int keaIterativeRows; /* see MdtWorldSetKeaIterativeRows; 0 = never, default 300 */
 } MdtWorldParams;
 
 /* What the last MdtWorldStep did. */
@@ -262,7 +262,7 @@ MEPUBLIC void MEAPI MdtWorldSetKeaTolerance(const MdtWorldID world, const MeReal
  * by the iterative method (projected Gauss-Seidel, with the same iteration
  * cap and tolerance knobs) and one of at most `rows` exactly, so a car or a
  * rag doll stays exact beside a large heap. rows >= 0; 0 solves every
- * partition by the selected method. The default is 1000 rows: the exact
+ * partition by the selected method. The default is 300 rows: the exact
  * method pivots one row at a time, and a partition that large can cost it
  * thousands of linear solves in a step where many contacts change. The
  * step stats count the partitions solved iteratively. */

@@ -1,7 +1,7 @@
 // The per-partition choice of solver by size (MdtWorldSetKeaIterativeRows):
 // with the exact method, a partition of more rows than the threshold is
 // solved iteratively, one of at most that many exactly; 0 means never; the
-// default is 1000 rows.
+// default is 300 rows.
 #include "step_scene.h"
 #include "support/warning_capture.h"
 
@@ -28,7 +28,7 @@ TEST(SolverChoice, APartitionAtTheThresholdIsExactAndOneRowMoreIsIterative) {
   const int rows = Stats(s).rows;
   ASSERT_GT(rows, 0);
   ASSERT_EQ(Stats(s).partitions, 1);
-  EXPECT_EQ(Stats(s).iterativePartitions, 0);  // default: 1000 rows, far above
+  EXPECT_EQ(Stats(s).iterativePartitions, 0);  // default: 300 rows, far above
 
   MdtWorldSetKeaIterativeRows(s.u->world, rows);
   EXPECT_EQ(MdtWorldGetKeaIterativeRows(s.u->world), rows);
@@ -62,9 +62,9 @@ TEST(SolverChoice, ASmallStackStaysExactBesideALargeOneSolvedIteratively) {
   }
 }
 
-TEST(SolverChoice, TheDefaultSendsOnlyPartitionsOfMoreThan1000RowsToTheIterativeSolver) {
+TEST(SolverChoice, TheDefaultSendsOnlyPartitionsOfMoreThan300RowsToTheIterativeSolver) {
   Scene s;
-  EXPECT_EQ(MdtWorldGetKeaIterativeRows(s.u->world), 1000);
+  EXPECT_EQ(MdtWorldGetKeaIterativeRows(s.u->world), 300);
   // A column of 30 boxes: 30 contact faces of four frictionless rows, 120
   // rows, exact under the default; with a threshold below it, iterative;
   // with 0 (never), exact again.
@@ -79,12 +79,12 @@ TEST(SolverChoice, TheDefaultSendsOnlyPartitionsOfMoreThan1000RowsToTheIterative
   MdtWorldSetKeaIterativeRows(s.u->world, 0);
   s.step();
   EXPECT_EQ(Stats(s).iterativePartitions, 0);
-  // A column of 260 boxes: 1,040 rows, iterative under the default.
-  Scene tall(true, 300);
-  Column(tall, 260, 0);
+  // A column of 76 boxes: 304 rows, iterative under the default.
+  Scene tall(true, 80);
+  Column(tall, 76, 0);
   tall.step(2);
   ASSERT_EQ(Stats(tall).partitions, 1);
-  ASSERT_EQ(Stats(tall).rows, 1040);
+  ASSERT_EQ(Stats(tall).rows, 304);
   EXPECT_EQ(Stats(tall).iterativePartitions, 1);
 }
 
