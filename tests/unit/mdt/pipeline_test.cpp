@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "mdt_test_support.h"
+#include "support/state_hash.h"
 
 using namespace mdt_test;
 
@@ -46,28 +47,6 @@ bool inPartition(MdtWorldID w, int p, MdtBodyID b) {
   for (int i = 0; i < MdtWorldGetPartitionBodyCount(w, p); ++i)
     if (MdtWorldGetPartitionBody(w, p, i) == b) return true;
   return false;
-}
-
-// FNV-1a over the bytes of every body's position, quaternion and velocities.
-std::uint64_t stateHash(const std::vector<MdtBodyID> &bodies) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&h](const void *p, size_t n) {
-    const auto *c = static_cast<const unsigned char *>(p);
-    for (size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
-  };
-  for (MdtBodyID b : bodies) {
-    MeVector3 x, v, w;
-    MeVector4 q;
-    MdtBodyGetPosition(b, x);
-    MdtBodyGetQuaternion(b, q);
-    MdtBodyGetLinearVelocity(b, v);
-    MdtBodyGetAngularVelocity(b, w);
-    mix(x, sizeof x);
-    mix(q, sizeof q);
-    mix(v, sizeof v);
-    mix(w, sizeof w);
-  }
-  return h;
 }
 
 }  // namespace
@@ -336,7 +315,7 @@ std::uint64_t runScene(bool reversed, int steps) {
     MdtWorldStep(w, (MeReal)0.01);
   }
   for (MdtBodyID b : bodies) EXPECT_TRUE(bodyFinite(b));
-  return stateHash(bodies);
+  return karma_test::HashBodies(bodies);
 }
 
 }  // namespace
