@@ -24,14 +24,17 @@ int main(int argc, char **argv) {
   }
   const int first = argc > 2 ? std::atoi(argv[2]) : 0;
   const int last = argc > 3 ? std::atoi(argv[3]) : scene->steps();
-  std::printf("step partitions rows solves factorizations stale_solves friction_rounds unsolved cycles residual\n");
+  std::printf(
+      "step partitions rows solves factorizations stale_solves friction_rounds unsolved cycles residual "
+      "iterative_partitions\n");
   for (int i = 0; i < last; ++i) {
     scene->step();
     if (i < first) continue;
     MdtWorldStepStats s;
     MdtWorldGetStepStats(scene->world(), &s);
-    std::printf("%d %d %d %d %d %d %d %d %d %.3g\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
-                s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual);
+    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
+                s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual,
+                s.iterativePartitions);
   }
   return 0;
 }

@@ -17,8 +17,8 @@ namespace {
 // (MdtWorldSetKeaIterativeRows): the exact active-set method pivots one row
 // at a time, so a partition that must change many rows of its active set
 // (columns of boxes landing on each other) can cost it thousands of linear
-// solves in one step. Above the anchor scenes' partitions (pile1000's
-// columns: about 120 rows).
+// solves in one step. Above the partitions of the anchor scenes at rest
+// (pile1000's columns: about 120 rows).
 constexpr int kDefaultIterativeRows = 300;
 
 void setDefaultParams(MdtWorldParams &p, MeReal l, MeReal m) {
