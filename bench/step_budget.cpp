@@ -71,6 +71,7 @@ Outcome Run(const std::string &sceneName, const Setting &setting, int steps) {
       sceneName == "topple" ? karma::scenes::MakeTopple() : karma::scenes::MakePile1000();
   MdtWorldID world = scene->world();
   MdtWorldSetKeaMethod(world, setting.method);
+  MdtWorldSetKeaIterativeRows(world, 0);  // the fixed settings apply to every partition
   MdtWorldSetKeaMaxIterations(world, setting.iterations);
   MdtWorldSetStepBudget(world, (MeReal)setting.budget);
   std::vector<double> whole, dynamics;

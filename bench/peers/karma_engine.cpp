@@ -9,12 +9,12 @@ namespace karma::peers {
 
 namespace {
 
-int iterativeRows = 0;
+int iterativeRows = -1;  // < 0: the engine's default
 
 class KarmaEngine final : public PeerEngine {
  public:
   explicit KarmaEngine(const SceneSpec &spec) : scene_(spec) {
-    MdtWorldSetKeaIterativeRows(scene_.world(), iterativeRows);
+    if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene_.world(), iterativeRows);
   }
   void step() override { scene_.advance(); }
   void states(std::vector<BodyState> &out) const override { scene_.states(out); }

@@ -52,7 +52,7 @@ struct Options {
   int pileSteps = kDefaultPileSteps;
   int pile10kSteps = kDefaultPile10kSteps;
   int odeContacts = 8;
-  int iterativeRows = 0;  // Karma's MdtWorldSetKeaIterativeRows
+  int iterativeRows = -1;  // Karma's MdtWorldSetKeaIterativeRows; < 0: the engine's default
 };
 
 std::vector<EngineKind> AllEngines() {
@@ -99,13 +99,13 @@ bool Parse(int argc, char **argv, Options &o) {
       o.pile10kSteps = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--ode-contacts") && hasValue)
       o.odeContacts = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--iterative-rows") && hasValue)
+    else if (!std::strcmp(argv[i], "--iterative-rows") && hasValue && std::atoi(argv[i + 1]) >= 0)
       o.iterativeRows = std::atoi(argv[++i]);
     else
       return false;
   }
   return o.reps > 0 && o.steps >= 0 && o.pileSteps > 0 && o.pile10kSteps > 0 && o.odeContacts >= 1 &&
-         o.odeContacts <= 8 && o.iterativeRows >= 0;
+         o.odeContacts <= 8;
 }
 
 // One run of a scene in an engine: the step time and the figures.
@@ -252,7 +252,7 @@ int main(int argc, char **argv) {
                  "usage: %s [--scenes car,topple,stack21,ragdoll,pile1000] "
                  "[--engines karma,ode-step,ode-quickstep,bullet] [--reps N (5)] "
                  "[--steps N (each scene's own)] [--pile-steps N (%d)] [--pile10k-steps N (%d)] "
-                 "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact)]\n"
+                 "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact; default: the engine's, 300)]\n"
                  "  scenes: the five anchor scenes (the default) and pile10k (only when named)\n",
                  argv[0], kDefaultPileSteps, kDefaultPile10kSteps);
     return 2;

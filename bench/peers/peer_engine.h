@@ -36,7 +36,8 @@ struct EngineKind {
 
 std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec);
 // MdtWorldSetKeaIterativeRows for the Karma engines built after the call
-// (0, the default: every partition solved exactly).
+// (0: every partition solved exactly); negative, the default: the engine's
+// own default is left in place.
 void SetKarmaIterativeRows(int rows);
 #if KARMA_PEERS_HAVE_ODE
 std::unique_ptr<PeerEngine> MakeOdeStep(const SceneSpec &spec);

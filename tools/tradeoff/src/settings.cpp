@@ -195,6 +195,7 @@ std::string Setting::label() const {
 
 void Setting::apply(MdtWorldID world) const {
   MdtWorldSetKeaMethod(world, method);
+  MdtWorldSetKeaIterativeRows(world, 0);  // the named solver for every partition, whatever its size
   MdtWorldSetKeaMaxIterations(world, iterations);
   MdtWorldSetStepBudget(world, (MeReal)budget);
   if (!std::isnan(epsilon)) MdtWorldSetEpsilon(world, (MeReal)epsilon);
