@@ -67,8 +67,7 @@ std::unique_ptr<AnchorScene> MakeScene(const std::string &name) {
 }
 
 Outcome Run(const std::string &sceneName, const Setting &setting, int steps) {
-  std::unique_ptr<AnchorScene> scene =
-      sceneName == "topple" ? karma::scenes::MakeTopple() : karma::scenes::MakePile1000();
+  std::unique_ptr<AnchorScene> scene = MakeScene(sceneName);
   MdtWorldID world = scene->world();
   MdtWorldSetKeaMethod(world, setting.method);
   MdtWorldSetKeaIterativeRows(world, 0);  // the fixed settings apply to every partition

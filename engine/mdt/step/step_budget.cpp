@@ -60,11 +60,11 @@ const StepBudget::PartitionRecord *StepBudget::remembered(std::uintptr_t partiti
 
 MeReal StepBudget::expectedIterations(const BudgetChoice &c, const PartitionRecord *last) const {
   const MeReal cap = c.maxIterations > 0 ? (MeReal)c.maxIterations : MEINFINITY;
-  const bool sameKind = last && (last->level == 2) == c.iterative;
-  if (sameKind && last->iterations < last->cap) return std::clamp((MeReal)last->iterations, (MeReal)1, cap);
-  // It ran to its cap: it may use all of a larger one.
-  if (sameKind && c.iterative) return cap;
-  if (sameKind) return std::clamp(std::max(exactSolves_.ratio(), (MeReal)last->iterations), (MeReal)1, cap);
+  if (last && (last->level == 2) == c.iterative) {
+    if (last->iterations < last->cap) return std::clamp((MeReal)last->iterations, (MeReal)1, cap);
+    // It ran to its cap: it may use all of a larger one.
+    return c.iterative ? cap : std::clamp(std::max(exactSolves_.ratio(), (MeReal)last->iterations), (MeReal)1, cap);
+  }
   if (!c.iterative) return std::clamp(exactSolves_.ratio(), (MeReal)1, cap);
   // A fraction f of iterative solves ran to their cap; the others stopped
   // after s sweeps on the mean.
@@ -72,10 +72,14 @@ MeReal StepBudget::expectedIterations(const BudgetChoice &c, const PartitionReco
   return f * cap + (1 - f) * std::clamp(sweepsStopped_.ratio(), (MeReal)1, cap);
 }
 
-MeReal StepBudget::predictedCost(const BudgetChoice &c, std::uintptr_t partition, int rows) const {
-  const MeReal iterations = expectedIterations(c, remembered(partition));
+MeReal StepBudget::cost(const BudgetChoice &c, const PartitionRecord *last, int rows) const {
+  const MeReal iterations = expectedIterations(c, last);
   if (c.iterative) return iterative_.ratio() * iterativeWork(rows, iterations);
   return exact_.ratio() * exactWork(rows) * iterations;
+}
+
+MeReal StepBudget::predictedCost(const BudgetChoice &c, std::uintptr_t partition, int rows) const {
+  return cost(c, remembered(partition), rows);
 }
 
 BudgetChoice StepBudget::choose(std::uintptr_t partition, int rows) const {
@@ -89,7 +93,7 @@ BudgetChoice StepBudget::choose(std::uintptr_t partition, int rows) const {
   // change of solver starts the new one from the other's impulses).
   const auto fits = [&](const BudgetChoice &c) {
     const MeReal room = last && c.level < last->level ? kUpgradeShare * share : share;
-    return predictedCost(c, partition, rows) <= room;
+    return cost(c, last, rows) <= room;
   };
   const BudgetChoice exact{0, false, 0};
   if (fits(exact)) return exact;

@@ -134,6 +134,8 @@ class StepBudget {
   const PartitionRecord *remembered(std::uintptr_t partition) const;
   // The linear solves or sweeps a solve with `choice` is expected to make.
   MeReal expectedIterations(const BudgetChoice &choice, const PartitionRecord *last) const;
+  // predictedCost with the partition's record already looked up.
+  MeReal cost(const BudgetChoice &choice, const PartitionRecord *last, int rows) const;
 
   MeReal budget_ = 0;
   Average exact_;                         // microseconds per n^(3/2) per solve
