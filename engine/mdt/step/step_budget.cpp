@@ -74,8 +74,8 @@ MeReal StepBudget::expectedIterations(const BudgetChoice &c, const PartitionReco
 
 MeReal StepBudget::cost(const BudgetChoice &c, const PartitionRecord *last, int rows) const {
   const MeReal iterations = expectedIterations(c, last);
-  if (c.iterative) return iterative_.ratio() * iterativeWork(rows, iterations);
-  return exact_.ratio() * exactWork(rows) * iterations;
+  if (c.iterative) return iterative_.price() * iterativeWork(rows, iterations);
+  return exact_.price() * exactWork(rows) * iterations;
 }
 
 MeReal StepBudget::predictedCost(const BudgetChoice &c, std::uintptr_t partition, int rows) const {
@@ -87,13 +87,12 @@ BudgetChoice StepBudget::choose(std::uintptr_t partition, int rows) const {
   const MeReal left = budget_ - overhead_.ratio() - predicted_;
   const MeReal share = left * (MeReal)rows / (MeReal)rowsLeft;
   const PartitionRecord *last = remembered(partition);
-  // Hysteresis: a partition moves to a more accurate level than last
-  // step's only when that level fits kUpgradeShare of its share, so that
-  // noise in the measured costs does not toggle it between levels (each
-  // change of solver starts the new one from the other's impulses).
+  // Hysteresis (step_budget.h): no move to a more accurate level before
+  // kDwellSteps steps at the present one.
+  const bool mayUpgrade = !last || last->steps >= kDwellSteps;
   const auto fits = [&](const BudgetChoice &c) {
-    const MeReal room = last && c.level < last->level ? kUpgradeShare * share : share;
-    return cost(c, last, rows) <= room;
+    if (last && c.level < last->level && !mayUpgrade) return false;
+    return cost(c, last, rows) <= share;
   };
   const BudgetChoice exact{0, false, 0};
   if (fits(exact)) return exact;
@@ -106,7 +105,8 @@ BudgetChoice StepBudget::choose(std::uintptr_t partition, int rows) const {
 
 void StepBudget::recordSolve(std::uintptr_t partition, const BudgetChoice &c, int rows, int solves,
                              MeReal microseconds) {
-  const MeReal predicted = predictedCost(c, partition, rows);
+  const PartitionRecord *last = remembered(partition);
+  const MeReal predicted = cost(c, last, rows);
   predicted_ += predicted;
   // The model learns from at most kOutlier times its prediction: a solve
   // the machine interrupted must not reprice the next steps.
@@ -123,8 +123,9 @@ void StepBudget::recordSolve(std::uintptr_t partition, const BudgetChoice &c, in
     if (c.level == 0) exactSolves_.add((MeReal)done, 1);
   }
   if (partition != 0)
-    current_.push_back(
-        {partition, c.level, done, c.maxIterations > 0 ? c.maxIterations : std::numeric_limits<int>::max()});
+    current_.push_back({partition, c.level, done,
+                        c.maxIterations > 0 ? c.maxIterations : std::numeric_limits<int>::max(),
+                        last && last->level == c.level ? last->steps + 1 : 1});
   rowsSoFar_ += rows;
   spent_ += microseconds;
   worstLevel_ = std::max(worstLevel_, c.level);

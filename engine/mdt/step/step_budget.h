@@ -16,8 +16,11 @@
 // partition on (last step's total minus this step's so far). At level 2, k
 // is the most sweeps that fit the share, at least kMinSweeps however little
 // is left (fewer sweeps let a resting stack fall: topple's stacks stand at
-// 10, not at 5). Hysteresis: a level more accurate than the one the
-// partition had last step must fit kUpgradeShare of the share. The world's
+// 10, not at 5). Hysteresis: a partition moves to a more accurate level
+// only after kDwellSteps steps at its present one, so that noise in the
+// measured costs cannot toggle it between solvers (each change starts the
+// new solver from the other's impulses); it moves to a less accurate one
+// at once, so the budget holds. The world's
 // method (MdtWorldSetKeaMethod) and size rule (MdtWorldSetKeaIterativeRows)
 // are set aside while a budget is on. When even level 2 at kMinSweeps does
 // not fit, the step runs over its budget: the budget cannot buy less than
@@ -39,7 +42,12 @@
 // Each coefficient is the ratio of exponentially weighted sums of measured
 // time and work (weights decay by kDecay per step), started from a prior of
 // kPriorWork units at kPriorMicroseconds each, so a level never yet run is
-// still priced. The overhead is the same kind of average of the step's
+// still priced. A coefficient not measured for u steps prices its level at
+// its ratio divided by min(kStaleDiscount, 1 + u / kStaleSteps): a level
+// priced out by a few expensive solves (a landing, a cold first step) is
+// tried again once its discounted price fits, and learns its cost anew,
+// while one that costs more than kStaleDiscount times its share (an exact
+// solve of a heap) is never tried. The overhead is the same kind of average of the step's
 // measured time minus its solve time. A measurement enters a model at most
 // kOutlier times what the model predicted, so one interrupted step does
 // not reprice the following ones.
@@ -48,6 +56,7 @@
 // bit-identical from run to run; without a budget nothing here runs.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <vector>
@@ -72,9 +81,11 @@ class StepBudget {
   static constexpr int kMinSweeps = 10;
   static constexpr MeReal kDecay = (MeReal)0.9;
   static constexpr MeReal kOutlier = 3;
-  static constexpr MeReal kUpgradeShare = (MeReal)0.8;
+  static constexpr int kDwellSteps = 15;
   static constexpr MeReal kPriorWork = 100;
   static constexpr MeReal kPriorMicroseconds = (MeReal)0.02;  // per unit of work
+  static constexpr MeReal kStaleSteps = 30;
+  static constexpr MeReal kStaleDiscount = 3;
 
   // "exact", "exact:8", "iterative"; "off" for any other level.
   static const char *levelName(int level);
@@ -108,18 +119,27 @@ class StepBudget {
   MeReal overhead() const { return overhead_.ratio(); }
 
  private:
-  // An exponentially weighted ratio sum(time) / sum(work).
+  // An exponentially weighted ratio sum(time) / sum(work), and how many
+  // steps have passed since anything was added to it.
   struct Average {
     MeReal time = kPriorWork * kPriorMicroseconds;
     MeReal work = kPriorWork;
+    int unusedSteps = 0;
+    bool usedThisStep = false;
     MeReal ratio() const { return time / work; }
+    // The ratio as a price: discounted by 1 + unusedSteps / kStaleSteps,
+    // down to 1 / kStaleDiscount of the ratio.
+    MeReal price() const { return ratio() / std::min(kStaleDiscount, 1 + (MeReal)unusedSteps / kStaleSteps); }
     void add(MeReal t, MeReal w) {
       time += t;
       work += w;
+      usedThisStep = true;
     }
     void decay() {
       time *= kDecay;
       work *= kDecay;
+      unusedSteps = usedThisStep ? 0 : unusedSteps + 1;
+      usedThisStep = false;
     }
   };
 
@@ -129,6 +149,7 @@ class StepBudget {
     int level = 0;
     int iterations = 0;  // linear solves or sweeps made
     int cap = 0;         // the cap it was given (INT_MAX: none)
+    int steps = 1;       // consecutive steps at this level, this one included
   };
   // Last step's record of `partition`, or null.
   const PartitionRecord *remembered(std::uintptr_t partition) const;

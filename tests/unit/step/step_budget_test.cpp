@@ -75,6 +75,9 @@ TEST(StepBudget, LearnsTheCostCoefficientsOfASceneThatFollowsItsModel) {
 TEST(StepBudget, ChoosesTheMostAccurateLevelThatFitsItsShare) {
   StepBudget budget;
   TrueCosts truth;
+  // Exact costs enough that its price, discounted for the steps it is not
+  // run below, stays above the iterative budgets tried.
+  truth.exactSolves = 20;
   budget.setBudget(1e9);
   RunSimulated(budget, truth, {400}, 60);
   budget.setBudget(80);
@@ -121,8 +124,9 @@ TEST(StepBudget, PricesAPartitionByTheSweepsItMadeLastStep) {
   StepBudget budget;
   TrueCosts truth;
   const int rows = 100;
+  truth.exactSolves = 20;  // exact out of reach of the shares below, discounted or not
   budget.setBudget(1e9);
-  RunSimulated(budget, truth, {rows, rows}, 60);  // exact: 12 passes' time
+  RunSimulated(budget, truth, {rows, rows}, 60);
   RunIterativePair(budget, truth, rows, 2, 100);
   EXPECT_NEAR(budget.iterativeCoefficient(), truth.iterPerWork, 1e-4 * truth.iterPerWork);
   const BudgetChoice fifty{2, true, 50};
@@ -143,25 +147,53 @@ TEST(StepBudget, PricesAPartitionByTheSweepsItMadeLastStep) {
   EXPECT_EQ(budget.choose(2, rows).maxIterations, StepBudget::kMinSweeps);
 }
 
-TEST(StepBudget, APartitionMovesToAMoreAccurateLevelOnlyWhenItFitsWithRoom) {
+TEST(StepBudget, APartitionMovesToAMoreAccurateLevelOnlyAfterDwellingAtItsOwn) {
   StepBudget budget;
   TrueCosts truth;
   const int rows = 100;
   budget.setBudget(1e9);
   RunSimulated(budget, truth, {rows, rows}, 60);  // learns the exact cost
-  RunIterativePair(budget, truth, rows, 2, 60);   // both partitions now iterative
-  const BudgetChoice exact{0, false, 0};
-  const double exactCost = budget.predictedCost(exact, 1, rows);
-  ASSERT_NEAR(exactCost, budget.predictedCost(exact, 0, rows), 1e-6 * exactCost);
-  // Partition 1 of 2 (equal rows) gets half of what the budget leaves.
-  const auto budgetForShare = [&](double share) { return (MeReal)(budget.overhead() + 2 * share); };
-  budget.setBudget(budgetForShare(exactCost / 0.9));  // exact fits in 90% of the share
+  RunIterativePair(budget, truth, rows, 2, 1);    // both partitions drop to iterative
+  budget.setBudget(1e9);                          // exact fits again
   budget.beginStep();
-  EXPECT_EQ(budget.choose(1, rows).level, 2);   // last step iterative: needs kUpgradeShare
+  EXPECT_EQ(budget.choose(1, rows).level, 2);   // one step at iterative: it stays
   EXPECT_EQ(budget.choose(0, rows).level, 0);   // no memory: exact fits
   EXPECT_EQ(budget.choose(77, rows).level, 0);  // unknown identity: the same
-  budget.setBudget(budgetForShare(exactCost / (0.98 * StepBudget::kUpgradeShare)));
-  EXPECT_EQ(budget.choose(1, rows).level, 0);
+  RunIterativePair(budget, truth, rows, 2, StepBudget::kDwellSteps - 2);
+  budget.setBudget(1e9);
+  budget.beginStep();
+  EXPECT_EQ(budget.choose(1, rows).level, 2);  // kDwellSteps - 1 steps: still
+  RunIterativePair(budget, truth, rows, 2, 1);
+  budget.setBudget(1e9);
+  budget.beginStep();
+  EXPECT_EQ(budget.choose(1, rows).level, 0);  // kDwellSteps: it may move
+  // Moving down needs no dwelling: a partition exact for one step takes the
+  // iterative level at once when exact no longer fits.
+  RunSimulated(budget, truth, {rows, rows}, 1);
+  budget.setBudget((MeReal)1e-3);
+  budget.beginStep();
+  EXPECT_EQ(budget.choose(1, rows).level, 2);
+}
+
+TEST(StepBudget, ALevelNotRunForAWhileIsPricedLowerUntilItRunsAgain) {
+  StepBudget budget;
+  TrueCosts truth;
+  const int rows = 100;
+  const BudgetChoice exact{0, false, 0};
+  budget.setBudget(1e9);
+  RunSimulated(budget, truth, {rows, rows}, 60);
+  const double fresh = budget.predictedCost(exact, 0, rows);
+  // The price falls as 1 / (1 + unused / kStaleSteps) ...
+  RunIterativePair(budget, truth, rows, 2, (int)StepBudget::kStaleSteps);
+  EXPECT_NEAR(budget.predictedCost(exact, 0, rows), fresh / 2, 1e-4 * fresh);
+  // ... down to 1 / kStaleDiscount, and no lower.
+  RunIterativePair(budget, truth, rows, 2, (int)(4 * StepBudget::kStaleSteps));
+  EXPECT_NEAR(budget.predictedCost(exact, 0, rows), fresh / StepBudget::kStaleDiscount, 1e-4 * fresh);
+  EXPECT_NEAR(budget.exactCoefficient(), truth.exactPerWork, 1e-4 * truth.exactPerWork);  // learned ratio kept
+  // Run once more, the level is priced at what it learned again.
+  budget.setBudget(1e9);
+  RunSimulated(budget, truth, {rows, rows}, 1);
+  EXPECT_NEAR(budget.predictedCost(exact, 0, rows), fresh, 1e-4 * fresh);
 }
 
 TEST(StepBudget, HoldsItsBudgetWithinTwentyPercentOnASceneWhoseCostItCanPredict) {
