@@ -4,20 +4,22 @@
 #include "MeMessage.h"
 #include "mdt_internal.h"
 
+using karma::mdt::liveBody;
+
 extern "C" {
 
 MeReal *MEAPI MdtBodyGetLinearVelocityPtr(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetLinearVelocityPtr", "body is NULL");
+  if (!liveBody(body, "MdtBodyGetLinearVelocityPtr")) return nullptr;
   return body->velocity;
 }
 
 MeReal *MEAPI MdtBodyGetAngularVelocityPtr(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetAngularVelocityPtr", "body is NULL");
+  if (!liveBody(body, "MdtBodyGetAngularVelocityPtr")) return nullptr;
   return body->angularVelocity;
 }
 
 void MEAPI MdtBodySetCollisionModel(const MdtBodyID body, void *model) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodySetCollisionModel", "body is NULL");
+  if (!liveBody(body, "MdtBodySetCollisionModel")) return;
   body->collisionModel = model;
 }
 

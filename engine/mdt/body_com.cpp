@@ -43,7 +43,8 @@ extern "C" {
 
 void MEAPI MdtBodySetCenterOfMassRelativeTransform(const MdtBodyID body, MECONSTMATRIX MeMatrix4 tm) {
   static const char *fn = "MdtBodySetCenterOfMassRelativeTransform";
-  ME_REQUIRE_ARG(body != nullptr && tm != nullptr, fn, "NULL argument");
+  if (!liveBody(body, fn)) return;
+  ME_REQUIRE_ARG(tm != nullptr, fn, "NULL argument");
   bool finite = true;
   for (int i = 0; i < 4; ++i) finite = finite && MeVector3AllFinite(tm[i]);
   ME_REQUIRE_ARG(finite, fn, "transform is not finite; ignored");
@@ -54,24 +55,28 @@ void MEAPI MdtBodySetCenterOfMassRelativeTransform(const MdtBodyID body, MECONST
 }
 
 void MEAPI MdtBodyGetCenterOfMassRelativeTransform(const MdtBodyID body, MeMatrix4 tm) {
-  ME_REQUIRE_ARG(body != nullptr && tm != nullptr, "MdtBodyGetCenterOfMassRelativeTransform", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetCenterOfMassRelativeTransform")) return;
+  ME_REQUIRE_ARG(tm != nullptr, "MdtBodyGetCenterOfMassRelativeTransform", "NULL argument");
   MeMatrix4Copy(tm, body->comTM);
 }
 
 void MEAPI MdtBodySetCenterOfMassRelativePosition(const MdtBodyID body, const MeVector3 pos) {
   static const char *fn = "MdtBodySetCenterOfMassRelativePosition";
-  ME_REQUIRE_ARG(body != nullptr && pos != nullptr, fn, "NULL argument");
+  if (!liveBody(body, fn)) return;
+  ME_REQUIRE_ARG(pos != nullptr, fn, "NULL argument");
   ME_REQUIRE_ARG(MeVector3AllFinite(pos), fn, "position is not finite; ignored");
   MeMatrix4TMSetPositionVector(body->comTM, pos);
 }
 
 void MEAPI MdtBodyGetCenterOfMassRelativePosition(const MdtBodyID body, MeVector3 pos) {
-  ME_REQUIRE_ARG(body != nullptr && pos != nullptr, "MdtBodyGetCenterOfMassRelativePosition", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetCenterOfMassRelativePosition")) return;
+  ME_REQUIRE_ARG(pos != nullptr, "MdtBodyGetCenterOfMassRelativePosition", "NULL argument");
   MeMatrix4TMGetPosition(pos, body->comTM);
 }
 
 void MEAPI MdtBodyGetCenterOfMassPosition(const MdtBodyID body, MeVector3 pos) {
-  ME_REQUIRE_ARG(body != nullptr && pos != nullptr, "MdtBodyGetCenterOfMassPosition", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetCenterOfMassPosition")) return;
+  ME_REQUIRE_ARG(pos != nullptr, "MdtBodyGetCenterOfMassPosition", "NULL argument");
   bodyCom(body, pos);
 }
 

@@ -42,7 +42,7 @@ extern "C" {
 
 void MEAPI MdtBodyAddForce(const MdtBodyID body, const MeReal fx, const MeReal fy, const MeReal fz) {
   static const char *fn = "MdtBodyAddForce";
-  ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  if (!liveBody(body, fn)) return;
   noteDriven(body);
   const MeVector3 f = {fx, fy, fz};
   ME_REQUIRE_ARG(accumulate(body->force, f), fn, "force (%g, %g, %g) is not finite or overflows; ignored", (double)fx,
@@ -51,7 +51,7 @@ void MEAPI MdtBodyAddForce(const MdtBodyID body, const MeReal fx, const MeReal f
 
 void MEAPI MdtBodyAddTorque(const MdtBodyID body, const MeReal tx, const MeReal ty, const MeReal tz) {
   static const char *fn = "MdtBodyAddTorque";
-  ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  if (!liveBody(body, fn)) return;
   noteDriven(body);
   const MeVector3 t = {tx, ty, tz};
   ME_REQUIRE_ARG(accumulate(body->torque, t), fn, "torque (%g, %g, %g) is not finite or overflows; ignored", (double)tx,
@@ -61,7 +61,7 @@ void MEAPI MdtBodyAddTorque(const MdtBodyID body, const MeReal tx, const MeReal 
 void MEAPI MdtBodyAddForceAtPosition(const MdtBodyID body, const MeReal fx, const MeReal fy, const MeReal fz,
                                      const MeReal px, const MeReal py, const MeReal pz) {
   static const char *fn = "MdtBodyAddForceAtPosition";
-  ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  if (!liveBody(body, fn)) return;
   noteDriven(body);
   const MeVector3 f = {fx, fy, fz};
   const MeVector3 p = {px, py, pz};
@@ -72,7 +72,7 @@ void MEAPI MdtBodyAddForceAtPosition(const MdtBodyID body, const MeReal fx, cons
 
 void MEAPI MdtBodyAddImpulse(const MdtBodyID body, const MeReal jx, const MeReal jy, const MeReal jz) {
   static const char *fn = "MdtBodyAddImpulse";
-  ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  if (!liveBody(body, fn)) return;
   noteDriven(body);
   const MeVector3 j = {jx, jy, jz};
   ME_REQUIRE_ARG(accumulate(body->impulse, j), fn, "impulse (%g, %g, %g) is not finite or overflows; ignored",
@@ -82,7 +82,7 @@ void MEAPI MdtBodyAddImpulse(const MdtBodyID body, const MeReal jx, const MeReal
 void MEAPI MdtBodyAddImpulseAtPosition(const MdtBodyID body, const MeReal jx, const MeReal jy, const MeReal jz,
                                        const MeReal px, const MeReal py, const MeReal pz) {
   static const char *fn = "MdtBodyAddImpulseAtPosition";
-  ME_REQUIRE_ARG(body != nullptr, fn, "body is NULL");
+  if (!liveBody(body, fn)) return;
   noteDriven(body);
   const MeVector3 j = {jx, jy, jz};
   const MeVector3 p = {px, py, pz};
@@ -92,33 +92,37 @@ void MEAPI MdtBodyAddImpulseAtPosition(const MdtBodyID body, const MeReal jx, co
 }
 
 void MEAPI MdtBodyGetForce(const MdtBodyID body, MeVector3 f) {
-  ME_REQUIRE_ARG(body != nullptr && f != nullptr, "MdtBodyGetForce", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetForce")) return;
+  ME_REQUIRE_ARG(f != nullptr, "MdtBodyGetForce", "NULL argument");
   MeVector3Copy(f, body->force);
 }
 
 void MEAPI MdtBodyGetTorque(const MdtBodyID body, MeVector3 t) {
-  ME_REQUIRE_ARG(body != nullptr && t != nullptr, "MdtBodyGetTorque", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetTorque")) return;
+  ME_REQUIRE_ARG(t != nullptr, "MdtBodyGetTorque", "NULL argument");
   MeVector3Copy(t, body->torque);
 }
 
 void MEAPI MdtBodyGetImpulse(const MdtBodyID body, MeVector3 j) {
-  ME_REQUIRE_ARG(body != nullptr && j != nullptr, "MdtBodyGetImpulse", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetImpulse")) return;
+  ME_REQUIRE_ARG(j != nullptr, "MdtBodyGetImpulse", "NULL argument");
   MeVector3Copy(j, body->impulse);
 }
 
 void MEAPI MdtBodyGetAngularImpulse(const MdtBodyID body, MeVector3 j) {
-  ME_REQUIRE_ARG(body != nullptr && j != nullptr, "MdtBodyGetAngularImpulse", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetAngularImpulse")) return;
+  ME_REQUIRE_ARG(j != nullptr, "MdtBodyGetAngularImpulse", "NULL argument");
   MeVector3Copy(j, body->angularImpulse);
 }
 
 void MEAPI MdtBodyResetForces(const MdtBodyID body) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodyResetForces", "body is NULL");
+  if (!liveBody(body, "MdtBodyResetForces")) return;
   MeVector3Set(body->force, 0, 0, 0);
   MeVector3Set(body->torque, 0, 0, 0);
 }
 
 void MEAPI MdtBodyResetImpulses(const MdtBodyID body) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodyResetImpulses", "body is NULL");
+  if (!liveBody(body, "MdtBodyResetImpulses")) return;
   MeVector3Set(body->impulse, 0, 0, 0);
   MeVector3Set(body->angularImpulse, 0, 0, 0);
 }

@@ -150,7 +150,7 @@ MeBool MEAPI MdtBodyIsEnabled(const MdtBodyID body) {
 }
 
 MdtWorldID MEAPI MdtBodyGetWorld(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetWorld", "body is NULL");
+  if (!liveBody(body, "MdtBodyGetWorld")) return nullptr;
   return body->world;
 }
 
@@ -160,7 +160,7 @@ void MEAPI MdtBodySetUserData(const MdtBodyID body, void *data) {
 }
 
 void *MEAPI MdtBodyGetUserData(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetUserData", "body is NULL");
+  if (!liveBody(body, "MdtBodyGetUserData")) return nullptr;
   return body->userData;
 }
 
@@ -170,7 +170,7 @@ void MEAPI MdtBodySetSortKey(const MdtBodyID body, const MeI32 key) {
 }
 
 MeI32 MEAPI MdtBodyGetSortKey(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, 0, "MdtBodyGetSortKey", "body is NULL");
+  if (!liveBody(body, "MdtBodyGetSortKey")) return 0;
   return body->sortKey;
 }
 

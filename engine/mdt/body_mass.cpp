@@ -12,7 +12,7 @@ extern "C" {
 
 void MEAPI MdtBodySetMass(const MdtBodyID body, const MeReal mass) {
   static const char *fn = "MdtBodySetMass";
-  ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
+  if (!liveBody(body, fn)) return;
   ME_REQUIRE_ARG(realFinite(mass) && mass > 0 && realFinite((MeReal)1 / mass), fn,
                  "mass must be positive and finite, got %g; ignored", (double)mass);
   body->mass = mass;
@@ -20,7 +20,7 @@ void MEAPI MdtBodySetMass(const MdtBodyID body, const MeReal mass) {
 }
 
 MeReal MEAPI MdtBodyGetMass(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, (MeReal)0, "MdtBodyGetMass", "%s", kNull);
+  if (!liveBody(body, "MdtBodyGetMass")) return (MeReal)0;
   return body->mass;
 }
 
@@ -29,7 +29,8 @@ MeReal MEAPI MdtBodyGetMass(const MdtBodyID body) {
 // The stored tensor is the symmetric part of the argument.
 void MEAPI MdtBodySetInertiaTensor(const MdtBodyID body, MECONSTMATRIX MeMatrix3 I) {
   static const char *fn = "MdtBodySetInertiaTensor";
-  ME_REQUIRE_ARG(body != nullptr && I != nullptr, fn, "NULL argument");
+  if (!liveBody(body, fn)) return;
+  ME_REQUIRE_ARG(I != nullptr, fn, "NULL argument");
   bool isFinite = true;
   MeReal largest = 0;
   for (int i = 0; i < 3; ++i) {
@@ -56,31 +57,32 @@ void MEAPI MdtBodySetInertiaTensor(const MdtBodyID body, MECONSTMATRIX MeMatrix3
 }
 
 void MEAPI MdtBodyGetInertiaTensor(const MdtBodyID body, MeMatrix3 I) {
-  ME_REQUIRE_ARG(body != nullptr && I != nullptr, "MdtBodyGetInertiaTensor", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetInertiaTensor")) return;
+  ME_REQUIRE_ARG(I != nullptr, "MdtBodyGetInertiaTensor", "NULL argument");
   MeMatrix3Copy(I, body->inertiaCom);
 }
 
 void MEAPI MdtBodySetLinearVelocityDamping(const MdtBodyID body, const MeReal d) {
   static const char *fn = "MdtBodySetLinearVelocityDamping";
-  ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
+  if (!liveBody(body, fn)) return;
   ME_REQUIRE_ARG(realFinite(d) && d >= 0, fn, "damping must be finite and >= 0, got %g; ignored", (double)d);
   body->linearDamping = d;
 }
 
 MeReal MEAPI MdtBodyGetLinearVelocityDamping(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, (MeReal)0, "MdtBodyGetLinearVelocityDamping", "%s", kNull);
+  if (!liveBody(body, "MdtBodyGetLinearVelocityDamping")) return (MeReal)0;
   return body->linearDamping;
 }
 
 void MEAPI MdtBodySetAngularVelocityDamping(const MdtBodyID body, const MeReal d) {
   static const char *fn = "MdtBodySetAngularVelocityDamping";
-  ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
+  if (!liveBody(body, fn)) return;
   ME_REQUIRE_ARG(realFinite(d) && d >= 0, fn, "damping must be finite and >= 0, got %g; ignored", (double)d);
   body->angularDamping = d;
 }
 
 MeReal MEAPI MdtBodyGetAngularVelocityDamping(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, (MeReal)0, "MdtBodyGetAngularVelocityDamping", "%s", kNull);
+  if (!liveBody(body, "MdtBodyGetAngularVelocityDamping")) return (MeReal)0;
   return body->angularDamping;
 }
 

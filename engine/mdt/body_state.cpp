@@ -12,7 +12,7 @@ extern "C" {
 
 void MEAPI MdtBodySetPosition(const MdtBodyID body, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtBodySetPosition";
-  ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
+  if (!liveBody(body, fn)) return;
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position (%g, %g, %g) is not finite; ignored", (double)x, (double)y,
                  (double)z);
   MeVector3Set(body->position, x, y, z);
@@ -20,14 +20,15 @@ void MEAPI MdtBodySetPosition(const MdtBodyID body, const MeReal x, const MeReal
 }
 
 void MEAPI MdtBodyGetPosition(const MdtBodyID body, MeVector3 position) {
-  ME_REQUIRE_ARG(body != nullptr && position != nullptr, "MdtBodyGetPosition", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetPosition")) return;
+  ME_REQUIRE_ARG(position != nullptr, "MdtBodyGetPosition", "NULL argument");
   MeVector3Copy(position, body->position);
 }
 
 void MEAPI MdtBodySetQuaternion(const MdtBodyID body, const MeReal qw, const MeReal qx, const MeReal qy,
                                 const MeReal qz) {
   static const char *fn = "MdtBodySetQuaternion";
-  ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
+  if (!liveBody(body, fn)) return;
   ME_REQUIRE_ARG(realFinite(qw) && realFinite3(qx, qy, qz), fn, "quaternion (%g, %g, %g, %g) is not finite; ignored",
                  (double)qw, (double)qx, (double)qy, (double)qz);
   MeVector4 q = {qw, qx, qy, qz};
@@ -39,13 +40,15 @@ void MEAPI MdtBodySetQuaternion(const MdtBodyID body, const MeReal qw, const MeR
 }
 
 void MEAPI MdtBodyGetQuaternion(const MdtBodyID body, MeVector4 q) {
-  ME_REQUIRE_ARG(body != nullptr && q != nullptr, "MdtBodyGetQuaternion", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetQuaternion")) return;
+  ME_REQUIRE_ARG(q != nullptr, "MdtBodyGetQuaternion", "NULL argument");
   MeVector4Copy(q, body->q);
 }
 
 void MEAPI MdtBodySetOrientation(const MdtBodyID body, MECONSTMATRIX MeMatrix3 R) {
   static const char *fn = "MdtBodySetOrientation";
-  ME_REQUIRE_ARG(body != nullptr && R != nullptr, fn, "NULL argument");
+  if (!liveBody(body, fn)) return;
+  ME_REQUIRE_ARG(R != nullptr, fn, "NULL argument");
   bool ok = true;
   for (int i = 0; i < 3; ++i) ok = ok && MeVector3AllFinite(R[i]);
   ME_REQUIRE_ARG(ok, fn, "matrix is not finite; ignored");
@@ -57,59 +60,65 @@ void MEAPI MdtBodySetOrientation(const MdtBodyID body, MECONSTMATRIX MeMatrix3 R
 }
 
 void MEAPI MdtBodyGetOrientation(const MdtBodyID body, MeMatrix3 R) {
-  ME_REQUIRE_ARG(body != nullptr && R != nullptr, "MdtBodyGetOrientation", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetOrientation")) return;
+  ME_REQUIRE_ARG(R != nullptr, "MdtBodyGetOrientation", "NULL argument");
   MeMatrix4TMGetRotation(R, body->tm);
 }
 
 void MEAPI MdtBodyGetTransform(const MdtBodyID body, MeMatrix4 tm) {
-  ME_REQUIRE_ARG(body != nullptr && tm != nullptr, "MdtBodyGetTransform", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetTransform")) return;
+  ME_REQUIRE_ARG(tm != nullptr, "MdtBodyGetTransform", "NULL argument");
   MeMatrix4Copy(tm, body->tm);
 }
 
 MeMatrix4Ptr MEAPI MdtBodyGetTransformPtr(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetTransformPtr", "%s", kNull);
+  if (!liveBody(body, "MdtBodyGetTransformPtr")) return nullptr;
   return body->tm;
 }
 
 void MEAPI MdtBodySetLinearVelocity(const MdtBodyID body, const MeReal dx, const MeReal dy, const MeReal dz) {
   static const char *fn = "MdtBodySetLinearVelocity";
-  ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
+  if (!liveBody(body, fn)) return;
   ME_REQUIRE_ARG(realFinite3(dx, dy, dz), fn, "velocity (%g, %g, %g) is not finite; ignored", (double)dx, (double)dy,
                  (double)dz);
   MeVector3Set(body->velocity, dx, dy, dz);
 }
 
 void MEAPI MdtBodyGetLinearVelocity(const MdtBodyID body, MeVector3 v) {
-  ME_REQUIRE_ARG(body != nullptr && v != nullptr, "MdtBodyGetLinearVelocity", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetLinearVelocity")) return;
+  ME_REQUIRE_ARG(v != nullptr, "MdtBodyGetLinearVelocity", "NULL argument");
   MeVector3Copy(v, body->velocity);
 }
 
 void MEAPI MdtBodySetAngularVelocity(const MdtBodyID body, const MeReal wx, const MeReal wy, const MeReal wz) {
   static const char *fn = "MdtBodySetAngularVelocity";
-  ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
+  if (!liveBody(body, fn)) return;
   ME_REQUIRE_ARG(realFinite3(wx, wy, wz), fn, "angular velocity (%g, %g, %g) is not finite; ignored", (double)wx,
                  (double)wy, (double)wz);
   MeVector3Set(body->angularVelocity, wx, wy, wz);
 }
 
 void MEAPI MdtBodyGetAngularVelocity(const MdtBodyID body, MeVector3 w) {
-  ME_REQUIRE_ARG(body != nullptr && w != nullptr, "MdtBodyGetAngularVelocity", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetAngularVelocity")) return;
+  ME_REQUIRE_ARG(w != nullptr, "MdtBodyGetAngularVelocity", "NULL argument");
   MeVector3Copy(w, body->angularVelocity);
 }
 
 void MEAPI MdtBodyGetLinearAcceleration(const MdtBodyID body, MeVector3 a) {
-  ME_REQUIRE_ARG(body != nullptr && a != nullptr, "MdtBodyGetLinearAcceleration", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetLinearAcceleration")) return;
+  ME_REQUIRE_ARG(a != nullptr, "MdtBodyGetLinearAcceleration", "NULL argument");
   MeVector3Copy(a, body->acceleration);
 }
 
 void MEAPI MdtBodyGetAngularAcceleration(const MdtBodyID body, MeVector3 a) {
-  ME_REQUIRE_ARG(body != nullptr && a != nullptr, "MdtBodyGetAngularAcceleration", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetAngularAcceleration")) return;
+  ME_REQUIRE_ARG(a != nullptr, "MdtBodyGetAngularAcceleration", "NULL argument");
   MeVector3Copy(a, body->angularAcceleration);
 }
 
 void MEAPI MdtBodySetFastSpinAxis(const MdtBodyID body, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtBodySetFastSpinAxis";
-  ME_REQUIRE_ARG(body != nullptr, fn, "%s", kNull);
+  if (!liveBody(body, fn)) return;
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "axis (%g, %g, %g) is not finite; ignored", (double)x, (double)y, (double)z);
   MeVector3 a = {x, y, z};
   const MeReal n = MeVector3Magnitude(a);
@@ -120,17 +129,18 @@ void MEAPI MdtBodySetFastSpinAxis(const MdtBodyID body, const MeReal x, const Me
 }
 
 void MEAPI MdtBodyGetFastSpinAxis(const MdtBodyID body, MeVector3 axis) {
-  ME_REQUIRE_ARG(body != nullptr && axis != nullptr, "MdtBodyGetFastSpinAxis", "NULL argument");
+  if (!liveBody(body, "MdtBodyGetFastSpinAxis")) return;
+  ME_REQUIRE_ARG(axis != nullptr, "MdtBodyGetFastSpinAxis", "NULL argument");
   MeVector3Copy(axis, body->fastSpinAxis);
 }
 
 void MEAPI MdtBodyDisableFastSpinAxis(const MdtBodyID body) {
-  ME_REQUIRE_ARG(body != nullptr, "MdtBodyDisableFastSpinAxis", "%s", kNull);
+  if (!liveBody(body, "MdtBodyDisableFastSpinAxis")) return;
   body->fastSpinEnabled = FALSE;
 }
 
 MeBool MEAPI MdtBodyIsFastSpinAxisEnabled(const MdtBodyID body) {
-  ME_REQUIRE_ARG_RET(body != nullptr, FALSE, "MdtBodyIsFastSpinAxisEnabled", "%s", kNull);
+  if (!liveBody(body, "MdtBodyIsFastSpinAxisEnabled")) return FALSE;
   return body->fastSpinEnabled ? TRUE : FALSE;
 }
 

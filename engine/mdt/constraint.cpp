@@ -145,6 +145,7 @@ void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
   ME_REQUIRE_ARG(!c->enabled, fn, "the %s is enabled; disable it before changing its bodies", c->type->name);
   ME_REQUIRE_ARG(body0 != nullptr, fn, "body0 is NULL (only body1 may be the world)");
+  if (!liveBody(body0, fn) || (body1 && !liveBody(body1, fn))) return;
   ME_REQUIRE_ARG(body0 != body1, fn, "body0 and body1 are the same body");
   ME_REQUIRE_ARG(body0->world == c->world && (!body1 || body1->world == c->world), fn,
                  "a body belongs to another world");

@@ -23,6 +23,39 @@ TEST(HardCases, DestroyedBodyHandleIsRefused) {
   EXPECT_TRUE(warnings.saw("destroyed"));
 }
 
+// Every getter and setter of a body refuses a destroyed one with a warning:
+// setters change nothing, getters leave their output untouched and return
+// zero.
+TEST(HardCases, StaleHandleGettersAndSettersAreRefused) {
+  World w;
+  MdtBodyID b = MdtBodyCreate(w);
+  MdtBodyID other = MdtBodyCreate(w);
+  MdtBSJointID joint = MdtBSJointCreate(w);
+  MdtBodyDestroy(b);
+  WarningCapture warnings;
+  MdtBodySetPosition(b, 1, 2, 3);
+  MdtBodySetLinearVelocity(b, 1, 0, 0);
+  MdtBodySetMass(b, 5);
+  MdtBodyAddForce(b, 1, 0, 0);
+  MdtBodyAddImpulse(b, 1, 0, 0);
+  EXPECT_EQ(warnings.count(), 5u);
+  MeVector3 out = {7, 7, 7};
+  MdtBodyGetPosition(b, out);
+  MdtBodyGetLinearVelocity(b, out);
+  MdtBodyGetForce(b, out);
+  EXPECT_EQ(out[0], 7);
+  EXPECT_EQ(out[1], 7);
+  EXPECT_EQ(out[2], 7);
+  EXPECT_EQ(MdtBodyGetMass(b), 0);
+  EXPECT_EQ(MdtBodyGetUserData(b), nullptr);
+  EXPECT_EQ(MdtBodyGetWorld(b), nullptr);
+  EXPECT_EQ(warnings.count(), 11u);
+  EXPECT_TRUE(warnings.saw("destroyed"));
+  MdtBSJointSetBodies(joint, other, b);  // a stale body is not attached
+  EXPECT_EQ(MdtBSJointGetBody(joint, 0), nullptr);
+  EXPECT_EQ(warnings.count(), 12u);
+}
+
 // A destroyed body's slot is not handed out again while the pool has other
 // free slots, so its handle stays detectable; once the pool is full, the
 // oldest destroyed slot is reused.
