@@ -102,17 +102,25 @@ TEXT
 the most accurate of exact, exact:8 and the iterative solver with 10 to 50 sweeps whose predicted
 cost fits the partition's share of the budget (\`engine/mdt/step/step_budget.h\`). A partition is
 priced by the solves or sweeps it made last step (a warm-started partition at rest stops after one
-or two), and it moves back to a more accurate level only when that level fits 80% of its share,
-so that noise in the clock does not toggle it. The tables come from
+or two). It moves to a less accurate level at once when its level no longer fits, and back to a
+more accurate one only after 15 steps at its present level, so that noise in the clock does not
+toggle it. A level that has not run for a while is priced lower (down to a third of its learned
+price over 60 steps), so a level priced out by one expensive step, such as a landing, is tried
+again and learns its cost anew. The tables come from
 \`build/bench/bench/step_budget topple\` and \`step_budget pile1000 120\`: every figure is the median
 of three runs made setting by setting in turn. Two dynamics times are measured first: the exact
 solver's (an unbounded budget) and the floor (a starved budget: the step outside the solves plus
 the cheapest solves, which no budget can go below); the budgets are fractions of the first, and
 one below the floor is marked so. "dynamics us / budget" is the median of the measured
 \`MdtWorldStep\` time over the budget (the budget covers the dynamics, not collision); "steps within
-20%" the share of steps whose dynamics time was within 20% of the budget; "predicted" the smallest
-error among the fixed settings whose whole step costs no more than the budgeted run's, which is
-what the sweep says that time can buy. On these scenes the solves are a minority of the step
+20%" the share of steps whose dynamics time was within 20% of the budget; the last column the range of
+the errors of the fixed settings whose whole step costs no more than the budgeted run's: what that
+time buys without a budget. The iterative solver is run at every sweep count from 8 to 13 because a
+stack's error under it is chaotic in the sweep count: on topple 8 to 15 sweeps give anywhere from
+1.7 to 137 mm of drift, so one sweep count alone (10 sweeps, 4.6 mm) is not what that cost buys. A
+budget's error falls in the same spread, and is set mostly in the first steps, when the stacks
+land: a landing step costs the exact solver more than its average step, so even a budget of 100%
+of the exact solver's average time solves the landing iteratively. On these scenes the solves are a minority of the step
 (each table's first line gives its floor as a share of the exact step), so the range a budget can buy is
 narrow.
 
