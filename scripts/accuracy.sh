@@ -115,10 +115,7 @@ one below the floor is marked so. "dynamics us / budget" is the median of the me
 \`MdtWorldStep\` time over the budget (the budget covers the dynamics, not collision); "steps within
 20%" the share of steps whose dynamics time was within 20% of the budget; the last column the range of
 the errors of the fixed settings whose whole step costs no more than the budgeted run's: what that
-time buys without a budget. The iterative solver is run at every sweep count from 8 to 13 because a
-stack's error under it is chaotic in the sweep count: on topple 8 to 15 sweeps give anywhere from
-1.7 to 137 mm of drift, so one sweep count alone (10 sweeps, 4.6 mm) is not what that cost buys. A
-budget's error falls in the same spread, and is set mostly in the first steps, when the stacks
+time buys without a budget. A budget's error is set mostly in the first steps, when the stacks
 land: a landing step costs the exact solver more than its average step, so even a budget of 100%
 of the exact solver's average time solves the landing iteratively. On these scenes the solves are a minority of the step
 (each table's first line gives its floor as a share of the exact step), so the range a budget can buy is

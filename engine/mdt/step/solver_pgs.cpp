@@ -20,7 +20,10 @@
 // Warm start: lambda starts from the problem's warm impulses (clamped), and
 // dv from them. Sweeps alternate forward and backward through the rows
 // (symmetric Gauss-Seidel), so the order of the rows biases no direction
-// from one step to the next. It stops after the settings' sweep count
+// from one step to the next; the last sweep of the cap always runs
+// backward (an odd count starts backward), because a solve that ends on a
+// forward sweep leaves the same one-sided error every step and a resting
+// stack creeps with it. It stops after the settings' sweep count
 // (default 50) or once a sweep changes no row's velocity by more than the
 // tolerance times (1 + max |rhs|); it returns the last iterate (its natural-
 // map residual, as in kea_lcp.h, is reported).
@@ -245,7 +248,7 @@ class PgsSolver final : public PartitionSolver {
     bool converged = false;
     while (done < sweeps && !converged) {
       MeReal biggest = 0;
-      if (done % 2 == 0) {
+      if ((sweeps - done) % 2 == 0) {
         for (int i = 0; i < p.rowCount; ++i) biggest = std::max(biggest, visit(p, w, lambda, i, done));
       } else {
         for (int i = p.rowCount - 1; i >= 0; --i) biggest = std::max(biggest, visit(p, w, lambda, i, done));
