@@ -1,7 +1,8 @@
 // karma_engine.cpp: this project's engine in the comparison: the anchor
 // scene as scenes/anchor_scene.h builds it (Mst, defaults: the exact Kea
 // solver, unless SetKarmaIterativeRows sends large partitions to the
-// iterative one), stepped without the scene's own bookkeeping.
+// iterative one; SetKarmaMaxIterations caps the solver's iterations, the
+// sweeps of the iterative one), stepped without the scene's own bookkeeping.
 #include "anchor_scene.h"
 #include "peer_engine.h"
 
@@ -10,11 +11,13 @@ namespace karma::peers {
 namespace {
 
 int iterativeRows = -1;  // < 0: the engine's default
+int maxIterations = 0;   // MdtWorldSetKeaMaxIterations; 0: the engine's default
 
 class KarmaEngine final : public PeerEngine {
  public:
   explicit KarmaEngine(const SceneSpec &spec) : scene_(spec) {
     if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene_.world(), iterativeRows);
+    if (maxIterations > 0) MdtWorldSetKeaMaxIterations(scene_.world(), maxIterations);
   }
   void step() override { scene_.advance(); }
   void states(std::vector<BodyState> &out) const override { scene_.states(out); }
@@ -27,6 +30,7 @@ class KarmaEngine final : public PeerEngine {
 }  // namespace
 
 void SetKarmaIterativeRows(int rows) { iterativeRows = rows; }
+void SetKarmaMaxIterations(int count) { maxIterations = count; }
 
 std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec) { return std::make_unique<KarmaEngine>(spec); }
 

@@ -20,7 +20,7 @@
 //
 //   peer_bench [--scenes car,topple,...] [--engines karma,ode-step,...]
 //              [--reps N] [--steps N] [--pile-steps N] [--pile10k-steps N]
-//              [--ode-contacts N] [--iterative-rows N]
+//              [--ode-contacts N] [--iterative-rows N] [--max-iterations N]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -53,6 +53,7 @@ struct Options {
   int pile10kSteps = kDefaultPile10kSteps;
   int odeContacts = 8;
   int iterativeRows = -1;  // Karma's MdtWorldSetKeaIterativeRows; < 0: the engine's default
+  int maxIterations = 0;   // Karma's MdtWorldSetKeaMaxIterations (the iterative solver's sweeps); 0: default
 };
 
 std::vector<EngineKind> AllEngines() {
@@ -101,6 +102,8 @@ bool Parse(int argc, char **argv, Options &o) {
       o.odeContacts = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--iterative-rows") && hasValue && std::atoi(argv[i + 1]) >= 0)
       o.iterativeRows = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--max-iterations") && hasValue && std::atoi(argv[i + 1]) > 0)
+      o.maxIterations = std::atoi(argv[++i]);
     else
       return false;
   }
@@ -248,19 +251,22 @@ void PrintGrowth(const std::vector<SceneResults> &all, const std::vector<EngineK
 int main(int argc, char **argv) {
   Options o;
   if (!Parse(argc, argv, o)) {
-    std::fprintf(stderr,
-                 "usage: %s [--scenes car,topple,stack21,ragdoll,pile1000] "
-                 "[--engines karma,ode-step,ode-quickstep,bullet] [--reps N (5)] "
-                 "[--steps N (each scene's own)] [--pile-steps N (%d)] [--pile10k-steps N (%d)] "
-                 "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact; default: the engine's, 300)]\n"
-                 "  scenes: the five anchor scenes (the default) and pile10k (only when named)\n",
-                 argv[0], kDefaultPileSteps, kDefaultPile10kSteps);
+    std::fprintf(
+        stderr,
+        "usage: %s [--scenes car,topple,stack21,ragdoll,pile1000] "
+        "[--engines karma,ode-step,ode-quickstep,bullet] [--reps N (5)] "
+        "[--steps N (each scene's own)] [--pile-steps N (%d)] [--pile10k-steps N (%d)] "
+        "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact; default: the engine's, 300)]\n"
+        "  [--max-iterations N (Karma's iteration cap: the iterative solver's sweeps; default: the engine's)]\n"
+        "  scenes: the five anchor scenes (the default) and pile10k (only when named)\n",
+        argv[0], kDefaultPileSteps, kDefaultPile10kSteps);
     return 2;
   }
 #if KARMA_PEERS_HAVE_ODE
   karma::peers::SetOdeMaxContacts(o.odeContacts);
 #endif
   karma::peers::SetKarmaIterativeRows(o.iterativeRows);
+  karma::peers::SetKarmaMaxIterations(o.maxIterations);
   std::vector<EngineKind> engines;
   for (const EngineKind &e : AllEngines())
     if (Wanted(o.engines, e.name)) engines.push_back(e);

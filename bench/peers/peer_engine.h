@@ -39,6 +39,7 @@ std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec);
 // (0: every partition solved exactly); negative, the default: the engine's
 // own default is left in place.
 void SetKarmaIterativeRows(int rows);
+void SetKarmaMaxIterations(int count);
 #if KARMA_PEERS_HAVE_ODE
 std::unique_ptr<PeerEngine> MakeOdeStep(const SceneSpec &spec);
 std::unique_ptr<PeerEngine> MakeOdeQuickStep(const SceneSpec &spec);

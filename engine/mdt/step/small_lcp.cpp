@@ -58,15 +58,64 @@ bool trySet(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned 
 
 }  // namespace
 
-bool SolveSmallLcp(const MeReal *A, const MeReal *q, const MeReal *lo, int k, MeReal *x) {
+namespace {
+
+// The sets after the full one, in SolveSmallLcp's order.
+bool tryPartialSets(const MeReal *A, const MeReal *q, const MeReal *lo, int k, MeReal *x) {
   const unsigned all = (1u << k) - 1;
-  for (int freeCount = k; freeCount >= 0; --freeCount) {
+  for (int freeCount = k - 1; freeCount >= 0; --freeCount) {
     for (unsigned mask = all;; --mask) {
       if (__builtin_popcount(mask) == freeCount && trySet(A, q, lo, k, mask, x)) return true;
       if (mask == 0) break;
     }
   }
   return false;
+}
+
+}  // namespace
+
+bool SolveSmallLcp(const MeReal *A, const MeReal *q, const MeReal *lo, int k, MeReal *x) {
+  if (trySet(A, q, lo, k, (1u << k) - 1, x)) return true;
+  return tryPartialSets(A, q, lo, k, x);
+}
+
+void EliminateSmallLcpFullSet(const MeReal *A, int k, SmallLcpFullSet &full) {
+  full.k = k;
+  full.ok = true;
+  for (int a = 0; a < k; ++a)
+    for (int c = 0; c < k; ++c) full.m[a][c] = A[a * kStride + c];
+  // solveSubset's elimination without the right-hand side column; the
+  // multiplier f of row r at step a is kept in m[r][a].
+  for (int a = 0; a < k; ++a) {
+    if (!(full.m[a][a] > 0)) {
+      full.ok = false;
+      return;
+    }
+    for (int r = a + 1; r < k; ++r) {
+      const MeReal f = full.m[r][a] / full.m[a][a];
+      for (int c = a + 1; c < k; ++c) full.m[r][c] -= f * full.m[a][c];
+      full.m[r][a] = f;
+    }
+  }
+}
+
+bool SolveSmallLcp(const MeReal *A, const SmallLcpFullSet &full, const MeReal *q, const MeReal *lo, int k, MeReal *x) {
+  if (full.ok) {
+    // trySet with every row free: x = A^-1 q, fitting when x >= lo.
+    MeReal y[kSmallLcpMax];
+    for (int i = 0; i < k; ++i) y[i] = q[i];
+    for (int a = 0; a < k; ++a)
+      for (int r = a + 1; r < k; ++r) y[r] -= full.m[r][a] * y[a];
+    for (int a = k - 1; a >= 0; --a) {
+      MeReal v = y[a];
+      for (int c = a + 1; c < k; ++c) v -= full.m[a][c] * x[c];
+      x[a] = v / full.m[a][a];
+    }
+    bool fits = true;
+    for (int i = 0; i < k; ++i) fits = fits && x[i] >= lo[i];
+    if (fits) return true;
+  }
+  return tryPartialSets(A, q, lo, k, x);
 }
 
 }  // namespace karma::mdt

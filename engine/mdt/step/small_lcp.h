@@ -19,4 +19,19 @@ inline constexpr int kSmallLcpMax = 4;
 
 bool SolveSmallLcp(const MeReal *A, const MeReal *q, const MeReal *lo, int k, MeReal *x);
 
+// The elimination of the set with every row free, which depends on A
+// alone: made once for a block that is solved many times (a PGS sweep
+// visits each contact face once), it leaves a solve whose answer has every
+// row free (a face at rest) only the right-hand side's work. The arithmetic
+// and its order are SolveSmallLcp's, so the answers are bit-identical.
+struct SmallLcpFullSet {
+  int k = 0;
+  bool ok = false;                            // every pivot positive
+  MeReal m[kSmallLcpMax][kSmallLcpMax] = {};  // pivots and U above, multipliers below
+};
+void EliminateSmallLcpFullSet(const MeReal *A, int k, SmallLcpFullSet &full);
+// SolveSmallLcp with the full set's elimination made by
+// EliminateSmallLcpFullSet on the same A.
+bool SolveSmallLcp(const MeReal *A, const SmallLcpFullSet &full, const MeReal *q, const MeReal *lo, int k, MeReal *x);
+
 }  // namespace karma::mdt

@@ -45,12 +45,16 @@ MeReal defaultTolerance() { return sizeof(MeReal) == 4 ? (MeReal)1e-4 : (MeReal)
 constexpr int kMaxBlock = kSmallLcpMax;
 
 struct Workspace {
-  std::span<MeReal> mj;      // 12 per row: M^-1 J^T, per side (lin, ang)
-  std::span<MeReal> diag;    // d_i
-  std::span<MeReal> dv;      // 6 per body: linear, angular
-  std::span<int> block;      // per row: its normal block, or -1
-  std::span<MeReal> blockA;  // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
-  std::span<int> visited;    // per block: the last sweep that solved it
+  std::span<MeReal> mj;                  // 12 per row: M^-1 J^T, per side (lin, ang)
+  std::span<MeReal> diag;                // d_i
+  std::span<MeReal> dv;                  // 6 per body: linear, angular
+  std::span<int> block;                  // per row: its normal block, or -1
+  std::span<MeReal> blockA;              // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
+  std::span<SmallLcpFullSet> blockFull;  // per qualifying block: A_bb's elimination with every row free
+  // The sweeps' visits, forward and backward: a row alone (>= 0) or a
+  // normal block b (encoded -1 - b) at the first of its rows the sweep
+  // meets.
+  std::span<int> forward, backward;
 };
 
 MeReal dot6(const MeReal *a, const MeReal *b) {
@@ -75,7 +79,7 @@ bool blockable(const BodySpaceProblem &p, int b) {
 void prepareBlocks(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
   w.block = arena.filled<int>((size_t)p.rowCount, -1);
   w.blockA = arena.take<MeReal>((size_t)p.blockCount * kMaxBlock * kMaxBlock);
-  w.visited = arena.filled<int>((size_t)p.blockCount, -1);
+  w.blockFull = arena.take<SmallLcpFullSet>((size_t)p.blockCount);
   for (int b = 0; b < p.blockCount; ++b) {
     if (!blockable(p, b)) continue;
     const int first = p.normalBlock[(size_t)b], k = p.normalBlock[(size_t)b + 1] - first;
@@ -93,7 +97,38 @@ void prepareBlocks(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
         A[i * kMaxBlock + j] = a;
       }
     }
+    EliminateSmallLcpFullSet(A, k, w.blockFull[(size_t)b]);
   }
+}
+
+// The visits of one sweep through `rows` rows in the order `rowAt(n)`
+// gives: each row alone, or its normal block the first time the sweep
+// meets one of the block's rows. Returns the visits written.
+template <class RowAt>
+int schedule(const Workspace &w, int rows, RowAt rowAt, std::span<int> out, std::span<unsigned char> seen) {
+  std::fill(seen.begin(), seen.end(), (unsigned char)0);
+  int n = 0;
+  for (int k = 0; k < rows; ++k) {
+    const int i = rowAt(k), b = w.block[(size_t)i];
+    if (b < 0) {
+      out[(size_t)n++] = i;
+    } else if (!seen[(size_t)b]) {
+      seen[(size_t)b] = 1;
+      out[(size_t)n++] = -1 - b;
+    }
+  }
+  return n;
+}
+
+void prepareSchedules(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
+  std::span<unsigned char> seen = arena.take<unsigned char>((size_t)p.blockCount);
+  const int rows = p.rowCount;
+  w.forward = arena.take<int>((size_t)rows);
+  w.backward = arena.take<int>((size_t)rows);
+  w.forward = w.forward.first((size_t)schedule(
+      w, rows, [](int k) { return k; }, w.forward, seen));
+  w.backward = w.backward.first((size_t)schedule(
+      w, rows, [&](int k) { return rows - 1 - k; }, w.backward, seen));
 }
 
 Workspace prepare(const BodySpaceProblem &p, StepArena &arena) {
@@ -114,6 +149,7 @@ Workspace prepare(const BodySpaceProblem &p, StepArena &arena) {
     w.diag[(size_t)i] = d;
   }
   prepareBlocks(p, w, arena);
+  prepareSchedules(p, w, arena);
   return w;
 }
 
@@ -185,7 +221,7 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
     for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
   }
   MeReal x[kMaxBlock] = {};
-  if (!SolveSmallLcp(A, q, lo, k, x)) return -1;
+  if (!SolveSmallLcp(A, w.blockFull[(size_t)b], q, lo, k, x)) return -1;
   MeReal biggest = 0;
   for (int i = 0; i < k; ++i) {
     lambda[(size_t)rows[i]] = x[i];
@@ -195,12 +231,11 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
   return biggest;
 }
 
-// Row i's turn in a sweep: its block once per sweep, else the row alone.
-MeReal visit(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int i, int sweep) {
-  const int b = w.block[(size_t)i];
-  if (b < 0) return update(p, w, lambda, i);
-  if (w.visited[(size_t)b] == sweep) return 0;
-  w.visited[(size_t)b] = sweep;
+// One visit of a sweep's schedule: row i alone (i >= 0) or normal block
+// -1 - i.
+MeReal visit(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int i) {
+  if (i >= 0) return update(p, w, lambda, i);
+  const int b = -1 - i;
   const MeReal change = updateBlock(p, w, lambda, b);
   if (change >= 0) return change;
   MeReal biggest = 0;  // no consistent set (rounding): row by row
@@ -248,11 +283,8 @@ class PgsSolver final : public PartitionSolver {
     bool converged = false;
     while (done < sweeps && !converged) {
       MeReal biggest = 0;
-      if ((sweeps - done) % 2 == 0) {
-        for (int i = 0; i < p.rowCount; ++i) biggest = std::max(biggest, visit(p, w, lambda, i, done));
-      } else {
-        for (int i = p.rowCount - 1; i >= 0; --i) biggest = std::max(biggest, visit(p, w, lambda, i, done));
-      }
+      for (int i : (sweeps - done) % 2 == 0 ? w.forward : w.backward)
+        biggest = std::max(biggest, visit(p, w, lambda, i));
       ++done;
       converged = biggest <= tol;
     }
