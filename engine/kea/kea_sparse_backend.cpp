@@ -33,18 +33,18 @@ namespace {
 
 /* Whether solving with a stale envelope factor is expected to cost less
  * than factorising afresh: the factorisation costs sum_i (i - first_i)^2
- * multiply-adds, one conjugate-gradient iteration about nnz + 2 * envelope
- * (a product and two triangular solves), and a stale solve takes about
- * kStaleSolveIterations of them. A small dense block (a car's 32 rows) is
- * cheaper to refactorise; a long band (a stack) is not. */
-bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz) {
-  constexpr std::size_t kStaleSolveIterations = 5;
+ * multiply-adds; a stale solve about nnz + 2 * envelope (a product with
+ * A_FF and two triangular solves) for its first solve with the factor, as
+ * much again for the residual that accepts it, and as much per
+ * conjugate-gradient iteration, of which it is expected to take
+ * `iterations`. */
+bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, MeReal iterations) {
   std::size_t factorCost = 0;
   for (int i = 0; i < e.m; ++i) {
     const auto width = static_cast<std::size_t>(i - e.first[U(i)]);
     factorCost += width * width;
   }
-  return factorCost > kStaleSolveIterations * (nnz + 2 * e.size());
+  return static_cast<MeReal>(factorCost) > (2 + iterations) * static_cast<MeReal>(nnz + 2 * e.size());
 }
 
 }  // namespace
@@ -235,6 +235,17 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
   ++staleSolves_;
   solveWithFactor(rhs_, x_);
   int budget = kMaxRefine;
+  /* What this solve took teaches the expected count (a failure counts as
+   * every iteration allowed). */
+  struct Learn {
+    MeReal &expected;
+    const int &left;
+    bool failed = true;
+    ~Learn() {
+      const MeReal taken = failed ? static_cast<MeReal>(kMaxRefine) : static_cast<MeReal>(kMaxRefine - left);
+      expected += kStaleLearningRate * (taken - expected);
+    }
+  } learn{staleIterationsExpected_, budget};
   while (!converged()) {
     if (budget == 0 || !std::isfinite(largest(x_))) return false;
     solveWithFactor(cgR_, cgZ_);
@@ -259,6 +270,7 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
       for (std::size_t a = 0; a < m; ++a) cgD_[a] = cgZ_[a] + beta * cgD_[a];
     }
   }
+  learn.failed = false;
   return true;
 }
 
@@ -332,7 +344,12 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
       fillEnvelope(rows);
       envelope_.factor();
       factor_ = useBandOrder_ ? Factor::BandEnvelope : Factor::Envelope;
-      staleWorthIt_ = memory_ == KeaFactorMemory::Always || StaleSolveWorthIt(envelope_, U(p_->rowStart[U(p_->n)]));
+      staleWorthIt_ = memory_ == KeaFactorMemory::Always ||
+                      StaleSolveWorthIt(envelope_, U(p_->rowStart[U(p_->n)]), staleIterationsExpected_);
+      /* A factor not kept teaches nothing: the expectation drifts back to
+       * the prior so that the factor is tried again. */
+      if (!staleWorthIt_)
+        staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
       rememberSparsity();
       return;
     }

@@ -37,7 +37,9 @@
  * computation; after kMaxRefine iterations without that the block is
  * refactorised and solved directly. A factor is kept only where this is
  * expected to pay: always for the sparse LDL^T, for an envelope when its
- * factorisation costs several iterations (StaleSolveWorthIt). A stale
+ * factorisation costs more than a stale solve of the iterations this
+ * workspace's stale solves have been taking (StaleSolveWorthIt,
+ * kStaleIterationsPrior). A stale
  * factor never decides the answer's accuracy, only its cost. A
  * factorisation that breaks down (not positive definite, e.g. eps = 0 with
  * redundant rows) falls back to a dense least-squares solve for blocks up
@@ -77,6 +79,17 @@ class SparseBackend {
 
   /* Conjugate-gradient iterations with a stale factor before refactorising. */
   static constexpr int kMaxRefine = 6;
+  /* The conjugate-gradient iterations a stale solve is expected to take
+   * before this backend has made one, and the weight of each stale solve's
+   * count in the running mean that replaces it (a failed one counts
+   * kMaxRefine). A factor is kept for the next problem when refactorising
+   * is expected to cost more than a stale solve of that many iterations;
+   * each factor not kept moves the mean back toward the prior by
+   * kStaleRecoveryRate, so that a workspace that learnt to refactorise
+   * tries again now and then. */
+  static constexpr MeReal kStaleIterationsPrior = 2;
+  static constexpr MeReal kStaleLearningRate = MeReal(0.25);
+  static constexpr MeReal kStaleRecoveryRate = MeReal(1) / 16;
 
   /* Starts a solve of `p` (which must outlive it) with eps on the diagonal;
    * forgets the previous problem's ordering and factorisation, keeps the
@@ -174,6 +187,7 @@ class SparseBackend {
   MeReal target_ = 0;
   std::vector<MeReal> cgR_, cgZ_, cgD_, cgQ_, cgFull_;
   int staleSolves_ = 0, staleIterations_ = 0;
+  MeReal staleIterationsExpected_ = kStaleIterationsPrior; /* running mean, kept across problems */
 };
 
 }  // namespace karma::kea::detail

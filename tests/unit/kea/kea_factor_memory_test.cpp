@@ -7,7 +7,7 @@
 // with a fresh solve to the tolerance; a changed matrix far from the kept
 // factor falls back to a factorisation and still agrees; another sparsity
 // or another epsilon never uses the kept factor; without a factor memory
-// nothing is kept; WhenCheaper keeps a factor only where it pays.
+// nothing is kept; WhenCheaper keeps a factor while its stale solves pay.
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
 
@@ -201,27 +201,61 @@ TEST(KeaWarmStart, ACyclingWarmStartIsRetriedCold) {
   ExpectAgree(w, cold, "stack6 scaled 30%");
 }
 
-// WhenCheaper: a car's small dense block is cheaper to refactorise than to
-// solve with a stale factor, so nothing is kept; a sparse LDL^T always is
-// kept (here a 20-box stack forced onto that path).
-TEST(KeaFactorMemory, WhenCheaperKeepsOnlyFactorsWorthKeeping) {
+// WhenCheaper keeps an envelope factor while refactorising is expected to
+// cost more than a stale solve of the iterations the workspace's stale
+// solves have taken (kStaleIterationsPrior before the first): a car's small
+// dense block, whose stale solves take a couple of iterations from one step
+// to the next, is kept; once its stale solves take many iterations (a
+// problem far from the kept factor each time) it is refactorised instead,
+// and once the problems change little again it is kept again.
+// A sparse LDL^T is always kept (here a 20-box stack forced onto that path).
+TEST(KeaFactorMemory, WhenCheaperKeepsAFactorWhileItsStaleSolvesPay) {
   const ContactProblem car = kea_test::Car(1);
-  const KeaResult small = SolveAfter(car, Perturbed(car, 1e-5, 7), true, KeaFactorMemory::WhenCheaper);
-  EXPECT_EQ(small.status, KeaStatus::Solved);
-  EXPECT_EQ(small.staleSolves, 0);
-  EXPECT_GE(small.factorizations, 1);
-
-  const ContactProblem stack = kea_test::Stack(20, 1);
   Workspace workspace(KeaWorkspaceCreate());
   KeaOptions o;
   o.factorMemory = KeaFactorMemory::WhenCheaper;
-  o.envelopeRows = -1;  // the sparse LDL^T
   KeaResult r;
-  KeaSolveSparse(stack.sparse(), o, *workspace, r);
+  KeaSolveSparse(car.sparse(), o, *workspace, r);
+  ASSERT_EQ(r.status, KeaStatus::Solved);
+  o.warmStart = r.lambda;
+  KeaSolveSparse(Perturbed(car, 1e-5, 7).sparse(), o, *workspace, r);  // as the next step
+  EXPECT_EQ(r.status, KeaStatus::Solved);
+  EXPECT_EQ(r.staleSolves, 1);
+  EXPECT_EQ(r.factorizations, 0);
+  EXPECT_LE(r.staleIterations, 2);
+  // Problems far from the kept factor: the stale solves fail or take every
+  // iteration, and the workspace learns to refactorise.
+  int refactorised = 0;
+  for (unsigned seed = 10; seed < 30; ++seed) {
+    KeaSolveSparse(Perturbed(car, 0.5, seed).sparse(), o, *workspace, r);
+    EXPECT_EQ(r.status, KeaStatus::Solved);
+    if (r.staleSolves == 0) ++refactorised;
+  }
+  EXPECT_GE(refactorised, 10);
+  // Back to small changes: the workspace tries its factor again (its
+  // expectation drifts back by kStaleRecoveryRate per factor not kept) and
+  // keeps using it.
+  int stale = 0;
+  ContactProblem step = car;
+  for (unsigned seed = 30; seed < 70; ++seed) {
+    o.warmStart = r.lambda;  // each problem warm-started from the last answer
+    step = Perturbed(step, 1e-5, seed);
+    KeaSolveSparse(step.sparse(), o, *workspace, r);
+    EXPECT_EQ(r.status, KeaStatus::Solved);
+    stale += r.staleSolves;
+  }
+  EXPECT_GE(stale, 20);
+
+  const ContactProblem stack = kea_test::Stack(20, 1);
+  Workspace sparse(KeaWorkspaceCreate());
+  o = KeaOptions{};
+  o.factorMemory = KeaFactorMemory::WhenCheaper;
+  o.envelopeRows = -1;  // the sparse LDL^T
+  KeaSolveSparse(stack.sparse(), o, *sparse, r);
   ASSERT_EQ(r.status, KeaStatus::Solved);
   const std::vector<MeReal> warm = r.lambda;
   o.warmStart = warm;
-  KeaSolveSparse(stack.sparse(), o, *workspace, r);  // the same problem: its own solution
+  KeaSolveSparse(stack.sparse(), o, *sparse, r);  // the same problem: its own solution
   EXPECT_EQ(r.status, KeaStatus::Solved);
   EXPECT_EQ(r.staleSolves, 1);
   EXPECT_EQ(r.factorizations, 0);
