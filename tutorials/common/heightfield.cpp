@@ -66,6 +66,10 @@ std::string FindFile(const std::string &file) {
 
 int Index(const HeightField *hf, int ix, int iz) { return iz * hf->countX + ix; }
 
+// A neighbour's vertex this far below a triangle's plane (times the grid
+// spacing) makes their shared edge a crest.
+constexpr MeReal kCrestTolerance = (MeReal)1e-5;
+
 // Unit normal of the triangle (a, b, c), counter-clockwise seen from +y.
 void FaceNormal(const MeVector3 a, const MeVector3 b, const MeVector3 c, MeVector3 n) {
   MeVector3 u, v;
@@ -86,6 +90,28 @@ void CellTriangle(const HeightField *hf, int ix, int iz, int k, int v[3]) {
   } else {
     v[0] = i00, v[1] = i01, v[2] = i11;
   }
+}
+
+// The edge flags of triangle k of cell (ix, iz) (vertices v, face normal n):
+// an edge is sharp where the surface folds down across it (a crest: the
+// neighbouring triangle's far vertex lies below this triangle's plane), so
+// that a body resting on the fold touches the edge, which no face's
+// contact covers there. Seams that are flat or fold up (a hollow) stay
+// smooth, and so does the field's rim. Edge e runs from v[e] to v[(e+1)%3]
+// (McdTriangleList.h); kFar gives, per triangle and edge, the grid offset
+// from (ix, iz) of the neighbour's vertex off that edge.
+int CrestEdgeFlags(const HeightField *hf, int ix, int iz, int k, const int v[3], const MeVector3 n) {
+  static constexpr int kFar[2][3][2] = {{{0, 1}, {2, 1}, {0, -1}}, {{-1, 0}, {1, 2}, {1, 0}}};
+  const MeReal tolerance = kCrestTolerance * hf->spacing;
+  int flags = 0;
+  for (int e = 0; e < 3; ++e) {
+    const int fx = ix + kFar[k][e][0], fz = iz + kFar[k][e][1];
+    if (fx < 0 || fz < 0 || fx >= hf->countX || fz >= hf->countZ) continue;
+    MeVector3 d;
+    MeVector3Subtract(d, hf->vertices[Index(hf, fx, fz)], hf->vertices[v[0]]);
+    if (MeVector3Dot(d, n) < -tolerance) flags |= kMcdTriangleUseEdge0 << e;
+  }
+  return flags;
 }
 
 }  // namespace
@@ -233,7 +259,7 @@ int HeightFieldTrianglesNear(const HeightField *hf, const MeVector3 pos, MeReal 
       for (int i = 0; i < 3; ++i) t.vertices[i] = &hf->vertices[v[i]];
       t.normal = &hf->normals[2 * (c.iz * (hf->countX - 1) + c.ix) + k];
       t.triangleData.tag = 0;
-      t.flags = 0;  // face normal, one-sided, no edge contacts: a smooth surface
+      t.flags = CrestEdgeFlags(hf, c.ix, c.iz, k, v, *t.normal);  // face normal, one-sided
     }
   return count;
 }

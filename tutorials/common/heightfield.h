@@ -12,9 +12,11 @@
  *
  * The vertices and normals live as long as the field, so the
  * McdUserTriangle records HeightFieldTrianglesNear fills point into them
- * (the triangle list's contract, McdTriangleList.h). Interior edges carry
- * no edge flags (a sphere rolls across them without snagging); the face
- * normal is used. */
+ * (the triangle list's contract, McdTriangleList.h). The face normal is
+ * used. An edge where the surface folds down (a crest) carries its edge
+ * flag, so that a wheel on the fold touches the edge where neither face's
+ * contact reaches it; flat seams, hollows and the rim carry none (a sphere
+ * rolls across them without snagging). */
 #ifndef KARMA_TUTORIAL_HEIGHTFIELD_H
 #define KARMA_TUTORIAL_HEIGHTFIELD_H
 

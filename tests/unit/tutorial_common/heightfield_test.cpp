@@ -54,8 +54,12 @@ TEST(HeightField, TrianglesNearAPointFaceUpAndContainIt) {
     MeVector3Subtract(v, *t[i].vertices[2], *t[i].vertices[0]);
     MeVector3Cross(c, u, v);
     EXPECT_GT(MeVector3Dot(c, nn), 0);
-    EXPECT_EQ(t[i].flags, 0);
   }
+  // Cell (0, 0) climbs to the ridge: of its lower triangle (00, 11, 10)
+  // only the edge 11-10, on the ridge, is a crest (the far side falls
+  // away); the diagonal and the seam toward z = 0 are flat, the rest rim.
+  EXPECT_EQ(t[0].flags, kMcdTriangleUseEdge1);
+  EXPECT_EQ(t[1].flags, 0);
   // A wide query covers all 4 cells; the limit keeps the nearest first.
   EXPECT_EQ(HeightFieldTrianglesNear(&s.hf, p, 10, t, 8), 8);
   EXPECT_EQ(HeightFieldTrianglesNear(&s.hf, p, 10, t, 3), 3);
@@ -63,6 +67,19 @@ TEST(HeightField, TrianglesNearAPointFaceUpAndContainIt) {
   EXPECT_EQ((*t[0].vertices[0])[2], -2);
   const MeVector3 far = {100, 0, 100};
   EXPECT_EQ(HeightFieldTrianglesNear(&s.hf, far, 1, t, 8), 0);
+}
+
+// A valley (the ridge turned upside down) has no crest: every edge stays
+// smooth, so a sphere rolls through it without snagging.
+TEST(HeightField, AValleyHasNoSharpEdges) {
+  HeightField hf{};
+  const MeReal h[9] = {1, 0, 1, 1, 0, 1, 1, 0, 1};
+  ASSERT_EQ(HeightFieldCreate(&hf, 3, 3, 2, -2, -2, h), 1);
+  McdUserTriangle t[8];
+  const MeVector3 p = {0, 5, 0};
+  ASSERT_EQ(HeightFieldTrianglesNear(&hf, p, 10, t, 8), 8);
+  for (const McdUserTriangle &tri : t) EXPECT_EQ(tri.flags, 0);
+  HeightFieldDestroy(&hf);
 }
 
 TEST(HeightField, BadInputIsRefused) {
