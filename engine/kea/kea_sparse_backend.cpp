@@ -146,7 +146,7 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   buildRhs(rows, set, lambda);
   x_.resize(m);
   if (stale_) {
-    if (solveStale(rows)) {
+    if (solveStaleAndLearn(rows)) {
       for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
       return;
     }
@@ -235,17 +235,6 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
   ++staleSolves_;
   solveWithFactor(rhs_, x_);
   int budget = kMaxRefine;
-  /* What this solve took teaches the expected count (a failure counts as
-   * every iteration allowed). */
-  struct Learn {
-    MeReal &expected;
-    const int &left;
-    bool failed = true;
-    ~Learn() {
-      const MeReal taken = failed ? static_cast<MeReal>(kMaxRefine) : static_cast<MeReal>(kMaxRefine - left);
-      expected += kStaleLearningRate * (taken - expected);
-    }
-  } learn{staleIterationsExpected_, budget};
   while (!converged()) {
     if (budget == 0 || !std::isfinite(largest(x_))) return false;
     solveWithFactor(cgR_, cgZ_);
@@ -270,8 +259,17 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
       for (std::size_t a = 0; a < m; ++a) cgD_[a] = cgZ_[a] + beta * cgD_[a];
     }
   }
-  learn.failed = false;
   return true;
+}
+
+/* solveStale, and what it took teaches the expected iteration count (a
+ * failure counts as every iteration allowed). */
+bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows) {
+  const int before = staleIterations_;
+  const bool solved = solveStale(rows);
+  const MeReal taken = static_cast<MeReal>(solved ? staleIterations_ - before : kMaxRefine);
+  staleIterationsExpected_ += kStaleLearningRate * (taken - staleIterationsExpected_);
+  return solved;
 }
 
 std::span<const int> SparseBackend::factorRows() const {

@@ -129,6 +129,7 @@ class SparseBackend {
   const std::vector<int> &factorOrder() const;
   MeReal multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y, bool withScale);
   bool solveStale(const std::vector<int> &rows);
+  bool solveStaleAndLearn(const std::vector<int> &rows);
   void factorise(const std::vector<unsigned char> &set);
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   void fillEnvelope(const std::vector<int> &rows);
