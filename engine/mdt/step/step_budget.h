@@ -20,9 +20,9 @@
 // only after kDwellSteps steps at its present one, so that noise in the
 // measured costs cannot toggle it between solvers (each change starts the
 // new solver from the other's impulses); it moves to a less accurate one
-// at once, so the budget holds. The world's
-// method (MdtWorldSetKeaMethod) and size rule (MdtWorldSetKeaIterativeRows)
-// are set aside while a budget is on. When even level 2 at kMinSweeps does
+// at once, so the budget holds. The world's method (MdtWorldSetKeaMethod)
+// and size rule (MdtWorldSetKeaIterativeRows) are set aside while a budget
+// is on. When even level 2 at kMinSweeps does
 // not fit, the step runs over its budget: the budget cannot buy less than
 // the step's cost outside the solves plus the cheapest solves.
 //
@@ -47,8 +47,8 @@
 // priced out by a few expensive solves (a landing, a cold first step) is
 // tried again once its discounted price fits, and learns its cost anew,
 // while one that costs more than kStaleDiscount times its share (an exact
-// solve of a heap) is never tried. The overhead is the same kind of average of the step's
-// measured time minus its solve time. A measurement enters a model at most
+// solve of a heap) is never tried. The overhead is the same kind of
+// average of the step's measured time minus its solve time. A measurement enters a model at most
 // kOutlier times what the model predicted, so one interrupted step does
 // not reprice the following ones.
 //
