@@ -141,9 +141,10 @@ enum class KeaMethod {
 enum class KeaStatus { Solved, IterationLimit, CycleDetected, BadInput };
 
 /* KeaOptions::factorMemory. WhenCheaper keeps a factor only where the cost
- * model of kea_sparse_backend.cpp (StaleSolveWorthIt) expects a few
- * conjugate-gradient iterations to cost less than a factorisation: always
- * for the sparse LDL^T, for an envelope when it is long and wide. */
+ * model of kea_sparse_backend.cpp (StaleSolveWorthIt) expects a stale solve
+ * to cost less than a factorisation: always for the sparse LDL^T, for an
+ * envelope while the conjugate-gradient iterations its workspace's stale
+ * solves have been taking cost less than refactorising it. */
 enum class KeaFactorMemory { Off, WhenCheaper, Always };
 
 /* A short name for a status ("Solved", ...), for messages and tests. */
