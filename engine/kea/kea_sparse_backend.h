@@ -39,11 +39,11 @@
  * expected to pay: always for the sparse LDL^T, for an envelope when its
  * factorisation costs more than a stale solve of the iterations this
  * workspace's stale solves have been taking (StaleSolveWorthIt,
- * kStaleIterationsPrior). A stale
- * factor never decides the answer's accuracy, only its cost. A
- * factorisation that breaks down (not positive definite, e.g. eps = 0 with
- * redundant rows) falls back to a dense least-squares solve for blocks up
- * to kDenseFallback rows, and to a slightly shifted sparse LDL^T beyond. */
+ * kStaleIterationsPrior). A stale factor never decides the answer's
+ * accuracy, only its cost. A factorisation that breaks down (not positive
+ * definite, e.g. eps = 0 with redundant rows) falls back to a dense
+ * least-squares solve for blocks up to kDenseFallback rows, and to a
+ * slightly shifted sparse LDL^T beyond. */
 #ifndef KARMA_KEA_SPARSE_BACKEND_H
 #define KARMA_KEA_SPARSE_BACKEND_H
 

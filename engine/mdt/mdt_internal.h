@@ -122,6 +122,7 @@ inline bool realFinite3(MeReal a, MeReal b, MeReal c) { return realFinite(a) && 
 // slot is reused only after every other free one (body_lifecycle.cpp), so
 // a stale handle is caught until the pool cycles back to its slot.
 bool liveBody(const MdtBody *b, const char *fn);
+
 // Rebuilds b->tm from b->q and b->position.
 void updateTransform(MdtBody *b);
 // World position of the centre of mass (the body origin when not offset).

@@ -80,7 +80,6 @@ bool SolveSmallLcp(const MeReal *A, const MeReal *q, const MeReal *lo, int k, Me
 }
 
 void EliminateSmallLcpFullSet(const MeReal *A, int k, SmallLcpFullSet &full) {
-  full.k = k;
   full.ok = true;
   for (int a = 0; a < k; ++a)
     for (int c = 0; c < k; ++c) full.m[a][c] = A[a * kStride + c];

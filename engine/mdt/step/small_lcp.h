@@ -25,7 +25,6 @@ bool SolveSmallLcp(const MeReal *A, const MeReal *q, const MeReal *lo, int k, Me
 // row free (a face at rest) only the right-hand side's work. The arithmetic
 // and its order are SolveSmallLcp's, so the answers are bit-identical.
 struct SmallLcpFullSet {
-  int k = 0;
   bool ok = false;                            // every pivot positive
   MeReal m[kSmallLcpMax][kSmallLcpMax] = {};  // pivots and U above, multipliers below
 };
