@@ -1,48 +1,88 @@
-/* kernels.h: the platform's table of hot numeric kernels (per body, per
- * constraint row) used by the dynamics step.
+/* kernels.h: the platform's table of hot numeric kernels, one table per
+ * backend, and the choice of backend.
  *
- * INTERNAL header (namespace karma::platform), not installed. The step calls
- * the kernels through the table that ActiveKernels() returns, so a SIMD
- * backend can replace the reference scalar one without touching the callers.
- * Every backend must give results bit-identical to the reference backend's
- * (the same operations in the same order, no contraction), since the step's
- * determinism is tested by hash; a backend that cannot must not be selected
- * by default.
+ * INTERNAL header (namespace karma::platform), not installed.
  *
- * Conventions: vectors are MeReal[3]; the inertia is a row-major 3x3
- * (MeMatrix3); a row's Jacobian for one body is its linear part jl and
- * angular part ja. */
+ * Backends. `reference` is portable scalar C++ and defines every kernel's
+ * result; `sse4` (SSE4.2), `avx2` (AVX2) and `avx512` (AVX-512F) compute
+ * the same operations in the same order, several independent lanes at a
+ * time, with per-function target attributes, so one library holds them all
+ * and the CPU decides at run time which can run. No backend contracts a
+ * multiply and an add into one rounding (no FMA): every backend's results
+ * are bit-identical to the reference's, which is what the conformance test
+ * (platform_test) checks and why the goldens and state hashes are shared by
+ * all backends.
+ *
+ * Reductions. A sum of products is defined over kLanes interleaved partial
+ * sums: term k goes to partial sum k mod kLanes (each partial sum adds its
+ * terms in ascending k, starting from 0), and the partial sums combine as
+ *     ((s0 + s4) + (s2 + s6)) + ((s1 + s5) + (s3 + s7))
+ * (LaneSum in reference_inline.h). That order is what an 8-lane vector
+ * accumulator gives, so a SIMD backend keeps one accumulator per lane.
+ *
+ * What is here: the array kernels of Kea's sparse path, which profiling
+ * puts at the top of a large scene's step (the envelope factorisation and
+ * solves, sparse products). The per-row three-vector operations of the
+ * assembly (reference_inline.h) are called inline: a table entry would cost
+ * an indirect call per six flops, and there is nothing to batch in them.
+ * Counts n may be 0. */
 #ifndef KARMA_PLATFORM_KERNELS_H
 #define KARMA_PLATFORM_KERNELS_H
 
 #include "MePrecision.h"
 
+#include <span>
+
 namespace karma::platform {
 
+/* Partial sums of every reduction (see above). */
+inline constexpr int kLanes = 8;
+
 struct Kernels {
-  /* The backend's name ("reference", ...), for logs and benchmarks. */
+  /* The backend's name: "reference", "sse4", "avx2" or "avx512". */
   const char *name;
 
-  /* M^-1 J^T of one row for one body:
-   *     outLin = invMass * jl                 (componentwise, jl[k] * invMass)
-   *     outAng = invInertiaWorld * ja          (row r: I[r][0]*ja[0] + I[r][1]*ja[1] + I[r][2]*ja[2])
-   * out may not alias the inputs. */
-  void (*bodyMinvJt)(MeReal invMass, const MeReal invInertiaWorld[3][3], const MeReal jl[3], const MeReal ja[3],
-                     MeReal outLin[3], MeReal outAng[3]);
+  /* sum_{k < n} a[k] b[k], in the lane order above. */
+  MeReal (*dot)(const MeReal *a, const MeReal *b, int n);
 
-  /* One body's contribution to the entry A_ij of A = J M^-1 J^T: row i's
-   * Jacobian (jl_i, ja_i) for the body dotted with row j's M^-1 J^T for it:
-   *     (jl_i . lin_j) + (ja_i . ang_j),
-   * each dot summed left to right. Also gives J v for a body velocity
-   * (lin_j, ang_j) = (v, w). */
-  MeReal (*rowPairEntry)(const MeReal jl_i[3], const MeReal ja_i[3], const MeReal minvJtLin_j[3],
-                         const MeReal minvJtAng_j[3]);
+  /* sum_{k < n} value[k] x[index[k]] (a sparse row times a dense vector),
+   * in the lane order above. */
+  MeReal (*gatherDot)(const MeReal *value, const int *index, const MeReal *x, int n);
+
+  /* y[k] -= alpha x[k] for k < n, each product rounded, then the
+   * difference (x and y must not overlap). */
+  void (*subtractScaled)(MeReal alpha, const MeReal *x, MeReal *y, int n);
 };
 
-/* The reference scalar backend (reference.cpp). */
+/* Every backend, reference first, then in order of preference (the last
+ * one the CPU supports is the best). */
+std::span<const Kernels *const> AllKernels();
+
+/* The backend called `name`, or nullptr when there is none by that name
+ * (whether or not the CPU supports it). */
+const Kernels *FindKernels(const char *name);
+
+/* Whether this CPU (and its operating system) can run the backend. */
+bool Supported(const Kernels &kernels);
+
+/* The most capable backend this CPU supports. */
+const Kernels &BestSupported();
+
+/* The reference scalar backend. */
 const Kernels &ReferenceKernels();
 
-/* The backend the step uses. For now always the reference backend. */
+/* The backend a new world starts with: the one named by the environment
+ * variable KARMA_PLATFORM when it is set, known and supported; else the
+ * best supported one. An unknown or unsupported name gives one warning
+ * (MeWarning) per process, naming the backend used instead. Read once. */
+const Kernels &DefaultKernels();
+
+/* The backend for a request by name: the named one when known and
+ * supported; else `fallback` (typically the best supported one), with a
+ * warning saying why. */
+const Kernels &KernelsForRequest(const char *name, const Kernels &fallback);
+
+/* The backend the step uses when no world chose one: DefaultKernels(). */
 const Kernels &ActiveKernels();
 
 }  // namespace karma::platform

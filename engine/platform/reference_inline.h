@@ -7,6 +7,7 @@
 #define KARMA_PLATFORM_REFERENCE_INLINE_H
 
 #include "MePrecision.h"
+#include "kernels.h"
 
 namespace karma::platform::reference {
 
@@ -26,6 +27,37 @@ inline MeReal RowPairEntry(const MeReal jl_i[3], const MeReal ja_i[3], const MeR
   const MeReal lin = jl_i[0] * minvJtLin_j[0] + jl_i[1] * minvJtLin_j[1] + jl_i[2] * minvJtLin_j[2];
   const MeReal ang = ja_i[0] * minvJtAng_j[0] + ja_i[1] * minvJtAng_j[1] + ja_i[2] * minvJtAng_j[2];
   return lin + ang;
+}
+
+/* The partial sums of a reduction combined in the order kernels.h defines. */
+inline MeReal LaneSum(const MeReal s[kLanes]) {
+  return ((s[0] + s[4]) + (s[2] + s[6])) + ((s[1] + s[5]) + (s[3] + s[7]));
+}
+
+/* Adds the terms k = first .. n-1 of a reduction into their partial sums
+ * (term k into s[k mod kLanes]): the tail a vector loop leaves. */
+inline void AddTail(const MeReal *a, const MeReal *b, int first, int n, MeReal s[kLanes]) {
+  for (int k = first; k < n; ++k) s[k % kLanes] += a[k] * b[k];
+}
+
+inline MeReal Dot(const MeReal *a, const MeReal *b, int n) {
+  MeReal s[kLanes] = {};
+  AddTail(a, b, 0, n, s);
+  return LaneSum(s);
+}
+
+inline void AddGatherTail(const MeReal *value, const int *index, const MeReal *x, int first, int n, MeReal s[kLanes]) {
+  for (int k = first; k < n; ++k) s[k % kLanes] += value[k] * x[index[k]];
+}
+
+inline MeReal GatherDot(const MeReal *value, const int *index, const MeReal *x, int n) {
+  MeReal s[kLanes] = {};
+  AddGatherTail(value, index, x, 0, n, s);
+  return LaneSum(s);
+}
+
+inline void SubtractScaled(MeReal alpha, const MeReal *x, MeReal *y, int n) {
+  for (int k = 0; k < n; ++k) y[k] -= alpha * x[k];
 }
 
 }  // namespace karma::platform::reference

@@ -11,7 +11,7 @@
 //             constraint's row-by-row memory when it wrote as many rows
 //             last step, else 0;
 //   blocks    each constraint's kept contact normal rows.
-#include "kernels.h"
+#include "reference_inline.h"
 #include "step.h"
 
 namespace karma::mdt {
@@ -37,10 +37,9 @@ void fillBodies(StepScratch &s, const Partition &part, BodySpaceProblem &p) {
 
 // J v* of one row.
 MeReal rowVelocityPredicted(const Row &row, const MdtConstraint *c) {
-  const platform::Kernels &kern = platform::ActiveKernels();
   MeReal jv = 0;
-  if (bodyIndex(c->body[0]) >= 0) jv += kern.rowPairEntry(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
-  if (bodyIndex(c->body[1]) >= 0) jv += kern.rowPairEntry(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
+  if (bodyIndex(c->body[0]) >= 0) jv += platform::reference::RowPairEntry(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
+  if (bodyIndex(c->body[1]) >= 0) jv += platform::reference::RowPairEntry(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
   return jv;
 }
 

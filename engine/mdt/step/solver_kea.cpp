@@ -4,7 +4,7 @@
 //
 // Assembly. Two rows interact when they share a body b, through
 //     A_ij += J_i,b . (M_b^-1 J_j,b^T)
-// (the platform kernels compute M^-1 J^T per row and side, and each share of
+// (reference_inline.h computes M^-1 J^T per row and side, and each share of
 // an entry). Per row, the columns are found by walking the rows of its (at
 // most two) bodies and stored in ascending order, diagonal always present;
 // the lower triangle is computed and mirrored, so A is exactly symmetric.
@@ -13,7 +13,6 @@
 #include <limits>
 
 #include "kea_lcp.h"
-#include "kernels.h"
 #include "reference_inline.h"
 #include "partition_solver.h"
 
@@ -47,7 +46,6 @@ void rowsByBody(const BodySpaceProblem &p, StepArena &arena, std::span<int> &sta
 
 // M^-1 J^T of every row, per side: 12 values a row (lin0 ang0 lin1 ang1).
 std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
-  const platform::Kernels &kern = platform::ActiveKernels();
   std::span<MeReal> mj = arena.filled<MeReal>((size_t)p.rowCount * 12, 0);
   for (int k = 0; k < p.rowCount; ++k) {
     const MeReal *J = &p.J[(size_t)k * 12];
@@ -57,7 +55,7 @@ std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
       const int b = bodies[side];
       if (b < 0) continue;
       const auto *inertia = reinterpret_cast<const MeReal(*)[3]>(&p.invInertia[(size_t)b * 9]);
-      kern.bodyMinvJt(p.invMass[(size_t)b], inertia, J + side * 6, J + side * 6 + 3, out + side * 6,
+      platform::reference::BodyMinvJt(p.invMass[(size_t)b], inertia, J + side * 6, J + side * 6 + 3, out + side * 6,
                       out + side * 6 + 3);
     }
   }
@@ -102,8 +100,8 @@ void layoutColumns(const BodySpaceProblem &p, std::span<const int> bodyRowStart,
 
 // A's values. Entry (i, j) is summed over the bodies the two rows share,
 //     A_ij = sum_b J_i,b . (M_b^-1 J_j,b^T)   (+ softness_i when j = i),
-// body 0 of row i first; `entry` is one body's share (the platform's
-// rowPairEntry). Only j <= i is computed: A is symmetric, and (i, j) is
+// body 0 of row i first; `entry` is one body's share (the reference
+// RowPairEntry). Only j <= i is computed: A is symmetric, and (i, j) is
 // copied to (j, i). Rows are visited in ascending order, so the entries
 // above row j's diagonal are reached in ascending column order: next[j]
 // walks them.
@@ -236,15 +234,9 @@ class KeaSolver final : public PartitionSolver {
     std::fill(lambda.begin(), lambda.end(), MeReal(0));
     if (p.rowCount == 0) return report;
     PartitionMemory &memory = memories_.take(p.identity);
-    // The reference backend's entry inline (the same bits, no indirect call
-    // per entry); any other backend through its table.
-    const platform::Kernels &kern = platform::ActiveKernels();
-    const Csr a = &kern == &platform::ReferenceKernels()
-                      ? assemble(p, arena, memory,
-                                 [](const MeReal *jl, const MeReal *ja, const MeReal *ml, const MeReal *ma) {
-                                   return platform::reference::RowPairEntry(jl, ja, ml, ma);
-                                 })
-                      : assemble(p, arena, memory, kern.rowPairEntry);
+    const Csr a = assemble(p, arena, memory, [](const MeReal *jl, const MeReal *ja, const MeReal *ml, const MeReal *ma) {
+      return platform::reference::RowPairEntry(jl, ja, ml, ma);
+    });
     kea::SparseLcpProblem prob;
     prob.n = p.rowCount;
     prob.rowStart = a.rowStart;

@@ -1,7 +1,7 @@
-// Tests of the platform kernels (engine/platform/kernels.h): the reference
-// backend against hand-computed values, and bit-identity with the MeMath
-// operations the step used before the kernels existed.
-#include "kernels.h"
+// Tests of the reference per-row arithmetic (reference_inline.h) the step's
+// assembly calls inline: against hand-computed values, and bit-identity with
+// the MeMath operations the step used before.
+#include "reference_inline.h"
 
 #include "MeMath.h"
 
@@ -10,17 +10,7 @@
 #include <cstring>
 #include <random>
 
-using karma::platform::ActiveKernels;
-using karma::platform::Kernels;
-using karma::platform::ReferenceKernels;
-
-TEST(PlatformKernels, ActiveIsTheReferenceBackend) {
-  const Kernels &k = ActiveKernels();
-  EXPECT_STREQ(k.name, "reference");
-  EXPECT_EQ(&k, &ReferenceKernels());
-  EXPECT_NE(k.bodyMinvJt, nullptr);
-  EXPECT_NE(k.rowPairEntry, nullptr);
-}
+namespace ref = karma::platform::reference;
 
 TEST(PlatformKernels, BodyMinvJtByHand) {
   // invMass 0.5; I^-1 = [[1, 2, 0], [0, 3, -1], [4, 0, 0.5]];
@@ -28,7 +18,7 @@ TEST(PlatformKernels, BodyMinvJtByHand) {
   const MeReal inv[3][3] = {{1, 2, 0}, {0, 3, -1}, {4, 0, MeReal(0.5)}};
   const MeReal jl[3] = {2, -4, 6}, ja[3] = {1, 2, 4};
   MeReal lin[3] = {9, 9, 9}, ang[3] = {9, 9, 9};
-  ActiveKernels().bodyMinvJt(MeReal(0.5), inv, jl, ja, lin, ang);
+  ref::BodyMinvJt(MeReal(0.5), inv, jl, ja, lin, ang);
   EXPECT_EQ(lin[0], 1);
   EXPECT_EQ(lin[1], -2);
   EXPECT_EQ(lin[2], 3);
@@ -41,7 +31,7 @@ TEST(PlatformKernels, BodyMinvJtOfAStaticBodyIsZero) {
   const MeReal inv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
   const MeReal jl[3] = {1, 2, 3}, ja[3] = {-1, 5, 7};
   MeReal lin[3], ang[3];
-  ActiveKernels().bodyMinvJt(0, inv, jl, ja, lin, ang);
+  ref::BodyMinvJt(0, inv, jl, ja, lin, ang);
   for (int k = 0; k < 3; ++k) {
     EXPECT_EQ(lin[k], 0);
     EXPECT_EQ(ang[k], 0);
@@ -52,19 +42,19 @@ TEST(PlatformKernels, RowPairEntryByHand) {
   // (1, 2, 3).(4, -5, 6) + (-1, 0, 2).(0.5, 7, 0.25) = (4 - 10 + 18) + (-0.5 + 0 + 0.5) = 12.
   const MeReal jl[3] = {1, 2, 3}, ja[3] = {-1, 0, 2};
   const MeReal lin[3] = {4, -5, 6}, ang[3] = {MeReal(0.5), 7, MeReal(0.25)};
-  EXPECT_EQ(ActiveKernels().rowPairEntry(jl, ja, lin, ang), 12);
+  EXPECT_EQ(ref::RowPairEntry(jl, ja, lin, ang), 12);
   // A unit point mass on a row along x: J M^-1 J^T = 1 / mass.
   const MeReal ex[3] = {1, 0, 0}, zero[3] = {0, 0, 0};
   const MeReal inv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
   MeReal ml[3], ma[3];
-  ActiveKernels().bodyMinvJt(MeReal(0.25), inv, ex, zero, ml, ma);
-  EXPECT_EQ(ActiveKernels().rowPairEntry(ex, zero, ml, ma), MeReal(0.25));
+  ref::BodyMinvJt(MeReal(0.25), inv, ex, zero, ml, ma);
+  EXPECT_EQ(ref::RowPairEntry(ex, zero, ml, ma), MeReal(0.25));
 }
 
 TEST(PlatformKernels, BitIdenticalToTheMeMathOperations) {
   // The step's determinism hash was taken with MeVector3MultiplyScalar,
-  // MeMatrix3MultiplyVector and MeVector3Dot; the kernels must reproduce
-  // them bit for bit.
+  // MeMatrix3MultiplyVector and MeVector3Dot; the reference must reproduce
+  // it bit for bit.
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> u(-10.0, 10.0);
   auto r = [&] { return static_cast<MeReal>(u(rng)); };
@@ -75,13 +65,13 @@ TEST(PlatformKernels, BitIdenticalToTheMeMathOperations) {
     const MeReal invMass = r();
     const MeVector3 jl = {r(), r(), r()}, ja = {r(), r(), r()};
     MeVector3 lin, ang, refLin, refAng;
-    ActiveKernels().bodyMinvJt(invMass, inv, jl, ja, lin, ang);
+    ref::BodyMinvJt(invMass, inv, jl, ja, lin, ang);
     MeVector3MultiplyScalar(refLin, jl, invMass);
     MeMatrix3MultiplyVector(refAng, inv, ja);
     EXPECT_EQ(std::memcmp(lin, refLin, sizeof lin), 0);
     EXPECT_EQ(std::memcmp(ang, refAng, sizeof ang), 0);
     const MeVector3 ki = {r(), r(), r()}, kj = {r(), r(), r()};
-    const MeReal got = ActiveKernels().rowPairEntry(ki, kj, lin, ang);
+    const MeReal got = ref::RowPairEntry(ki, kj, lin, ang);
     const MeReal want = MeVector3Dot(ki, lin) + MeVector3Dot(kj, ang);
     EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0);
   }

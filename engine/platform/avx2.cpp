@@ -1,0 +1,96 @@
+/* avx2.cpp: the AVX2 backend (kernels.h). The eight partial sums of a
+ * reduction are one 256-bit register of floats or two of doubles, term k in
+ * lane k mod 8, added in ascending k as the reference does; sparse rows
+ * load their x values with the AVX2 gather. The tail and the final
+ * combination are the reference's own code. Products and sums stay separate
+ * instructions (FMA would round once where the reference rounds twice), so
+ * every result is the reference's to the bit. */
+#include "backends.h"
+#include "reference_inline.h"
+
+#include <immintrin.h>
+
+#define KARMA_AVX2 __attribute__((target("avx2")))
+
+namespace karma::platform {
+namespace {
+
+/* The gathers start from zero under an all-true mask: the same loads as the
+ * unmasked form, without its undefined source register. */
+#if !KARMA_DOUBLE
+KARMA_AVX2 __m256 Gather(const float *x, __m256i at) {
+  return _mm256_mask_i32gather_ps(_mm256_setzero_ps(), x, at, _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
+                                  sizeof(float));
+}
+#else
+KARMA_AVX2 __m256d Gather(const double *x, __m128i at) {
+  return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), x, at, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)),
+                                  sizeof(double));
+}
+#endif
+
+KARMA_AVX2 MeReal Avx2Dot(const MeReal *a, const MeReal *b, int n) {
+  MeReal s[kLanes];
+  int k = 0;
+#if !KARMA_DOUBLE
+  __m256 acc = _mm256_setzero_ps();
+  for (; k + kLanes <= n; k += kLanes)
+    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(a + k), _mm256_loadu_ps(b + k)));
+  _mm256_storeu_ps(s, acc);
+#else
+  __m256d acc0 = _mm256_setzero_pd(), acc1 = _mm256_setzero_pd();
+  for (; k + kLanes <= n; k += kLanes) {
+    acc0 = _mm256_add_pd(acc0, _mm256_mul_pd(_mm256_loadu_pd(a + k), _mm256_loadu_pd(b + k)));
+    acc1 = _mm256_add_pd(acc1, _mm256_mul_pd(_mm256_loadu_pd(a + k + 4), _mm256_loadu_pd(b + k + 4)));
+  }
+  _mm256_storeu_pd(s, acc0);
+  _mm256_storeu_pd(s + 4, acc1);
+#endif
+  reference::AddTail(a, b, k, n, s);
+  return reference::LaneSum(s);
+}
+
+KARMA_AVX2 MeReal Avx2GatherDot(const MeReal *value, const int *index, const MeReal *x, int n) {
+  MeReal s[kLanes];
+  int k = 0;
+#if !KARMA_DOUBLE
+  __m256 acc = _mm256_setzero_ps();
+  for (; k + kLanes <= n; k += kLanes) {
+    const __m256i at = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(index + k));
+    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(value + k), Gather(x, at)));
+  }
+  _mm256_storeu_ps(s, acc);
+#else
+  __m256d acc0 = _mm256_setzero_pd(), acc1 = _mm256_setzero_pd();
+  for (; k + kLanes <= n; k += kLanes) {
+    const __m128i at0 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(index + k));
+    const __m128i at1 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(index + k + 4));
+    acc0 = _mm256_add_pd(acc0, _mm256_mul_pd(_mm256_loadu_pd(value + k), Gather(x, at0)));
+    acc1 = _mm256_add_pd(acc1, _mm256_mul_pd(_mm256_loadu_pd(value + k + 4), Gather(x, at1)));
+  }
+  _mm256_storeu_pd(s, acc0);
+  _mm256_storeu_pd(s + 4, acc1);
+#endif
+  reference::AddGatherTail(value, index, x, k, n, s);
+  return reference::LaneSum(s);
+}
+
+KARMA_AVX2 void Avx2SubtractScaled(MeReal alpha, const MeReal *x, MeReal *y, int n) {
+  int k = 0;
+#if !KARMA_DOUBLE
+  const __m256 a = _mm256_set1_ps(alpha);
+  for (; k + 8 <= n; k += 8)
+    _mm256_storeu_ps(y + k, _mm256_sub_ps(_mm256_loadu_ps(y + k), _mm256_mul_ps(a, _mm256_loadu_ps(x + k))));
+#else
+  const __m256d a = _mm256_set1_pd(alpha);
+  for (; k + 4 <= n; k += 4)
+    _mm256_storeu_pd(y + k, _mm256_sub_pd(_mm256_loadu_pd(y + k), _mm256_mul_pd(a, _mm256_loadu_pd(x + k))));
+#endif
+  for (; k < n; ++k) y[k] -= alpha * x[k];
+}
+
+}  // namespace
+
+const Kernels kAvx2Kernels = {"avx2", Avx2Dot, Avx2GatherDot, Avx2SubtractScaled};
+
+}  // namespace karma::platform
