@@ -7,27 +7,8 @@
 #include <cmath>
 
 namespace karma::kea::detail {
-namespace {
-
-/* sum_k a[k] b[k] in four interleaved partial sums (a fixed order, so the
- * result is the same run to run; the partial sums let the compiler keep
- * four multiply-adds in flight or in one vector register). */
-MeReal Dot(const MeReal *a, const MeReal *b, int count) {
-  MeReal s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-  int k = 0;
-  for (; k + 4 <= count; k += 4) {
-    s0 += a[k] * b[k];
-    s1 += a[k + 1] * b[k + 1];
-    s2 += a[k + 2] * b[k + 2];
-    s3 += a[k + 3] * b[k + 3];
-  }
-  for (; k < count; ++k) s0 += a[k] * b[k];
-  return (s0 + s1) + (s2 + s3);
-}
-
-}  // namespace
-
-bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value) {
+bool EnvelopeLdltFactor(const platform::Kernels &kernels, int m, std::span<const int> first, std::span<const int> start,
+                        std::span<MeReal> value) {
   for (int i = 0; i < m; ++i) {
     const int fi = first[static_cast<std::size_t>(i)];
     MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)]; /* rowI[j - fi] = entry (i, j) */
@@ -37,7 +18,7 @@ bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> 
       const MeReal *rowJ = value.data() + start[static_cast<std::size_t>(j)];
       const int k0 = std::max(fi, fj);
       const MeReal *ui = rowI + (k0 - fi), *lj = rowJ + (k0 - fj);
-      rowI[j - fi] -= Dot(ui, lj, j - k0);
+      rowI[j - fi] -= kernels.dot(ui, lj, j - k0);
     }
     /* l_ij = u_ij / d_j and d_i = a_ii - sum_j u_ij l_ij */
     const MeReal aii = rowI[i - fi];
@@ -55,15 +36,13 @@ bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> 
   return true;
 }
 
-void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start, std::span<const MeReal> value,
-                       std::span<MeReal> x) {
+void EnvelopeLdltSolve(const platform::Kernels &kernels, int m, std::span<const int> first, std::span<const int> start,
+                       std::span<const MeReal> value, std::span<MeReal> x) {
   /* L y = rhs, row by row. */
   for (int i = 0; i < m; ++i) {
     const int fi = first[static_cast<std::size_t>(i)];
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
-    MeReal s = x[static_cast<std::size_t>(i)];
-    for (int k = fi; k < i; ++k) s -= rowI[k - fi] * x[static_cast<std::size_t>(k)];
-    x[static_cast<std::size_t>(i)] = s;
+    x[static_cast<std::size_t>(i)] -= kernels.dot(rowI, x.data() + fi, i - fi);
   }
   /* D z = y */
   for (int i = 0; i < m; ++i)
@@ -73,8 +52,7 @@ void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> s
   for (int i = m - 1; i > 0; --i) {
     const int fi = first[static_cast<std::size_t>(i)];
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
-    const MeReal xi = x[static_cast<std::size_t>(i)];
-    for (int k = fi; k < i; ++k) x[static_cast<std::size_t>(k)] -= rowI[k - fi] * xi;
+    kernels.subtractScaled(x[static_cast<std::size_t>(i)], rowI, x.data() + fi, i - fi);
   }
 }
 
@@ -103,7 +81,7 @@ void EnvelopeSystem::layout() {
 
 void EnvelopeSystem::factor() {
   original.assign(value.begin(), value.begin() + static_cast<std::ptrdiff_t>(size()));
-  broken = !EnvelopeLdltFactor(m, first, start, value);
+  broken = !EnvelopeLdltFactor(*kernels, m, first, start, value);
   factored = true;
 }
 
@@ -111,7 +89,7 @@ void EnvelopeSystem::solve(std::span<const MeReal> rhs, std::span<MeReal> x) con
   const auto size = static_cast<std::size_t>(m);
   if (!broken) {
     std::copy(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(size), x.begin());
-    EnvelopeLdltSolve(m, first, start, value, x);
+    EnvelopeLdltSolve(*kernels, m, first, start, value, x);
     bool finite = true;
     for (std::size_t i = 0; i < size; ++i) finite = finite && std::isfinite(x[i]);
     if (finite) return;

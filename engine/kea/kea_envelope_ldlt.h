@@ -21,11 +21,16 @@
  * breakdown: the matrix is (numerically) semi-definite or indefinite, and
  * the caller falls back to a least-squares solve.
  *
+ * The inner products and updates run through a platform backend's kernels
+ * (engine/platform/kernels.h): their sums follow its fixed lane order, the
+ * same bits on every backend.
+ *
  * Nothing here allocates. */
 #ifndef KARMA_KEA_ENVELOPE_LDLT_H
 #define KARMA_KEA_ENVELOPE_LDLT_H
 
 #include "MePrecision.h"
+#include "kernels.h"
 
 #include <span>
 #include <vector>
@@ -39,12 +44,13 @@ inline constexpr MeReal kPivotFloor = 64 * ME_REAL_EPSILON;
 /* Factorises the m x m envelope matrix (first, start, value as above) in
  * place: value then holds L below the diagonal and D on it. Returns false
  * on breakdown (value is then partly overwritten). */
-bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value);
+bool EnvelopeLdltFactor(const platform::Kernels &kernels, int m, std::span<const int> first, std::span<const int> start,
+                        std::span<MeReal> value);
 
 /* Solves L D L^T x = rhs with a factor from EnvelopeLdltFactor; x holds rhs
  * on entry and the solution on return (m values). */
-void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start, std::span<const MeReal> value,
-                       std::span<MeReal> x);
+void EnvelopeLdltSolve(const platform::Kernels &kernels, int m, std::span<const int> first, std::span<const int> start,
+                       std::span<const MeReal> value, std::span<MeReal> x);
 
 /* A symmetric system solved through the envelope LDL^T, its arrays kept
  * from one solve to the next (they only grow). Use:
@@ -58,8 +64,9 @@ struct EnvelopeSystem {
   int m = 0;
   std::vector<int> first, start;
   std::vector<MeReal> value, original;
-  bool factored = false; /* factor() ran on the current matrix */
-  bool broken = false;   /* ... and broke down */
+  bool factored = false;                                            /* factor() ran on the current matrix */
+  bool broken = false;                                              /* ... and broke down */
+  const platform::Kernels *kernels = &platform::ReferenceKernels(); /* the backend of factor() and solve() */
 
   /* Capacity for matrices of up to `rows` rows and `entries` envelope
    * entries (then begin/layout/factor allocate nothing). */

@@ -29,6 +29,11 @@ struct RowView {
   std::span<const int> findex;
   std::span<const MeReal> mu;
 };
+/* The backend of a solve's array kernels (KeaOptions::kernels). */
+inline const platform::Kernels &KernelsOf(const KeaOptions &o) {
+  return o.kernels ? *o.kernels : platform::ActiveKernels();
+}
+
 inline RowView Rows(const LcpProblem &p) { return {p.n, p.b, p.lo, p.hi, p.findex, p.mu}; }
 inline RowView Rows(const SparseLcpProblem &p) { return {p.n, p.b, p.lo, p.hi, p.findex, p.mu}; }
 

@@ -115,6 +115,7 @@
 #define KARMA_KEA_LCP_H
 
 #include "MePrecision.h"
+#include "kernels.h"
 
 #include <span>
 #include <vector>
@@ -152,6 +153,10 @@ const char *KeaStatusName(KeaStatus status);
 
 struct KeaOptions {
   KeaMethod method = KeaMethod::ActiveSet;
+  /* The platform backend of the array kernels (engine/platform/kernels.h);
+   * nullptr: platform::ActiveKernels(). Every backend gives the same bits,
+   * so this chooses speed only. */
+  const platform::Kernels *kernels = nullptr;
   /* Active set: the number of linear solves (pivot steps) allowed over the
    * whole solve. PGS: the number of sweeps over all rows. 0 = the method's
    * default (active set: 10*n + 20, plus 20*n + 100 with friction rows; PGS: 50). */

@@ -77,16 +77,16 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
 
   s.best = r.lambda;
   s.w.resize(n);
-  MeReal bestResidual = detail::SparseMultiplyResidual(p, eps, r.lambda, s.w);
+  const platform::Kernels &kernels = detail::KernelsOf(o);
+  MeReal bestResidual = detail::SparseMultiplyResidual(kernels, p, eps, r.lambda, s.w);
   const bool friction = !p.findex.empty();
   int sweeps = 0;
   while (bestResidual > threshold && sweeps < cap) {
     for (std::size_t i = 0; i < n; ++i) {
       if (!(s.diag[i] > 0)) continue; /* a null row: nothing to gain from it */
-      MeReal wi = -p.b[i] + eps * r.lambda[i];
-      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k)
-        wi +=
-            p.val[static_cast<std::size_t>(k)] * r.lambda[static_cast<std::size_t>(p.col[static_cast<std::size_t>(k)])];
+      const int k0 = p.rowStart[i];
+      const MeReal wi = (-p.b[i] + eps * r.lambda[i]) + kernels.gatherDot(p.val.data() + k0, p.col.data() + k0,
+                                                                          r.lambda.data(), p.rowStart[i + 1] - k0);
       MeReal rowLo = s.lo[i], rowHi = s.hi[i];
       if (friction && p.findex[i] >= 0) {
         const MeReal limit = p.mu[i] * std::max(r.lambda[static_cast<std::size_t>(p.findex[i])], MeReal(0));
@@ -96,7 +96,7 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
       r.lambda[i] = std::clamp(r.lambda[i] - wi / s.diag[i], rowLo, rowHi);
     }
     ++sweeps;
-    const MeReal residual = detail::SparseMultiplyResidual(p, eps, r.lambda, s.w);
+    const MeReal residual = detail::SparseMultiplyResidual(kernels, p, eps, r.lambda, s.w);
     if (residual < bestResidual) {
       bestResidual = residual;
       s.best = r.lambda;
@@ -104,7 +104,7 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   }
 
   r.lambda = s.best;
-  r.residual = detail::SparseMultiplyResidual(p, eps, r.lambda, r.w);
+  r.residual = detail::SparseMultiplyResidual(kernels, p, eps, r.lambda, r.w);
   r.iterations = sweeps;
   if (r.residual <= threshold) {
     r.status = KeaStatus::Solved;
@@ -138,6 +138,7 @@ void RetryCold(const SparseLcpProblem &p, const KeaOptions &o, MeReal target, Ke
   }
   cold.warnings = false; /* the final status is reported below */
   KeaResult &retry = workspace.retry;
+  workspace.backend.useKernels(detail::KernelsOf(o));
   workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.factorMemory, target);
   detail::ActiveSetCore(detail::Rows(p), cold, "KeaSolveSparse", workspace.backend, workspace.activeSet, retry);
   retry.iterations += result.iterations;
@@ -199,6 +200,7 @@ void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace
   const bool warm = !o.warmStart.empty();
   KeaOptions first = o;
   first.warnings = o.warnings && !warm; /* a cycle here is retried, not reported */
+  workspace.backend.useKernels(detail::KernelsOf(o));
   workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.factorMemory, target);
   detail::ActiveSetCore(rows, first, kName, workspace.backend, workspace.activeSet, result);
   result.factorizations = workspace.backend.factorizations();

@@ -16,15 +16,19 @@ using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
 
 std::size_t U(int i) { return static_cast<std::size_t>(i); }
 
+/* sum_k A_ik x_k over the stored entries of CSR row i. */
+MeReal RowTimes(const platform::Kernels &kernels, const SparseLcpProblem &p, std::size_t i, const MeReal *x) {
+  const int k0 = p.rowStart[i];
+  return kernels.gatherDot(p.val.data() + k0, p.col.data() + k0, x, p.rowStart[i + 1] - k0);
+}
+
 }  // namespace
 
-MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<const MeReal> lambda,
-                              std::span<MeReal> w) {
+MeReal SparseMultiplyResidual(const platform::Kernels &kernels, const SparseLcpProblem &p, MeReal eps,
+                              std::span<const MeReal> lambda, std::span<MeReal> w) {
   const auto n = static_cast<std::size_t>(p.n);
   for (std::size_t i = 0; i < n; ++i) {
-    MeReal wi = -p.b[i] + eps * lambda[i];
-    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) wi += p.val[U(k)] * lambda[U(p.col[U(k)])];
-    w[i] = wi;
+    w[i] = (-p.b[i] + eps * lambda[i]) + RowTimes(kernels, p, i, lambda.data());
   }
   return ComplementarityResidual(Rows(p), lambda, w);
 }
@@ -114,9 +118,9 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
 }
 
 MeReal SparseBackend::residual(std::span<const MeReal> lambda, std::span<MeReal> w) {
-  if (w.size() == lambda.size()) return SparseMultiplyResidual(*p_, eps_, lambda, w);
+  if (w.size() == lambda.size()) return SparseMultiplyResidual(*kernels_, *p_, eps_, lambda, w);
   wScratch_.resize(lambda.size());
-  return SparseMultiplyResidual(*p_, eps_, lambda, wScratch_);
+  return SparseMultiplyResidual(*kernels_, *p_, eps_, lambda, wScratch_);
 }
 
 void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
@@ -182,19 +186,12 @@ MeReal SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const
   MeReal scale = 0;
   for (std::size_t a = 0; a < m; ++a) {
     const auto i = U(rows[a]);
-    MeReal v = eps_ * x[a];
+    y[a] = eps_ * x[a] + RowTimes(*kernels_, p, i, cgFull_.data());
     if (withScale) {
-      MeReal size = std::fabs(v);
-      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
-        const MeReal term = p.val[U(k)] * cgFull_[U(p.col[U(k)])];
-        v += term;
-        size += std::fabs(term);
-      }
+      MeReal size = std::fabs(eps_ * x[a]);
+      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) size += std::fabs(p.val[U(k)] * cgFull_[U(p.col[U(k)])]);
       scale = std::max(scale, size);
-    } else {
-      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) v += p.val[U(k)] * cgFull_[U(p.col[U(k)])];
     }
-    y[a] = v;
   }
   return scale;
 }
@@ -218,10 +215,8 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
     for (MeReal e : v) big = std::max(big, std::fabs(e));
     return big;
   };
-  auto dot = [m](const std::vector<MeReal> &a, const std::vector<MeReal> &b) {
-    MeReal sum = 0;
-    for (std::size_t k = 0; k < m; ++k) sum += a[k] * b[k];
-    return sum;
+  auto dot = [this, m](const std::vector<MeReal> &a, const std::vector<MeReal> &b) {
+    return kernels_->dot(a.data(), b.data(), static_cast<int>(m));
   };
   const MeReal rhsSize = largest(rhs_);
   MeReal accept = target_;

@@ -61,8 +61,8 @@ namespace karma::kea::detail {
 
 /* w = (A + eps I) lambda - b over the CSR rows (w: n values); returns the
  * contract's residual of lambda. */
-MeReal SparseMultiplyResidual(const SparseLcpProblem &p, MeReal eps, std::span<const MeReal> lambda,
-                              std::span<MeReal> w);
+MeReal SparseMultiplyResidual(const platform::Kernels &kernels, const SparseLcpProblem &p, MeReal eps,
+                              std::span<const MeReal> lambda, std::span<MeReal> w);
 
 class SparseBackend {
  public:
@@ -98,6 +98,12 @@ class SparseBackend {
    * `target` is the largest residual component a solve with it may leave. */
   void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0, KeaFactorMemory memory = KeaFactorMemory::Off,
              MeReal target = 0);
+
+  /* The backend of the array kernels from now on (default: the reference). */
+  void useKernels(const platform::Kernels &kernels) {
+    kernels_ = &kernels;
+    envelope_.kernels = &kernels;
+  }
 
   /* See kea_activeset_core.h. */
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w);
@@ -159,6 +165,7 @@ class SparseBackend {
   };
 
   const SparseLcpProblem *p_ = nullptr;
+  const platform::Kernels *kernels_ = &platform::ReferenceKernels();
   MeReal eps_ = 0;
   int envelopeRows_ = 0; /* KeaOptions::envelopeRows */
   /* The free rows ascending (naturalRows_), in elimination order
