@@ -18,7 +18,7 @@ bool EnvelopeLdltFactor(const platform::Kernels &kernels, int m, std::span<const
       const MeReal *rowJ = value.data() + start[static_cast<std::size_t>(j)];
       const int k0 = std::max(fi, fj);
       const MeReal *ui = rowI + (k0 - fi), *lj = rowJ + (k0 - fj);
-      rowI[j - fi] -= kernels.dot(ui, lj, j - k0);
+      rowI[j - fi] -= platform::Dot(kernels, ui, lj, j - k0);
     }
     /* l_ij = u_ij / d_j and d_i = a_ii - sum_j u_ij l_ij */
     const MeReal aii = rowI[i - fi];
@@ -42,7 +42,7 @@ void EnvelopeLdltSolve(const platform::Kernels &kernels, int m, std::span<const 
   for (int i = 0; i < m; ++i) {
     const int fi = first[static_cast<std::size_t>(i)];
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
-    x[static_cast<std::size_t>(i)] -= kernels.dot(rowI, x.data() + fi, i - fi);
+    x[static_cast<std::size_t>(i)] -= platform::Dot(kernels, rowI, x.data() + fi, i - fi);
   }
   /* D z = y */
   for (int i = 0; i < m; ++i)
@@ -52,7 +52,7 @@ void EnvelopeLdltSolve(const platform::Kernels &kernels, int m, std::span<const 
   for (int i = m - 1; i > 0; --i) {
     const int fi = first[static_cast<std::size_t>(i)];
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
-    kernels.subtractScaled(x[static_cast<std::size_t>(i)], rowI, x.data() + fi, i - fi);
+    platform::SubtractScaled(kernels, x[static_cast<std::size_t>(i)], rowI, x.data() + fi, i - fi);
   }
 }
 

@@ -19,7 +19,7 @@ std::size_t U(int i) { return static_cast<std::size_t>(i); }
 /* sum_k A_ik x_k over the stored entries of CSR row i. */
 MeReal RowTimes(const platform::Kernels &kernels, const SparseLcpProblem &p, std::size_t i, const MeReal *x) {
   const int k0 = p.rowStart[i];
-  return kernels.gatherDot(p.val.data() + k0, p.col.data() + k0, x, p.rowStart[i + 1] - k0);
+  return platform::GatherDot(kernels, p.val.data() + k0, p.col.data() + k0, x, p.rowStart[i + 1] - k0);
 }
 
 }  // namespace
@@ -216,7 +216,7 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
     return big;
   };
   auto dot = [this, m](const std::vector<MeReal> &a, const std::vector<MeReal> &b) {
-    return kernels_->dot(a.data(), b.data(), static_cast<int>(m));
+    return platform::Dot(*kernels_, a.data(), b.data(), static_cast<int>(m));
   };
   const MeReal rhsSize = largest(rhs_);
   MeReal accept = target_;

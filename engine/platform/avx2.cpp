@@ -1,7 +1,6 @@
 /* avx2.cpp: the AVX2 backend (kernels.h). The eight partial sums of a
  * reduction are one 256-bit register of floats or two of doubles, term k in
- * lane k mod 8, added in ascending k as the reference does; sparse rows
- * load their x values with the AVX2 gather. The tail and the final
+ * lane k mod 8, added in ascending k as the reference does. The tail and the final
  * combination are the reference's own code. Products and sums stay separate
  * instructions (FMA would round once where the reference rounds twice), so
  * every result is the reference's to the bit. */
@@ -15,17 +14,15 @@
 namespace karma::platform {
 namespace {
 
-/* The gathers start from zero under an all-true mask: the same loads as the
- * unmasked form, without its undefined source register. */
+/* x[at[0..]] lane by lane: on the machines measured (docs/PERFORMANCE.md)
+ * the hardware gather was slower than separate loads. */
 #if !KARMA_DOUBLE
-KARMA_AVX2 __m256 Gather(const float *x, __m256i at) {
-  return _mm256_mask_i32gather_ps(_mm256_setzero_ps(), x, at, _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
-                                  sizeof(float));
+KARMA_AVX2 __m256 Gather(const float *x, const int *at) {
+  return _mm256_set_ps(x[at[7]], x[at[6]], x[at[5]], x[at[4]], x[at[3]], x[at[2]], x[at[1]], x[at[0]]);
 }
 #else
-KARMA_AVX2 __m256d Gather(const double *x, __m128i at) {
-  return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), x, at, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)),
-                                  sizeof(double));
+KARMA_AVX2 __m256d Gather(const double *x, const int *at) {
+  return _mm256_set_pd(x[at[3]], x[at[2]], x[at[1]], x[at[0]]);
 }
 #endif
 
@@ -56,8 +53,7 @@ KARMA_AVX2 MeReal Avx2GatherDot(const MeReal *value, const int *index, const MeR
 #if !KARMA_DOUBLE
   __m256 acc = _mm256_setzero_ps();
   for (; k + kLanes <= n; k += kLanes) {
-    const __m256i at = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(index + k));
-    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(value + k), Gather(x, at)));
+    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(value + k), Gather(x, index + k)));
   }
   _mm256_storeu_ps(s, acc);
 #else
@@ -65,8 +61,8 @@ KARMA_AVX2 MeReal Avx2GatherDot(const MeReal *value, const int *index, const MeR
   for (; k + kLanes <= n; k += kLanes) {
     const __m128i at0 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(index + k));
     const __m128i at1 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(index + k + 4));
-    acc0 = _mm256_add_pd(acc0, _mm256_mul_pd(_mm256_loadu_pd(value + k), Gather(x, at0)));
-    acc1 = _mm256_add_pd(acc1, _mm256_mul_pd(_mm256_loadu_pd(value + k + 4), Gather(x, at1)));
+    acc0 = _mm256_add_pd(acc0, _mm256_mul_pd(_mm256_loadu_pd(value + k), Gather(x, index + k)));
+    acc1 = _mm256_add_pd(acc1, _mm256_mul_pd(_mm256_loadu_pd(value + k + 4), Gather(x, index + k + 4)));
   }
   _mm256_storeu_pd(s, acc0);
   _mm256_storeu_pd(s + 4, acc1);

@@ -32,25 +32,25 @@ KARMA_AVX512 MeReal Avx512Dot(const MeReal *a, const MeReal *b, int n) {
   return reference::LaneSum(s);
 }
 
+/* x[index[k]] lane by lane, as in avx2.cpp (no hardware gather). */
 KARMA_AVX512 MeReal Avx512GatherDot(const MeReal *value, const int *index, const MeReal *x, int n) {
   MeReal s[kLanes];
   int k = 0;
+  const int *i = index;
 #if !KARMA_DOUBLE
   __m256 acc = _mm256_setzero_ps();
   for (; k + kLanes <= n; k += kLanes) {
-    const __m256i at = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(index + k));
-    acc = _mm256_add_ps(
-        acc, _mm256_mul_ps(_mm256_loadu_ps(value + k),
-                           _mm256_mask_i32gather_ps(_mm256_setzero_ps(), x, at,
-                                                    _mm256_castsi256_ps(_mm256_set1_epi32(-1)), sizeof(float))));
+    const __m256 xk = _mm256_set_ps(x[i[k + 7]], x[i[k + 6]], x[i[k + 5]], x[i[k + 4]], x[i[k + 3]], x[i[k + 2]],
+                                    x[i[k + 1]], x[i[k]]);
+    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(value + k), xk));
   }
   _mm256_storeu_ps(s, acc);
 #else
   __m512d acc = _mm512_setzero_pd();
   for (; k + kLanes <= n; k += kLanes) {
-    const __m256i at = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(index + k));
-    acc = _mm512_add_pd(acc, _mm512_mul_pd(_mm512_loadu_pd(value + k),
-                                           _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xFF, at, x, sizeof(double))));
+    const __m512d xk = _mm512_set_pd(x[i[k + 7]], x[i[k + 6]], x[i[k + 5]], x[i[k + 4]], x[i[k + 3]], x[i[k + 2]],
+                                     x[i[k + 1]], x[i[k]]);
+    acc = _mm512_add_pd(acc, _mm512_mul_pd(_mm512_loadu_pd(value + k), xk));
   }
   _mm512_storeu_pd(s, acc);
 #endif

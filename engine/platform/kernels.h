@@ -17,8 +17,13 @@
  * sums: term k goes to partial sum k mod kLanes (each partial sum adds its
  * terms in ascending k, starting from 0), and the partial sums combine as
  *     ((s0 + s4) + (s2 + s6)) + ((s1 + s5) + (s3 + s7))
- * (LaneSum in reference_inline.h). That order is what an 8-lane vector
- * accumulator gives, so a SIMD backend keeps one accumulator per lane.
+ * (LaneSum in reference_inline.h, kLanes = 8). That order is what an
+ * 8-lane vector accumulator gives, so a SIMD backend keeps one accumulator
+ * per lane.
+ *
+ * Calls. Callers go through Dot, GatherDot and SubtractScaled below: an
+ * array shorter than kLanes has nothing to vectorise, and is done by the
+ * inline reference code (the same bits) instead of an indirect call.
  *
  * What is here: the array kernels of Kea's sparse path, which profiling
  * puts at the top of a large scene's step (the envelope factorisation and
@@ -30,13 +35,11 @@
 #define KARMA_PLATFORM_KERNELS_H
 
 #include "MePrecision.h"
+#include "reference_inline.h"
 
 #include <span>
 
 namespace karma::platform {
-
-/* Partial sums of every reduction (see above). */
-inline constexpr int kLanes = 8;
 
 struct Kernels {
   /* The backend's name: "reference", "sse4", "avx2" or "avx512". */
@@ -84,6 +87,20 @@ const Kernels &KernelsForRequest(const char *name, const Kernels &fallback);
 
 /* The backend the step uses when no world chose one: DefaultKernels(). */
 const Kernels &ActiveKernels();
+
+/* The kernels through `kernels`, arrays shorter than kLanes inline. */
+inline MeReal Dot(const Kernels &kernels, const MeReal *a, const MeReal *b, int n) {
+  return n < kLanes ? reference::Dot(a, b, n) : kernels.dot(a, b, n);
+}
+inline MeReal GatherDot(const Kernels &kernels, const MeReal *value, const int *index, const MeReal *x, int n) {
+  return n < kLanes ? reference::GatherDot(value, index, x, n) : kernels.gatherDot(value, index, x, n);
+}
+inline void SubtractScaled(const Kernels &kernels, MeReal alpha, const MeReal *x, MeReal *y, int n) {
+  if (n < kLanes)
+    reference::SubtractScaled(alpha, x, y, n);
+  else
+    kernels.subtractScaled(alpha, x, y, n);
+}
 
 }  // namespace karma::platform
 

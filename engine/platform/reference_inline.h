@@ -1,13 +1,20 @@
-/* reference_inline.h: the reference backend's arithmetic as inline
- * functions (not installed). reference.cpp builds its kernel table from
- * them, and a caller in a hot loop may call them directly when the active
- * backend is the reference one: the same operations in the same order, so
- * the same bits, without an indirect call per entry. */
+/* reference_inline.h: the reference arithmetic as inline functions (not
+ * installed): the per-row three-vector operations of the step's assembly,
+ * and the definition of the array kernels (kernels.h), from which
+ * reference.cpp builds its table. Every backend's kernel gives these
+ * functions' bits, so a caller may call them directly (as kernels.h's
+ * dispatch does for short arrays) without changing a result. */
 #ifndef KARMA_PLATFORM_REFERENCE_INLINE_H
 #define KARMA_PLATFORM_REFERENCE_INLINE_H
 
 #include "MePrecision.h"
-#include "kernels.h"
+
+namespace karma::platform {
+
+/* Partial sums of every reduction (kernels.h). */
+inline constexpr int kLanes = 8;
+
+}  // namespace karma::platform
 
 namespace karma::platform::reference {
 
@@ -34,25 +41,32 @@ inline MeReal LaneSum(const MeReal s[kLanes]) {
   return ((s[0] + s[4]) + (s[2] + s[6])) + ((s[1] + s[5]) + (s[3] + s[7]));
 }
 
-/* Adds the terms k = first .. n-1 of a reduction into their partial sums
- * (term k into s[k mod kLanes]): the tail a vector loop leaves. */
+/* Adds the terms k = first .. n-1 of a reduction, first a multiple of
+ * kLanes and n - first < kLanes, into their partial sums (term k into
+ * s[k - first] = s[k mod kLanes]): the tail a vector loop leaves. */
 inline void AddTail(const MeReal *a, const MeReal *b, int first, int n, MeReal s[kLanes]) {
-  for (int k = first; k < n; ++k) s[k % kLanes] += a[k] * b[k];
+  for (int l = 0; l < n - first; ++l) s[l] += a[first + l] * b[first + l];
+}
+
+inline void AddGatherTail(const MeReal *value, const int *index, const MeReal *x, int first, int n, MeReal s[kLanes]) {
+  for (int l = 0; l < n - first; ++l) s[l] += value[first + l] * x[index[first + l]];
 }
 
 inline MeReal Dot(const MeReal *a, const MeReal *b, int n) {
   MeReal s[kLanes] = {};
-  AddTail(a, b, 0, n, s);
+  int k = 0;
+  for (; k + kLanes <= n; k += kLanes)
+    for (int l = 0; l < kLanes; ++l) s[l] += a[k + l] * b[k + l];
+  AddTail(a, b, k, n, s);
   return LaneSum(s);
-}
-
-inline void AddGatherTail(const MeReal *value, const int *index, const MeReal *x, int first, int n, MeReal s[kLanes]) {
-  for (int k = first; k < n; ++k) s[k % kLanes] += value[k] * x[index[k]];
 }
 
 inline MeReal GatherDot(const MeReal *value, const int *index, const MeReal *x, int n) {
   MeReal s[kLanes] = {};
-  AddGatherTail(value, index, x, 0, n, s);
+  int k = 0;
+  for (; k + kLanes <= n; k += kLanes)
+    for (int l = 0; l < kLanes; ++l) s[l] += value[k + l] * x[index[k + l]];
+  AddGatherTail(value, index, x, k, n, s);
   return LaneSum(s);
 }
 
