@@ -173,25 +173,28 @@ const std::vector<int> &SparseBackend::factorOrder() const {
   return factor_ == Factor::Envelope ? naturalRows_ : factor_ == Factor::BandEnvelope ? bandRows_ : orderedRows_;
 }
 
-/* y = (A + eps I)_FF x, the free rows in the order `rows`; withScale: also
- * returns the largest component of |A_FF||x| (the scale of y's rounding). */
-MeReal SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y,
-                                   bool withScale) {
+/* y = (A + eps I)_FF x, the free rows in the order `rows`. Leaves x
+ * scattered in cgFull_ (for productScale). */
+void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y) {
   /* x scattered to all n rows (zero on the clamped ones): then every stored
    * entry multiplies without a test. */
   const SparseLcpProblem &p = *p_;
   const std::size_t m = rows.size();
   cgFull_.assign(static_cast<std::size_t>(p.n), MeReal(0));
   for (std::size_t a = 0; a < m; ++a) cgFull_[U(rows[a])] = x[a];
+  for (std::size_t a = 0; a < m; ++a) y[a] = eps_ * x[a] + RowTimes(*kernels_, p, U(rows[a]), cgFull_.data());
+}
+
+/* The largest component of (|A + eps I|)_FF |x| (the scale of the rounding
+ * of multiplyFree's y), right after multiplyFree(rows, x, ...) scattered x. */
+MeReal SparseBackend::productScale(const std::vector<int> &rows, std::span<const MeReal> x) const {
+  const SparseLcpProblem &p = *p_;
   MeReal scale = 0;
-  for (std::size_t a = 0; a < m; ++a) {
+  for (std::size_t a = 0; a < rows.size(); ++a) {
     const auto i = U(rows[a]);
-    y[a] = eps_ * x[a] + RowTimes(*kernels_, p, i, cgFull_.data());
-    if (withScale) {
-      MeReal size = std::fabs(eps_ * x[a]);
-      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) size += std::fabs(p.val[U(k)] * cgFull_[U(p.col[U(k)])]);
-      scale = std::max(scale, size);
-    }
+    MeReal size = std::fabs(eps_ * x[a]);
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) size += std::fabs(p.val[U(k)] * cgFull_[U(p.col[U(k)])]);
+    scale = std::max(scale, size);
   }
   return scale;
 }
@@ -220,12 +223,15 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
   };
   const MeReal rhsSize = largest(rhs_);
   MeReal accept = target_;
-  /* The true residual into cgR_; whether it is accepted. */
+  /* The true residual into cgR_; whether it is accepted. The rounding
+   * scale is only needed when the residual is above the target. */
   auto converged = [&]() {
-    const MeReal scale = multiplyFree(rows, x_, cgQ_, true) + rhsSize;
+    multiplyFree(rows, x_, cgQ_);
     for (std::size_t a = 0; a < m; ++a) cgR_[a] = rhs_[a] - cgQ_[a];
-    accept = std::max(target_, 4 * ME_REAL_EPSILON * scale);
-    return !(largest(cgR_) > accept);
+    const MeReal residual = largest(cgR_);
+    if (!(residual > target_)) return true;
+    accept = std::max(target_, 4 * ME_REAL_EPSILON * (productScale(rows, x_) + rhsSize));
+    return !(residual > accept);
   };
   ++staleSolves_;
   solveWithFactor(rhs_, x_);
@@ -238,7 +244,7 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
     while (budget > 0) {
       --budget;
       ++staleIterations_;
-      multiplyFree(rows, cgD_, cgQ_, false);
+      multiplyFree(rows, cgD_, cgQ_);
       const MeReal dq = dot(cgD_, cgQ_);
       if (!(dq > 0) || !(rz > 0)) return false;
       const MeReal alpha = rz / dq;

@@ -133,7 +133,8 @@ class SparseBackend {
   void keepSparsity(const SparseLcpProblem &p);
   void rememberSparsity();
   const std::vector<int> &factorOrder() const;
-  MeReal multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y, bool withScale);
+  void multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y);
+  MeReal productScale(const std::vector<int> &rows, std::span<const MeReal> x) const;
   bool solveStale(const std::vector<int> &rows);
   bool solveStaleAndLearn(const std::vector<int> &rows);
   void factorise(const std::vector<unsigned char> &set);
