@@ -44,9 +44,19 @@ MeReal defaultTolerance() { return sizeof(MeReal) == 4 ? (MeReal)1e-4 : (MeReal)
 // Contact normal blocks of at most this many rows are solved as one unit.
 constexpr int kMaxBlock = kSmallLcpMax;
 
+// What one row's update reads, in one record (the problem's arrays are
+// one per field): its Jacobian and M^-1 J^T per side (lin, ang), the offsets
+// of its bodies' dv (-1: static), d_i, and its bounds or its normal row.
+struct PgsRow {
+  MeReal J[12];
+  MeReal mj[12];
+  int dv0, dv1;
+  MeReal diag, softness, rhs, lo, hi, mu;
+  int normal;  // a friction row's normal row, else -1
+};
+
 struct Workspace {
-  std::span<MeReal> mj;                  // 12 per row: M^-1 J^T, per side (lin, ang)
-  std::span<MeReal> diag;                // d_i
+  std::span<PgsRow> row;                 // per row
   std::span<MeReal> dv;                  // 6 per body: linear, angular
   std::span<int> block;                  // per row: its normal block, or -1
   std::span<MeReal> blockA;              // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
@@ -90,7 +100,7 @@ void prepareBlocks(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
       for (int j = 0; j < k; ++j) {
         const int rj = p.normalRows[(size_t)(first + j)];
         const MeReal *J = &p.J[(size_t)ri * 12];
-        const MeReal *mj = &w.mj[(size_t)rj * 12];
+        const MeReal *mj = w.row[(size_t)rj].mj;
         MeReal a = i == j ? p.softness[(size_t)ri] : 0;
         if (p.body0[(size_t)ri] >= 0) a += dot6(J, mj);
         if (p.body1[(size_t)ri] >= 0) a += dot6(J + 6, mj + 6);
@@ -131,71 +141,84 @@ void prepareSchedules(const BodySpaceProblem &p, Workspace &w, StepArena &arena)
       w, rows, [&](int k) { return rows - 1 - k; }, w.backward, seen));
 }
 
+PgsRow gatherRow(const BodySpaceProblem &p, int i) {
+  PgsRow r{};
+  const size_t k = (size_t)i;
+  std::copy_n(&p.J[k * 12], 12, r.J);
+  r.dv0 = p.body0[k] >= 0 ? p.body0[k] * 6 : -1;
+  r.dv1 = p.body1[k] >= 0 ? p.body1[k] * 6 : -1;
+  MeReal d = p.softness[k];
+  const int bodies[2] = {p.body0[k], p.body1[k]};
+  for (int side = 0; side < 2; ++side) {
+    if (bodies[side] < 0) continue;
+    sideMinvJt(p, i, side, r.mj + side * 6);
+    d += dot6(r.J + side * 6, r.mj + side * 6);
+  }
+  r.diag = d;
+  r.softness = p.softness[k];
+  r.rhs = p.rhs[k];
+  r.lo = p.lo[k];
+  r.hi = p.hi[k];
+  r.mu = p.mu[k];
+  r.normal = p.friction[k];
+  return r;
+}
+
 Workspace prepare(const BodySpaceProblem &p, StepArena &arena) {
   Workspace w;
-  w.mj = arena.filled<MeReal>((size_t)p.rowCount * 12, 0);
-  w.diag = arena.take<MeReal>((size_t)p.rowCount);
+  w.row = arena.take<PgsRow>((size_t)p.rowCount);
   w.dv = arena.filled<MeReal>((size_t)p.bodyCount * 6, 0);
-  for (int i = 0; i < p.rowCount; ++i) {
-    const MeReal *J = &p.J[(size_t)i * 12];
-    MeReal *mj = &w.mj[(size_t)i * 12];
-    MeReal d = p.softness[(size_t)i];
-    const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
-    for (int side = 0; side < 2; ++side) {
-      if (bodies[side] < 0) continue;
-      sideMinvJt(p, i, side, mj + side * 6);
-      d += dot6(J + side * 6, mj + side * 6);
-    }
-    w.diag[(size_t)i] = d;
-  }
+  for (int i = 0; i < p.rowCount; ++i) w.row[(size_t)i] = gatherRow(p, i);
   prepareBlocks(p, w, arena);
   prepareSchedules(p, w, arena);
   return w;
 }
 
 // The row's bounds for the current impulses.
-void bounds(const BodySpaceProblem &p, std::span<const MeReal> lambda, int i, MeReal &lo, MeReal &hi) {
-  const int normal = p.friction[(size_t)i];
-  if (normal >= 0) {
-    hi = p.mu[(size_t)i] * std::max(lambda[(size_t)normal], MeReal(0));
+void bounds(const PgsRow &r, std::span<const MeReal> lambda, MeReal &lo, MeReal &hi) {
+  if (r.normal >= 0) {
+    hi = r.mu * std::max(lambda[(size_t)r.normal], MeReal(0));
     lo = -hi;
   } else {
-    lo = p.lo[(size_t)i];
-    hi = p.hi[(size_t)i];
+    lo = r.lo;
+    hi = r.hi;
   }
 }
 
 // J_i dv.
-MeReal rowVelocity(const BodySpaceProblem &p, const Workspace &w, int i) {
-  const MeReal *J = &p.J[(size_t)i * 12];
+MeReal rowVelocity(const PgsRow &r, const MeReal *dv) {
   MeReal v = 0;
-  if (p.body0[(size_t)i] >= 0) v += dot6(J, &w.dv[(size_t)p.body0[(size_t)i] * 6]);
-  if (p.body1[(size_t)i] >= 0) v += dot6(J + 6, &w.dv[(size_t)p.body1[(size_t)i] * 6]);
+  if (r.dv0 >= 0) v += dot6(r.J, dv + r.dv0);
+  if (r.dv1 >= 0) v += dot6(r.J + 6, dv + r.dv1);
   return v;
 }
 
+// w_i = J_i dv + softness_i lambda_i - rhs_i.
+MeReal rowSlack(const PgsRow &r, const MeReal *dv, MeReal lambda) {
+  return rowVelocity(r, dv) + r.softness * lambda - r.rhs;
+}
+
 // dv += M^-1 J_i^T * delta.
-void push(const BodySpaceProblem &p, Workspace &w, int i, MeReal delta) {
-  const MeReal *mj = &w.mj[(size_t)i * 12];
-  const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
-  for (int side = 0; side < 2; ++side) {
-    if (bodies[side] < 0) continue;
-    MeReal *dv = &w.dv[(size_t)bodies[side] * 6];
-    for (int k = 0; k < 6; ++k) dv[k] += mj[side * 6 + k] * delta;
-  }
+void push(const PgsRow &r, MeReal *dv, MeReal delta) {
+  if (r.dv0 >= 0)
+    for (int k = 0; k < 6; ++k) dv[r.dv0 + k] += r.mj[k] * delta;
+  if (r.dv1 >= 0)
+    for (int k = 0; k < 6; ++k) dv[r.dv1 + k] += r.mj[6 + k] * delta;
 }
 
 // One Gauss-Seidel update of row i; returns the velocity change it made.
-MeReal update(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int i) {
-  const MeReal d = w.diag[(size_t)i];
+MeReal update(Workspace &w, std::span<MeReal> lambda, int i) {
+  const PgsRow &r = w.row[(size_t)i];
+  const MeReal d = r.diag;
   if (!(d > 0)) return 0;  // a null row: nothing to gain from it
-  const MeReal slack = rowVelocity(p, w, i) + p.softness[(size_t)i] * lambda[(size_t)i] - p.rhs[(size_t)i];
+  MeReal *dv = w.dv.data();
+  const MeReal slack = rowSlack(r, dv, lambda[(size_t)i]);
   MeReal lo, hi;
-  bounds(p, lambda, i, lo, hi);
+  bounds(r, lambda, lo, hi);
   const MeReal old = lambda[(size_t)i];
   const MeReal next = std::clamp(old - slack / d, lo, hi);
   lambda[(size_t)i] = next;
-  push(p, w, i, next - old);
+  push(r, dv, next - old);
   return std::fabs(next - old) * d;
 }
 
@@ -215,7 +238,7 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
     lo[i] = p.lo[(size_t)rows[i]];
   }
   for (int i = 0; i < k; ++i) {
-    const MeReal slack = rowVelocity(p, w, rows[i]) + p.softness[(size_t)rows[i]] * lam[i] - p.rhs[(size_t)rows[i]];
+    const MeReal slack = rowSlack(w.row[(size_t)rows[i]], w.dv.data(), lam[i]);
     // w' = A x - q with q = A lambda - w.
     q[i] = -slack;
     for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
@@ -225,8 +248,8 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
   MeReal biggest = 0;
   for (int i = 0; i < k; ++i) {
     lambda[(size_t)rows[i]] = x[i];
-    push(p, w, rows[i], x[i] - lam[i]);
-    biggest = std::max(biggest, std::fabs(x[i] - lam[i]) * w.diag[(size_t)rows[i]]);
+    push(w.row[(size_t)rows[i]], w.dv.data(), x[i] - lam[i]);
+    biggest = std::max(biggest, std::fabs(x[i] - lam[i]) * w.row[(size_t)rows[i]].diag);
   }
   return biggest;
 }
@@ -234,13 +257,13 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
 // One visit of a sweep's schedule: row i alone (i >= 0) or normal block
 // -1 - i.
 MeReal visit(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int i) {
-  if (i >= 0) return update(p, w, lambda, i);
+  if (i >= 0) return update(w, lambda, i);
   const int b = -1 - i;
   const MeReal change = updateBlock(p, w, lambda, b);
   if (change >= 0) return change;
   MeReal biggest = 0;  // no consistent set (rounding): row by row
   const int first = p.normalBlock[(size_t)b], last = p.normalBlock[(size_t)b + 1];
-  for (int k = first; k < last; ++k) biggest = std::max(biggest, update(p, w, lambda, p.normalRows[(size_t)k]));
+  for (int k = first; k < last; ++k) biggest = std::max(biggest, update(w, lambda, p.normalRows[(size_t)k]));
   return biggest;
 }
 
@@ -248,9 +271,10 @@ MeReal visit(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, 
 MeReal residual(const BodySpaceProblem &p, const Workspace &w, std::span<const MeReal> lambda) {
   MeReal worst = 0;
   for (int i = 0; i < p.rowCount; ++i) {
-    const MeReal slack = rowVelocity(p, w, i) + p.softness[(size_t)i] * lambda[(size_t)i] - p.rhs[(size_t)i];
+    const PgsRow &r = w.row[(size_t)i];
+    const MeReal slack = rowSlack(r, w.dv.data(), lambda[(size_t)i]);
     MeReal lo, hi;
-    bounds(p, lambda, i, lo, hi);
+    bounds(r, lambda, lo, hi);
     const MeReal l = lambda[(size_t)i];
     worst = std::max(worst, std::fabs(l - std::clamp(l - slack, lo, hi)));
   }
@@ -273,10 +297,11 @@ class PgsSolver final : public PartitionSolver {
     // their normal impulse.
     for (int i = 0; i < p.rowCount; ++i) lambda[(size_t)i] = p.warm[(size_t)i];
     for (int i = 0; i < p.rowCount; ++i) {
+      const PgsRow &r = w.row[(size_t)i];
       MeReal lo, hi;
-      bounds(p, lambda, i, lo, hi);
+      bounds(r, lambda, lo, hi);
       lambda[(size_t)i] = std::clamp(lambda[(size_t)i], lo, hi);
-      push(p, w, i, lambda[(size_t)i]);
+      push(r, w.dv.data(), lambda[(size_t)i]);
     }
     const int sweeps = settings.maxIterations > 0 ? settings.maxIterations : kDefaultSweeps;
     int done = 0;
