@@ -17,6 +17,8 @@ void MEAPI MdtPlatformSetDefault(const char *name) {
 
 const char *MEAPI MdtPlatformGetDefaultName(void) { return platform::DefaultKernels().name; }
 
+const char *MEAPI MdtPlatformGetBestName(void) { return platform::BestSupported().name; }
+
 MeBool MEAPI MdtPlatformIsSupported(const char *name) {
   const platform::Kernels *k = platform::FindKernels(name);
   return k && platform::Supported(*k) ? TRUE : FALSE;

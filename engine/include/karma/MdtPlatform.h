@@ -27,6 +27,9 @@ ME_EXTERN_C_BEGIN
 MEPUBLIC void MEAPI MdtPlatformSetDefault(const char *name);
 /* The name of the process default backend. */
 MEPUBLIC const char *MEAPI MdtPlatformGetDefaultName(void);
+/* The name of the best backend this CPU supports (what an unusable name
+ * falls back to). */
+MEPUBLIC const char *MEAPI MdtPlatformGetBestName(void);
 /* Whether `name` is a backend and this CPU (and its operating system) can
  * run it; FALSE for NULL and unknown names. */
 MEPUBLIC MeBool MEAPI MdtPlatformIsSupported(const char *name);

@@ -62,8 +62,9 @@ TEST(MdtPlatform, ListsTheFourBackendsReferenceFirst) {
   EXPECT_TRUE(w.lastMentions("MdtPlatformName"));
 }
 
-TEST(MdtPlatform, TheDefaultIsSupported) {
+TEST(MdtPlatform, TheDefaultAndTheBestAreSupported) {
   EXPECT_TRUE(MdtPlatformIsSupported(MdtPlatformGetDefaultName())) << MdtPlatformGetDefaultName();
+  EXPECT_EQ(MdtPlatformGetBestName(), BestName());
 }
 
 TEST(MdtPlatform, AWorldStartsWithTheProcessDefaultAndKeepsItsOwn) {
