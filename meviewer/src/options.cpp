@@ -93,10 +93,16 @@ std::string PlatformNames() {
   return names;
 }
 
-/* -platform NAME, never eaten (the program may read it as well). */
+/* -platform NAME, never eaten (the program may read it as well); the last
+ * one given counts, as for the tutorials' record (tutorial_record.h). */
 bool ParsePlatform(MeCommandLineOptions *o, ViewerOptions &out, std::string &error) {
+  const char *name = nullptr;
   bool missing = false;
-  const char *name = Value(o, "-platform", false, missing);
+  for (int a = 1; a < o->m_argc; ++a)
+    if (!std::strcmp(o->m_argv[a], "-platform")) {
+      missing = a + 1 >= o->m_argc;
+      name = missing ? nullptr : o->m_argv[a + 1];
+    }
   if (missing) {
     error = "-platform needs a value: one of " + PlatformNames();
     return false;

@@ -148,13 +148,15 @@ TEST(Options, OutputDirectoryIsCreated) {
 }
 
 // -platform NAME: a known backend is read and left for the program; any
-// other name, or none, is refused like a malformed value.
+// other name, or none, is refused like a malformed value. As with the
+// tutorials' record, the last one given counts.
 TEST(Options, PlatformIsReadAndLeftInPlace) {
   const Parsed p = Parse("prog -platform reference -null");
   ASSERT_TRUE(p.ok) << p.error;
   EXPECT_EQ(p.options.platform, "reference");
   EXPECT_EQ(p.left, (std::vector<std::string>{"-platform", "reference"}));
   EXPECT_TRUE(Parse("prog -null").options.platform.empty());
+  EXPECT_EQ(Parse("prog -platform neon -null -platform sse4").options.platform, "sse4");  // the last counts
   Messages m;
   for (const char *line : {"prog -platform neon", "prog -platform"}) {
     const Parsed bad = Parse(line);
