@@ -26,7 +26,7 @@
  * SCRIPT, -keyfile FILE (scripted key presses and mouse moves).
  * -platform NAME makes that backend (MdtPlatform.h) the default of the
  * dynamics worlds created after the context; an unknown name fails the
- * context's creation. The option stays in the list for the program. */
+ * context's creation. The option stays in the list for the program.
  *
  * Functions taking an RRender* accept NULL with a warning and do nothing
  * (returning NULL / -1 / 1 where they return something). */
