@@ -2,7 +2,9 @@
 // scene (MdtWorldGetStepStats), one line per step, for reading a scene's
 // cost rather than timing it:
 //   build/bench/bench/anchor_scene_trace stack21 [FIRST [LAST]]
-// prints steps FIRST..LAST-1 (default: the whole run).
+// prints steps FIRST..LAST-1 (default: the whole run), after a comment line
+// naming the platform backend the scene's world steps on (KARMA_PLATFORM
+// chooses it).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -24,6 +26,7 @@ int main(int argc, char **argv) {
   }
   const int first = argc > 2 ? std::atoi(argv[2]) : 0;
   const int last = argc > 3 ? std::atoi(argv[3]) : scene->steps();
+  std::printf("# platform backend: %s\n", MdtWorldGetPlatformName(scene->world()));
   std::printf(
       "step partitions rows solves factorizations stale_solves friction_rounds unsolved cycles residual "
       "iterative_partitions\n");

@@ -211,8 +211,10 @@ int main(int argc, char **argv) {
   const std::vector<Outcome> out = RunInterleaved(scene, all, opt.steps, opt.reps);
 
   std::printf(
-      "%s, %d steps, medians of %d interleaved runs; dynamics per step: exact %.1f us, floor %.1f us (%.0f%%)\n\n",
-      scene.c_str(), opt.steps, opt.reps, exactDynamics, floorDynamics, 100 * floorDynamics / exactDynamics);
+      "%s, %d steps, medians of %d interleaved runs, platform backend %s (KARMA_PLATFORM chooses); dynamics per "
+      "step: exact %.1f us, floor %.1f us (%.0f%%)\n\n",
+      scene.c_str(), opt.steps, opt.reps, MdtPlatformGetDefaultName(), exactDynamics, floorDynamics,
+      100 * floorDynamics / exactDynamics);
   std::printf(
       "| setting | us per step (whole) | %s (mm) | dynamics us / budget | steps within 20%% | levels used | "
       "%s of the fixed settings that cost no more (mm) |\n",

@@ -18,9 +18,14 @@
 // bodies); give both the same step count (--pile-steps, --pile10k-steps)
 // for a like-for-like ratio.
 //
+// --platform NAME picks Karma's platform backend (MdtPlatform.h) for the
+// whole run, with the usual fallback and warning when the CPU lacks it; the
+// line above the table names the backend Karma's worlds ran on.
+//
 //   peer_bench [--scenes car,topple,...] [--engines karma,ode-step,...]
 //              [--reps N] [--steps N] [--pile-steps N] [--pile10k-steps N]
 //              [--ode-contacts N] [--iterative-rows N] [--max-iterations N]
+//              [--platform reference|sse4|avx2|avx512]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -29,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "MdtPlatform.h"
 #include "peer_engine.h"
 
 namespace {
@@ -52,9 +58,16 @@ struct Options {
   int pileSteps = kDefaultPileSteps;
   int pile10kSteps = kDefaultPile10kSteps;
   int odeContacts = 8;
-  int iterativeRows = -1;  // Karma's MdtWorldSetKeaIterativeRows; < 0: the engine's default
-  int maxIterations = 0;   // Karma's MdtWorldSetKeaMaxIterations (the iterative solver's sweeps); 0: default
+  int iterativeRows = -1;          // Karma's MdtWorldSetKeaIterativeRows; < 0: the engine's default
+  int maxIterations = 0;           // Karma's MdtWorldSetKeaMaxIterations (the iterative solver's sweeps); 0: default
+  const char *platform = nullptr;  // Karma's platform backend; nullptr: the process default
 };
+
+bool KnownPlatform(const char *name) {
+  for (int i = 0; i < MdtPlatformCount(); ++i)
+    if (!std::strcmp(MdtPlatformName(i), name)) return true;
+  return false;
+}
 
 std::vector<EngineKind> AllEngines() {
   std::vector<EngineKind> all = {{"karma", &karma::peers::MakeKarma}};
@@ -104,6 +117,8 @@ bool Parse(int argc, char **argv, Options &o) {
       o.iterativeRows = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--max-iterations") && hasValue && std::atoi(argv[i + 1]) > 0)
       o.maxIterations = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--platform") && hasValue && KnownPlatform(argv[i + 1]))
+      o.platform = argv[++i];
     else
       return false;
   }
@@ -258,6 +273,8 @@ int main(int argc, char **argv) {
         "[--steps N (each scene's own)] [--pile-steps N (%d)] [--pile10k-steps N (%d)] "
         "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact; default: the engine's, 300)]\n"
         "  [--max-iterations N (Karma's iteration cap: the iterative solver's sweeps; default: the engine's)]\n"
+        "  [--platform reference|sse4|avx2|avx512 (Karma's platform backend; default: KARMA_PLATFORM, else the "
+        "best the CPU runs)]\n"
         "  scenes: the five anchor scenes (the default) and pile10k (only when named)\n",
         argv[0], kDefaultPileSteps, kDefaultPile10kSteps);
     return 2;
@@ -267,6 +284,7 @@ int main(int argc, char **argv) {
 #endif
   karma::peers::SetKarmaIterativeRows(o.iterativeRows);
   karma::peers::SetKarmaMaxIterations(o.maxIterations);
+  if (o.platform) MdtPlatformSetDefault(o.platform);
   std::vector<EngineKind> engines;
   for (const EngineKind &e : AllEngines())
     if (Wanted(o.engines, e.name)) engines.push_back(e);
@@ -278,6 +296,8 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "peer_bench: no engine or no scene selected\n");
     return 2;
   }
+  // Every Karma world of the run is created after this and takes the default.
+  std::printf("Karma platform backend: %s\n\n", MdtPlatformGetDefaultName());
   std::printf(
       "| scene (steps) | engine | µs/step, median [range] | × ODE step | × ODE QuickStep | stable "
       "| scene figures | max speed (m/s) | penetration (mm) |\n");

@@ -69,6 +69,10 @@ struct MdtBody {
   struct MdtConstraint *firstConstraint;
 };
 
+namespace karma::platform {
+struct Kernels;
+}  // namespace karma::platform
+
 namespace karma::mdt {
 struct StepScratch;
 // Constraint pools a world may have: the first and up to this many grown
@@ -110,6 +114,9 @@ struct MdtWorldPrivate {
   int debugDrawOptions;                // MdtWorldSetDebugDrawOptions, stored only
   MdtAliveWindowMode aliveWindowMode;  // how the alive window counts (sleep.cpp)
   MeBool forcesDoNotWake;              // MdtWorldSetWakeByForce(world, 0): the FAQ's reading
+  // The platform backend the step runs on (MdtWorldSetPlatform): never
+  // NULL, always one the CPU supports; the process default at creation.
+  const karma::platform::Kernels *kernels;
 };
 
 namespace karma::mdt {

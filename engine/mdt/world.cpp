@@ -7,6 +7,7 @@
 #include "MeMemory.h"
 #include "MeMessage.h"
 #include "active_sets.h"
+#include "kernels.h"
 #include "step.h"
 
 using namespace karma::mdt;
@@ -90,6 +91,7 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
   p->maxConstraints = maxConstraints;
   p->lengthScale = lengthScale;
   p->massScale = massScale;
+  p->kernels = &karma::platform::DefaultKernels();
   w->priv = p;
   setDefaultParams(w->params, lengthScale, massScale);
   rememberCheckedParams(w);
@@ -136,6 +138,7 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   world->priv->lastStepSize = stepSize;
   StepScratch &s = *world->priv->scratch;
   s.stats = MdtWorldStepStats{};
+  s.stats.platform = world->priv->kernels->name;
   s.arena.reset();
   const StepClock clock(s.budget);
   wakeDrivenBodies(world);
@@ -171,6 +174,7 @@ MeReal MEAPI MdtWorldGetLastStepSize(const MdtWorldID world) {
 void MEAPI MdtWorldGetStepStats(const MdtWorldID world, MdtWorldStepStats *stats) {
   ME_REQUIRE_ARG(world != nullptr && stats != nullptr, "MdtWorldGetStepStats", "NULL argument");
   *stats = world->priv->scratch->stats;
+  if (!stats->platform) stats->platform = world->priv->kernels->name;  // no step yet
 }
 
 int MEAPI MdtWorldGetPartitionCount(const MdtWorldID world) {

@@ -106,6 +106,9 @@ void MEAPI readWorld(void *owner, MeDiagnosticFigures *figures) {
   jointsAndContacts(world, *figures);
   figures->energyDrift = (MeReal)energyDrift(world);
   figures->residual = world->priv->scratch->stats.keaResidual;
+  MdtWorldStepStats stats;
+  MdtWorldGetStepStats(world, &stats);
+  figures->platform = stats.platform;
 }
 
 }  // namespace

@@ -74,11 +74,18 @@ const Kernels &BestSupported();
 /* The reference scalar backend. */
 const Kernels &ReferenceKernels();
 
-/* The backend a new world starts with: the one named by the environment
- * variable KARMA_PLATFORM when it is set, known and supported; else the
- * best supported one. An unknown or unsupported name gives one warning
- * (MeWarning) per process, naming the backend used instead. Read once. */
+/* The process default, the backend a new world starts with. Until
+ * SetDefaultKernels changes it: the one named by the environment variable
+ * KARMA_PLATFORM when it is set, known and supported; else the best
+ * supported one. The variable is read once, at the first call of either
+ * function; an unknown or unsupported name then gives one warning
+ * (MeWarning), naming the backend used instead. */
 const Kernels &DefaultKernels();
+
+/* Makes `kernels` the process default for worlds created from now on
+ * (worlds already made keep theirs). The caller checks Supported first.
+ * Safe to call while other threads read the default. */
+void SetDefaultKernels(const Kernels &kernels);
 
 /* The backend for a request by name: the named one when known and
  * supported; else `fallback` (typically the best supported one), with a

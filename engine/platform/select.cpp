@@ -4,6 +4,7 @@
 #include "backends.h"
 
 #include <array>
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 
@@ -65,10 +66,18 @@ const Kernels &KernelsForRequest(const char *name, const Kernels &fallback) {
   return *FindKernels(name);
 }
 
-const Kernels &DefaultKernels() {
-  static const Kernels &chosen = ChooseDefault();
-  return chosen;
+/* The process default: chosen from KARMA_PLATFORM the first time it is
+ * needed (a function-local static, so the choice runs once even when two
+ * threads ask first), replaced by SetDefaultKernels. Acquire/release pairs
+ * the store of a table pointer with the loads of its entries. */
+std::atomic<const Kernels *> &DefaultSlot() {
+  static std::atomic<const Kernels *> slot{&ChooseDefault()};
+  return slot;
 }
+
+const Kernels &DefaultKernels() { return *DefaultSlot().load(std::memory_order_acquire); }
+
+void SetDefaultKernels(const Kernels &kernels) { DefaultSlot().store(&kernels, std::memory_order_release); }
 
 const Kernels &ActiveKernels() { return DefaultKernels(); }
 

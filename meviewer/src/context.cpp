@@ -141,6 +141,7 @@ RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLine
     std::exit(0);
   }
   ReportUnknownOptions(options);
+  ApplyPlatformOption(opts.platform);
 
   std::vector<KeyEvent> script;
   if (!ReadKeyScript(opts, script, error)) {

@@ -7,6 +7,8 @@
  * message that names the option. */
 #include "viewer_internal.h"
 
+#include "MdtPlatform.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -26,7 +28,8 @@ const char *const kKnownOptions[] = {"-gl",      "-d3d",   "-null",   "-bench", 
                                      "-out",     "-every", "-bmp",    "-size",   "-help",       "-keys",
                                      "-keyfile", "-video", "-window", "-record", "-screenshot", "-accuracy"};
 /* Options the project's own programs read (golden runs pass them to every
- * program), never reported as unknown. */
+ * program), never reported as unknown. The viewer reads -platform too, but
+ * leaves it in place for the program. */
 const char *const kProgramOptions[] = {"-platform", "-trajectory"};
 
 bool ParseLong(const char *text, long lo, long hi, long &out) {
@@ -78,6 +81,41 @@ bool Flag(MeCommandLineOptions *o, const char *name, bool eat) {
   return any;
 }
 
+bool KnownPlatform(const char *name) {
+  for (int i = 0; i < MdtPlatformCount(); ++i)
+    if (!std::strcmp(MdtPlatformName(i), name)) return true;
+  return false;
+}
+
+std::string PlatformNames() {
+  std::string names;
+  for (int i = 0; i < MdtPlatformCount(); ++i) names += std::string(i ? ", " : "") + MdtPlatformName(i);
+  return names;
+}
+
+/* -platform NAME, never eaten (the program may read it as well); the last
+ * one given counts, as for the tutorials' record (tutorial_record.h). */
+bool ParsePlatform(MeCommandLineOptions *o, ViewerOptions &out, std::string &error) {
+  const char *name = nullptr;
+  bool missing = false;
+  for (int a = 1; a < o->m_argc; ++a)
+    if (!std::strcmp(o->m_argv[a], "-platform")) {
+      missing = a + 1 >= o->m_argc;
+      name = missing ? nullptr : o->m_argv[a + 1];
+    }
+  if (missing) {
+    error = "-platform needs a value: one of " + PlatformNames();
+    return false;
+  }
+  if (!name) return true;
+  if (!KnownPlatform(name)) {
+    error = std::string("bad value '") + name + "' for -platform: want one of " + PlatformNames();
+    return false;
+  }
+  out.platform = name;
+  return true;
+}
+
 /* Reads one options list into `out`; values present override what is there. */
 bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string &error) {
   if (!o) return true;
@@ -103,6 +141,7 @@ bool ParseOne(MeCommandLineOptions *o, bool eat, ViewerOptions &out, std::string
   if (Flag(o, "-bmp", eat)) out.bmp = true;
   if (Flag(o, "-accuracy", eat)) out.accuracy = true;
   if (Flag(o, "-help", eat) || Flag(o, "--help", eat)) out.help = true;
+  if (!ParsePlatform(o, out, error)) return false;
 
   struct ValueOption {
     const char *name;
@@ -203,6 +242,9 @@ const char *HelpText() {
          "  -record FILE   with a window, write the keys and mouse moves as a key script\n"
          "                 that replays the session (e.g. offscreen with -keyfile FILE)\n"
          "  -screenshot F  with a window, save it as the display shows it at exit (PNG)\n"
+         "  -platform NAME the dynamics' platform backend (reference, sse4, avx2,\n"
+         "                 avx512) for worlds created from now on; one this CPU\n"
+         "                 cannot run gives a warning and the best it can\n"
          "  -help          print this list and exit\n"
          "Textures are found as NAME.bmp in: the working directory, $KARMA_DATA_DIR,\n"
          "the program's directory and its data/ and ../share/karma/ folders, the\n"
@@ -222,6 +264,12 @@ bool ParseViewerOptions(MeCommandLineOptions *options, MeCommandLineOptions *ove
   if (!ParseOne(options, eat, out, error) || !ParseOne(overrides, eat, out, error)) return false;
   if (!out.backendGiven && out.frames < 0 && DisplayPresent()) out.backend = BackendKind::Window;
   return true;
+}
+
+void ApplyPlatformOption(const std::string &name) {
+  if (name.empty()) return;
+  const char *resolved = MdtPlatformIsSupported(name.c_str()) ? name.c_str() : MdtPlatformGetBestName();
+  if (std::strcmp(MdtPlatformGetDefaultName(), resolved) != 0) MdtPlatformSetDefault(name.c_str());
 }
 
 void ReportUnknownOptions(const MeCommandLineOptions *options) {

@@ -4,12 +4,16 @@
  * minimum, maximum and standard deviation, and the tick's mean.
  * -profile: one row per loop phase (input, tick, render, output) with mean
  * and maximum milliseconds and the phase's share of the total; then any
- * MeProfile sections the program timed itself (collision, dynamics, ...). */
+ * MeProfile sections the program timed itself (collision, dynamics, ...);
+ * and the platform backend the dynamics ran on. */
 #include "viewer_internal.h"
+
+#include "MdtPlatform.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace karma::viewer {
 namespace {
@@ -36,6 +40,21 @@ Summary Summarise(std::vector<double> v) {
 
 }  // namespace
 
+std::string PlatformReport() {
+  std::vector<std::string> seen;
+  for (int i = 0; i < MeDiagnosticSourceCount(); ++i) {
+    MeDiagnosticFigures d;
+    if (MeDiagnosticSourceRead(i, &d) && d.platform &&
+        std::find(seen.begin(), seen.end(), std::string(d.platform)) == seen.end())
+      seen.emplace_back(d.platform);
+  }
+  if (seen.empty())
+    return std::string(MdtPlatformGetDefaultName()) + " (the process default: no dynamics world to ask)";
+  std::string text;
+  for (std::size_t i = 0; i < seen.size(); ++i) text += (i ? (i + 1 == seen.size() ? " and " : ", ") : "") + seen[i];
+  return text;
+}
+
 void PrintBenchReport(const FrameTimes &t, std::FILE *f) {
   const Summary total = Summarise(t.total), tick = Summarise(t.tick);
   std::fprintf(f, "MeViewer -bench: %zu frames\n", t.total.size());
@@ -49,6 +68,7 @@ void PrintBenchReport(const FrameTimes &t, std::FILE *f) {
 
 void PrintProfileReport(const FrameTimes &t, std::FILE *f) {
   std::fprintf(f, "MeViewer -profile: %zu frames\n", t.total.size());
+  std::fprintf(f, "  platform backend: %s\n", PlatformReport().c_str());
   if (t.total.empty()) return;
   const Summary total = Summarise(t.total);
   std::fprintf(f, "  %-10s %12s %12s %8s\n", "phase", "mean ms", "max ms", "share");

@@ -35,6 +35,7 @@ struct ViewerOptions {
   std::string record;     /* -record FILE: the window's live input as a key script */
   std::string screenshot; /* -screenshot FILE: the window as the display shows it, at exit */
   bool accuracy = false;  /* -accuracy: the accuracy overlay */
+  std::string platform;   /* -platform NAME: a known backend; empty: not given */
 };
 /* True when a display is there to open windows on ($DISPLAY not empty). */
 bool DisplayPresent();
@@ -49,6 +50,15 @@ bool ParseViewerOptions(MeCommandLineOptions *options, MeCommandLineOptions *ove
 /* Warns about arguments left in `options` that look like misspelt viewer
  * options, and notes other unknown ones. */
 void ReportUnknownOptions(const MeCommandLineOptions *options);
+/* -platform NAME (a known backend): makes it the process default of the
+ * dynamics worlds created from now on (MdtPlatform.h), or the best
+ * supported one, with a warning, when the CPU cannot run it. Nothing is
+ * done, or warned, when the default already is what the name resolves to. */
+void ApplyPlatformOption(const std::string &name);
+/* The backends the program's dynamics worlds ran on, read from the
+ * diagnostic sources ("avx2", "reference and avx2"); without any source
+ * the process default, so marked. */
+std::string PlatformReport();
 
 /* An RGB(A) image in memory, rows from the top. */
 struct Image {

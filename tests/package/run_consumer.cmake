@@ -37,7 +37,7 @@ set(compilers -DCMAKE_C_COMPILER=${C_COMPILER} -DCMAKE_CXX_COMPILER=${CXX_COMPIL
 
 # 1. Install into the scratch prefix.
 run(${CMAKE_COMMAND} --install "${KARMA_BINARY_DIR}" --prefix "${prefix}")
-foreach(f include/karma/Mdt.h include/karma/MeConfig.h include/karma/MePrecision.h
+foreach(f include/karma/Mdt.h include/karma/MdtPlatform.h include/karma/MeConfig.h include/karma/MePrecision.h
           lib/cmake/Karma/KarmaGoldenTest.cmake lib/cmake/Karma/run_golden.cmake bin/karma-golden)
   if(NOT EXISTS "${prefix}/${f}")
     message(FATAL_ERROR "install tree lacks ${f}")

@@ -30,6 +30,12 @@ struct TutorialRecord {
   char step[64] = {};
   char sampling[64] = {};
   const char *path = nullptr;
+  // The backend -platform asked for, resolved to one the CPU runs; empty
+  // without the option.
+  char platform[32] = {};
+  // The backend the recorded bodies' world steps on (the trajectory's
+  // "backend" field), known at Start.
+  char backend[32] = {};
 };
 
 namespace {
@@ -41,6 +47,41 @@ const char *OptionValue(int argc, char **argv, const char *name) {
   for (int i = 1; i + 1 < argc; ++i)
     if (!std::strcmp(argv[i], name)) value = argv[i + 1];
   return value;
+}
+
+bool KnownPlatform(const char *name) {
+  for (int i = 0; i < MdtPlatformCount(); ++i)
+    if (!std::strcmp(MdtPlatformName(i), name)) return true;
+  return false;
+}
+
+// -platform NAME: an unknown name ends the program (status 2); a backend the
+// CPU cannot run gives a warning and the best one. The process default is
+// set so that worlds created from now on use it. MeViewer, whose context
+// the programs create first, may have set it already: then nothing is done
+// (and nothing is warned twice).
+void ApplyPlatformOption(const char *program, const char *name, char (&resolvedOut)[32]) {
+  if (!KnownPlatform(name)) {
+    std::fprintf(stderr, "%s: no platform backend '%s' (available:", program, name);
+    for (int i = 0; i < MdtPlatformCount(); ++i) std::fprintf(stderr, " %s", MdtPlatformName(i));
+    std::fprintf(stderr, ")\n");
+    std::exit(2);
+  }
+  const char *resolved = MdtPlatformIsSupported(name) ? name : MdtPlatformGetBestName();
+  if (std::strcmp(MdtPlatformGetDefaultName(), resolved) != 0) MdtPlatformSetDefault(name);
+  std::snprintf(resolvedOut, sizeof resolvedOut, "%s", resolved);
+}
+
+// At Start: the recorded bodies' worlds made before -platform was read
+// are switched to it; the backend recorded is their world's.
+void SettlePlatform(TutorialRecord *rec) {
+  MdtWorldID world = rec->bodies.empty() ? nullptr : MdtBodyGetWorld(rec->bodies.front());
+  if (rec->platform[0])
+    for (MdtBodyID b : rec->bodies)
+      if (std::strcmp(MdtWorldGetPlatformName(MdtBodyGetWorld(b)), rec->platform) != 0)
+        MdtWorldSetPlatform(MdtBodyGetWorld(b), rec->platform);
+  const char *name = world ? MdtWorldGetPlatformName(world) : MdtPlatformGetDefaultName();
+  std::snprintf(rec->backend, sizeof rec->backend, "%s", name);
 }
 
 void Capture(const TutorialRecord *rec, std::vector<BodyState> &out) {
@@ -70,6 +111,7 @@ void Finish() {
     if (rec->lastWritten >= 0 && rec->lastWritten != rec->steps) WriteFrame(rec, rec->latest);
     char hash[KARMA_GOLDEN_HASH_TEXT_SIZE];
     KarmaGoldenFormatHash(KarmaTrajectoryWriterHash(rec->writer), hash);
+    std::printf("platform backend: %s\n", rec->backend);
     std::printf("state hash: %s\n", hash);
     std::fflush(stdout);
     if (const char *error = KarmaTrajectoryWriterError(rec->writer))
@@ -89,13 +131,11 @@ TutorialRecord *TutorialRecordCreate(int argc, char **argv, const char *program,
     std::fprintf(stderr, "%s: a tutorial record already exists\n", program);
     return nullptr;
   }
-  const char *platform = OptionValue(argc, argv, "-platform");
-  if (platform && std::strcmp(platform, "reference") != 0) {
-    std::fprintf(stderr, "%s: no platform backend '%s' (available: reference)\n", program, platform);
-    std::exit(2);
-  }
+  char platform[32] = {};
+  if (const char *name = OptionValue(argc, argv, "-platform")) ApplyPlatformOption(program, name, platform);
   auto *rec = new (std::nothrow) TutorialRecord;
   if (!rec) return nullptr;
+  std::snprintf(rec->platform, sizeof rec->platform, "%s", platform);
   std::snprintf(rec->program, sizeof rec->program, "%s", program);
   std::snprintf(rec->step, sizeof rec->step, "%s", step ? step : "main");
   rec->every = every < 1 ? 1 : every;
@@ -118,7 +158,8 @@ void TutorialRecordAddBody(TutorialRecord *rec, MdtBodyID body) {
 
 void TutorialRecordStart(TutorialRecord *rec) {
   if (!rec || rec->lastWritten >= 0) return;
-  KarmaTrajectoryInfo info = {rec->program,  rec->step,     "reference",
+  SettlePlatform(rec);
+  KarmaTrajectoryInfo info = {rec->program,  rec->step,     rec->backend,
                               rec->sampling, rec->timeStep, (int)rec->bodies.size()};
   rec->writer = KarmaTrajectoryWriterCreate(rec->path, &info);
   if (rec->writer && KarmaTrajectoryWriterError(rec->writer))

@@ -22,8 +22,14 @@
  *
  * Options read (and left in argv for MeViewer, which ignores them):
  *   -trajectory FILE   write the trajectory there
- *   -platform NAME     the platform backend; only "reference" exists, any
- *                      other name prints an error and exits with status 2
+ *   -platform NAME     the platform backend (MdtPlatform.h): the process
+ *                      default from TutorialRecordCreate on, and, at
+ *                      TutorialRecordStart, the backend of the recorded
+ *                      bodies' world if it was made earlier. A backend the
+ *                      CPU cannot run gives a warning and the best one; an
+ *                      unknown name prints an error and exits with status 2.
+ * The trajectory's "backend" field and the line "platform backend: NAME"
+ * printed before the hash name the backend the recorded world stepped on.
  * Only one record may exist at a time. */
 #ifndef KARMA_TUTORIAL_RECORD_H
 #define KARMA_TUTORIAL_RECORD_H

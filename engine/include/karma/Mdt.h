@@ -4,6 +4,7 @@
 #define KARMA_MDT_H
 #include "MeGlobals.h"
 #include "MdtWorld.h"
+#include "MdtPlatform.h"
 #include "MdtBody.h"
 #include "MdtConstraint.h"
 #include "MdtLimit.h"

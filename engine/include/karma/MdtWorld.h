@@ -92,6 +92,8 @@ typedef struct MdtWorldStepStats {
   int budgetSweeps;        /* fewest iterative sweeps the budget gave, 0 if none */
   MeReal budgetPredicted;  /* step budget: predicted solve time (microseconds) */
   MeReal budgetMeasured;   /* step budget: measured step time (microseconds) */
+  const char *platform;    /* the platform backend the step ran on (before
+                              the first step: the world's current one) */
 } MdtWorldStepStats;
 
 /* The world's private state (body pool, step order, counters). */
@@ -134,6 +136,16 @@ MEPUBLIC MeReal MEAPI MdtWorldGetGamma(const MdtWorldID world);
 
 /* Statistics of the last step. */
 MEPUBLIC void MEAPI MdtWorldGetStepStats(const MdtWorldID world, MdtWorldStepStats *stats);
+
+/* The platform backend of the world's steps (MdtPlatform.h lists them): a
+ * world starts with the process default and keeps it until this is called.
+ * Every backend gives the same results to the bit, so switching changes
+ * speed only. An unknown name, NULL, or a backend this CPU cannot run gives
+ * a warning and the best supported backend. An extension. */
+MEPUBLIC void MEAPI MdtWorldSetPlatform(const MdtWorldID world, const char *name);
+/* The name of the world's backend ("reference", "sse4", "avx2", "avx512");
+ * NULL, with a warning, for a NULL world. */
+MEPUBLIC const char *MEAPI MdtWorldGetPlatformName(const MdtWorldID world);
 /* The world's accuracy figures now (MeDiagnostics.h: largest point-joint
  * gap, deepest contact penetration, energy drift since the first read,
  * last step's solver residual). Every world is also listed as a diagnostic

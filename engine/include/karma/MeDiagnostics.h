@@ -13,6 +13,9 @@
  *                its value when first read (a body first seen later joins
  *                at its energy then), J
  *   residual     the exact solver's largest residual in the last step
+ *   platform     the name of the platform backend the source's last step
+ *                ran on (MdtPlatform.h), or NULL for a source without one;
+ *                a static string
  * Sources are listed in registration order. Not thread-safe: register,
  * unregister and read from one thread. */
 #ifndef KARMA_ME_DIAGNOSTICS_H
@@ -28,6 +31,7 @@ typedef struct MeDiagnosticFigures {
   MeReal penetration;
   MeReal energyDrift;
   MeReal residual;
+  const char *platform;
 } MeDiagnosticFigures;
 
 typedef void(MEAPI *MeDiagnosticRead)(void *owner, MeDiagnosticFigures *figures);

@@ -19,10 +19,14 @@
  *   -gl      (default; -d3d is a synonym) OpenGL rendered offscreen through OSMesa
  *   -null    the loop runs, nothing is drawn
  *   -bench   as -null, and per-frame timing statistics are printed at exit
- *   -profile draws, and prints a per-phase timing table at exit
+ *   -profile draws, and prints a per-phase timing table at exit (with the
+ *            platform backend the dynamics worlds ran on)
  * Output: -frames N, -out DIR (DIR/frame_00000.png ...), -every K, -bmp,
  * -size WxH (default 640x480), -video FILE (with ffmpeg). Input: -keys
  * SCRIPT, -keyfile FILE (scripted key presses and mouse moves).
+ * -platform NAME makes that backend (MdtPlatform.h) the default of the
+ * dynamics worlds created after the context; an unknown name fails the
+ * context's creation. The option stays in the list for the program.
  *
  * Functions taking an RRender* accept NULL with a warning and do nothing
  * (returning NULL / -1 / 1 where they return something). */

@@ -5,8 +5,10 @@
  * plane (|y - 0.5| < 0.02 m) and its speed small (< 0.05 m/s).
  *
  * With -trajectory FILE it writes every 10th frame (and the last) as a
- * trajectory for karma_add_golden_test; with -drop H it starts from H m
- * (the consumer test's "changed program"). Both include styles are used. */
+ * trajectory for karma_add_golden_test, naming the platform backend the
+ * world ran on (-platform NAME picks it, as the golden driver passes); with
+ * -drop H it starts from H m (the consumer test's "changed program"). Both
+ * include styles are used. */
 #include "Mst.h"
 #include <karma/golden/KarmaTrajectory.h>
 
@@ -39,7 +41,7 @@ int main(int argc, char **argv) {
   McdModelID ball;
   MdtBodyID body;
   KarmaTrajectoryWriter *writer;
-  KarmaTrajectoryInfo info = {"collide", "main", "reference", "every 10th frame and the last", 0, 1};
+  KarmaTrajectoryInfo info = {"collide", "main", NULL, "every 10th frame and the last", 0, 1};
   MeVector3 p, v;
   char hash[KARMA_GOLDEN_HASH_TEXT_SIZE];
   long frame;
@@ -50,6 +52,8 @@ int main(int argc, char **argv) {
       trajectory = argv[i + 1];
     else if (!strcmp(argv[i], "-drop"))
       drop = (MeReal)atof(argv[i + 1]);
+    else if (!strcmp(argv[i], "-platform"))
+      MdtPlatformSetDefault(argv[i + 1]); /* for the worlds created from here on */
   }
   sizes.dynamicBodiesMaxCount = 1;
   sizes.collisionModelsMaxCount = 2;
@@ -67,6 +71,7 @@ int main(int argc, char **argv) {
   MdtBodySetPosition(body, 0, drop, 0);
 
   info.timeStep = h;
+  info.backend = MdtWorldGetPlatformName(universe->world);
   writer = KarmaTrajectoryWriterCreate(trajectory, &info);
   for (frame = 0; frame <= STEPS; ++frame) {
     if (frame % 10 == 0) WriteFrame(writer, frame, h, body);

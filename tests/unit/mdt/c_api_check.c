@@ -1,6 +1,8 @@
 /* c_api_check.c: the Mdt headers compile as C11 and the API links from C. */
 #include "Mdt.h"
 
+#include <string.h>
+
 int mdt_c_api_check(void);
 
 int mdt_c_api_check(void) {
@@ -9,6 +11,9 @@ int mdt_c_api_check(void) {
   MeVector3 p;
   int ok;
   if (!world) return 0;
+  MdtWorldSetPlatform(world, MdtPlatformName(0));
+  if (strcmp(MdtWorldGetPlatformName(world), "reference") != 0 || !MdtPlatformIsSupported(MdtPlatformGetDefaultName()))
+    return 0;
   world->params.gravity[1] = -(MeReal)9.81;
   world->params.epsilon = (MeReal)0.005;
   body = MdtBodyCreate(world);

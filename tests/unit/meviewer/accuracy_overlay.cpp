@@ -81,12 +81,12 @@ int main(int argc, const char *argv[]) {
   MeCommandLineOptions *opts = MeCommandLineOptionsCreate(argc, argv);
   rc = RRenderContextCreate(opts, nullptr, 1);
   const char *trajectoryPath = MeCommandLineOptionsGetString(opts, "-trajectory", 1);
-  const char *platform = MeCommandLineOptionsGetString(opts, "-platform", 1);
   const std::string path = trajectoryPath ? trajectoryPath : "";
-  const std::string backend = platform ? platform : "reference";
   MeCommandLineOptionsDestroy(opts);
   if (!rc) return 1;
   Build();
+  /* The context read -platform: the world runs on that backend. */
+  const std::string backend = MdtWorldGetPlatformName(MstUniverseGetWorld(universe));
   KarmaTrajectoryInfo info = {"meviewer", "accuracy", backend.c_str(), "one still frame", (MeReal)1 / 60, 0};
   KarmaTrajectoryWriter *w = KarmaTrajectoryWriterCreate(path.empty() ? nullptr : path.c_str(), &info);
   const bool ok = w && KarmaTrajectoryWriterBeginFrame(w, 0, 0) && KarmaTrajectoryWriterEndFrame(w);

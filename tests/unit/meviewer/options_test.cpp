@@ -4,6 +4,8 @@
 #include "viewer_internal.h"
 #include "viewer_test_support.h"
 
+#include "MdtPlatform.h"
+
 #include <fstream>
 
 using karma::viewer::BackendKind;
@@ -145,10 +147,48 @@ TEST(Options, OutputDirectoryIsCreated) {
   RRenderContextDestroy(rc);
 }
 
+// -platform NAME: a known backend is read and left for the program; any
+// other name, or none, is refused like a malformed value. As with the
+// tutorials' record, the last one given counts.
+TEST(Options, PlatformIsReadAndLeftInPlace) {
+  const Parsed p = Parse("prog -platform reference -null");
+  ASSERT_TRUE(p.ok) << p.error;
+  EXPECT_EQ(p.options.platform, "reference");
+  EXPECT_EQ(p.left, (std::vector<std::string>{"-platform", "reference"}));
+  EXPECT_TRUE(Parse("prog -null").options.platform.empty());
+  EXPECT_EQ(Parse("prog -platform neon -null -platform sse4").options.platform, "sse4");  // the last counts
+  Messages m;
+  for (const char *line : {"prog -platform neon", "prog -platform"}) {
+    const Parsed bad = Parse(line);
+    EXPECT_FALSE(bad.ok) << line;
+    EXPECT_NE(bad.error.find("-platform"), std::string::npos) << bad.error;
+    EXPECT_NE(bad.error.find("reference, sse4, avx2, avx512"), std::string::npos) << bad.error;
+  }
+  EXPECT_EQ(MakeContext("prog -null -platform neon"), nullptr);
+  EXPECT_TRUE(Messages::Warned("bad value 'neon' for -platform")) << Messages::All();
+}
+
+// A context made with -platform sets the process default of the worlds
+// made later; a backend the CPU cannot run falls back with a warning.
+TEST(Options, PlatformSetsTheProcessDefault) {
+  const std::string saved = MdtPlatformGetDefaultName();
+  for (int i = 0; i < MdtPlatformCount(); ++i) {
+    const std::string name = MdtPlatformName(i);
+    Messages m;
+    RRender *rc = MakeContext("prog -null -platform " + name);
+    ASSERT_NE(rc, nullptr) << name;
+    const bool supported = MdtPlatformIsSupported(name.c_str());
+    EXPECT_EQ(MdtPlatformGetDefaultName(), supported ? name : std::string(MdtPlatformGetBestName())) << name;
+    EXPECT_EQ(Messages::Warned("platform backend '" + name + "' is not available"), !supported) << Messages::All();
+    RRenderContextDestroy(rc);
+  }
+  MdtPlatformSetDefault(saved.c_str());
+}
+
 TEST(Options, HelpListsEveryOption) {
   const std::string help = karma::viewer::HelpText();
-  for (const char *o :
-       {"-gl", "-d3d", "-null", "-bench", "-profile", "-frames", "-out", "-every", "-bmp", "-size", "-help"})
+  for (const char *o : {"-gl", "-d3d", "-null", "-bench", "-profile", "-frames", "-out", "-every", "-bmp", "-size",
+                        "-platform", "-help"})
     EXPECT_NE(help.find(std::string("  ") + o), std::string::npos) << o;
 }
 

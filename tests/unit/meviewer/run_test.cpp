@@ -5,6 +5,8 @@
 
 #include <karma/golden/Image.h>
 
+#include "MdtPlatform.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <unistd.h>
@@ -69,6 +71,14 @@ TEST_F(RunDeathTest, BenchPrintsFrameStatistics) {
 TEST_F(RunDeathTest, ProfilePrintsAPhaseTable) {
   EXPECT_EXIT(RunChild("prog -profile -frames 2 -size 64x48"), ::testing::ExitedWithCode(0),
               "MeViewer -profile: 2 frames(.|\n)*render(.|\n)*frame");
+}
+
+// Without a dynamics world the line names the process default, so marked
+// (a world's own backend is read through the diagnostic sources: the
+// platform_choice tests of mdt_test check what a world reports).
+TEST_F(RunDeathTest, ProfileNamesThePlatformBackend) {
+  const std::string line = std::string("platform backend: ") + MdtPlatformGetDefaultName() + " \\(the process default";
+  EXPECT_EXIT(RunChild("prog -profile -frames 2 -size 64x48"), ::testing::ExitedWithCode(0), line);
 }
 
 TEST_F(RunDeathTest, OutWritesNumberedPngsOfTheFrameSize) {
