@@ -16,6 +16,11 @@
 #  4. A backend the CPU lacks (a platform tool that answers 1) prints the
 #     skip message that KarmaGoldenTest.cmake gives CTest, and exits 0; an
 #     unknown backend fails.
+#  5. karma_add_golden_test in a small project (the tools imported, a
+#     platform tool that lacks avx512): one test per backend, named and
+#     labelled as documented; after recording, CTest passes reference and
+#     avx2 (through its link) and reports avx512 as skipped (step 4 checks
+#     the message naming it).
 cmake_minimum_required(VERSION 3.22)
 foreach(var DRIVER GOLDEN_TEST_CMAKE PROGRAM GOLDEN_TOOL PLATFORM_TOOL PRECISION WORK_DIR)
   if(NOT DEFINED ${var})
@@ -127,5 +132,51 @@ if(NOT DRIVE_OUTPUT MATCHES "${KARMA_GOLDEN_SKIP_REGEX} 'avx512'")
 endif()
 unset(tool)
 drive(bogus 0 fail)
+
+# 5.
+set(project "${WORK_DIR}/project")
+file(WRITE "${WORK_DIR}/lacks-avx512" "#!/bin/sh\ncase \"$2\" in avx512) exit 1;; reference|sse4|avx2) exit 0;; *) exit 2;; esac\n")
+file(CHMOD "${WORK_DIR}/lacks-avx512" PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+file(WRITE "${project}/CMakeLists.txt" "cmake_minimum_required(VERSION 3.22)
+project(fake NONE)
+enable_testing()
+foreach(tool IN ITEMS karma-golden;karma-platforms;fake)
+  add_executable(\${tool} IMPORTED)
+endforeach()
+set_target_properties(karma-golden PROPERTIES IMPORTED_LOCATION [[${GOLDEN_TOOL}]])
+set_target_properties(karma-platforms PROPERTIES IMPORTED_LOCATION [[${WORK_DIR}/lacks-avx512]])
+set_target_properties(fake PROPERTIES IMPORTED_LOCATION [[${PROGRAM}]])
+set(Karma_PRECISION ${PRECISION})
+include([[${GOLDEN_TEST_CMAKE}]])
+karma_add_golden_test(NAME golden.fake PROGRAM fake STEP main BACKENDS reference avx2 avx512
+  GOLDEN_ROOT [[${WORK_DIR}/project-golden]])
+")
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${project}" -B "${project}/build" RESULT_VARIABLE rc OUTPUT_VARIABLE out
+  ERROR_VARIABLE out)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "configuring a project with karma_add_golden_test failed:\n${out}")
+endif()
+execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --test-dir "${project}/build" -N -L backend-avx2 OUTPUT_VARIABLE out)
+if(NOT out MATCHES "golden\\.fake\\.avx2\n" OR NOT out MATCHES "Total Tests: 1\n")
+  message(FATAL_ERROR "label backend-avx2 should select golden.fake.avx2 alone:\n${out}")
+endif()
+set(ENV{KARMA_GOLDEN_REGENERATE} 1)
+execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --test-dir "${project}/build" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+unset(ENV{KARMA_GOLDEN_REGENERATE})
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "recording the project's goldens failed:\n${out}")
+endif()
+execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --test-dir "${project}/build" -L golden --output-on-failure
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+foreach(pattern "golden\\.fake [.]+ +Passed" "golden\\.fake\\.avx2 [.]+ +Passed"
+                "golden\\.fake\\.avx512 [.]+\\*+Skipped")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "${pattern}")
+    message(FATAL_ERROR "CTest should pass reference and avx2 and skip avx512 (no '${pattern}', exit ${rc}):\n${out}")
+  endif()
+endforeach()
+if(NOT IS_SYMLINK "${WORK_DIR}/project-golden/fake/main/avx2-${PRECISION}")
+  message(FATAL_ERROR "recording should have linked avx2-${PRECISION} to the reference")
+endif()
+
 file(REMOVE_RECURSE "${WORK_DIR}")
-message(STATUS "golden driver: links, real directories, skip and unknown backend as documented")
+message(STATUS "golden driver: links, real directories, skip, unknown backend and registration as documented")
