@@ -22,7 +22,7 @@ install(FILES "${KARMA_GENERATED_INCLUDE_DIR}/karma/MeConfig.h"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/karma")
 
 get_property(karma_targets GLOBAL PROPERTY KARMA_EXPORTED_TARGETS)
-install(TARGETS ${karma_targets} KarmaKarma karma-golden
+install(TARGETS ${karma_targets} KarmaKarma karma-golden karma-platforms
         EXPORT KarmaTargets
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
         LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
@@ -89,8 +89,9 @@ string(REGEX REPLACE "/$" "" KARMA_PC_TO_PREFIX "${KARMA_PC_TO_PREFIX}")
 configure_file("${PROJECT_SOURCE_DIR}/cmake/karma.pc.in" "${PROJECT_BINARY_DIR}/karma.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/karma.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
 
-# The golden tool (exported as Karma::karma-golden) and karma_add_golden_test()
-# with its driver, for users who pin their own programs' outputs
+# The golden tool (exported as Karma::karma-golden), the backend query
+# (Karma::karma-platforms: the golden driver skips a backend the CPU lacks)
+# and karma_add_golden_test() with its driver, for users who pin their own programs' outputs
 # (docs/GOLDEN.md, "Golden-test your own program"); KarmaConfig.cmake
 # includes KarmaGoldenTest.cmake.
 install(FILES "${PROJECT_SOURCE_DIR}/tools/golden/KarmaGoldenTest.cmake"

@@ -38,7 +38,8 @@ set(compilers -DCMAKE_C_COMPILER=${C_COMPILER} -DCMAKE_CXX_COMPILER=${CXX_COMPIL
 # 1. Install into the scratch prefix.
 run(${CMAKE_COMMAND} --install "${KARMA_BINARY_DIR}" --prefix "${prefix}")
 foreach(f include/karma/Mdt.h include/karma/MdtPlatform.h include/karma/MeConfig.h include/karma/MePrecision.h
-          lib/cmake/Karma/KarmaGoldenTest.cmake lib/cmake/Karma/run_golden.cmake bin/karma-golden)
+          lib/cmake/Karma/KarmaGoldenTest.cmake lib/cmake/Karma/run_golden.cmake bin/karma-golden
+          bin/karma-platforms)
   if(NOT EXISTS "${prefix}/${f}")
     message(FATAL_ERROR "install tree lacks ${f}")
   endif()

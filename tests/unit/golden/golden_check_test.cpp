@@ -119,6 +119,26 @@ TEST_F(GoldenCheckTest, UnreadableGoldenTrajectoryIsError) {
   EXPECT_EQ(r.status, kg::CheckStatus::Error) << r.report;
 }
 
+// Backends share a golden through a relative link (docs/GOLDEN.md): the check
+// follows it, reads the reference's files and passes an avx2 run whose only
+// difference is the header's backend, noting it; a perturbed run still fails.
+TEST_F(GoldenCheckTest, GoldenThroughRelativeLinkIsFollowed) {
+  const fs::path link = dir_.path() / "avx2-single";
+  fs::create_directory_symlink("golden", link);
+  kg::Trajectory t = ts::SyntheticTrajectory();
+  t.header.backend = "avx2";
+  kg::WriteTrajectoryFile(actual_ / kg::kTrajectoryFileName, t);
+  const kg::CheckResult r = kg::CheckAgainstGolden(link, actual_, kg::CheckOptions{});
+  EXPECT_EQ(r.status, kg::CheckStatus::Match) << r.report;
+  EXPECT_EQ(r.itemsChecked, 3);
+  EXPECT_NE(r.report.find("backends differ (expected reference, actual avx2)"), std::string::npos) << r.report;
+
+  t.frames[3].bodies[1].position[1] = ts::Real(t.frames[3].bodies[1].position[1] + 0.01);
+  kg::WriteTrajectoryFile(actual_ / kg::kTrajectoryFileName, t);
+  const kg::CheckResult perturbed = kg::CheckAgainstGolden(link, actual_, kg::CheckOptions{});
+  EXPECT_EQ(perturbed.status, kg::CheckStatus::Mismatch) << perturbed.report;
+}
+
 TEST(GoldenKey, RelativeDirectoryLayout) {
   kg::GoldenKey key;
   key.program = "demo";

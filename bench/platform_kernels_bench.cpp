@@ -1,0 +1,127 @@
+// The platform kernels (engine/platform/kernels.h) on every backend this CPU
+// supports: dot, gatherDot and subtractScaled at n = 8, 32, 128 and 1024,
+// nanoseconds per call; the binary ends with a Markdown table of each
+// backend's speed-up over the reference (reference time / backend time, the
+// medians when run with --benchmark_repetitions). Run e.g.
+//   build/bench/bench/platform_kernels_bench --benchmark_repetitions=5
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kernels.h"
+
+namespace {
+
+namespace platform = karma::platform;
+using platform::Kernels;
+
+constexpr int kSizes[] = {8, 32, 128, 1024};
+constexpr const char *kKernelNames[] = {"dot", "gatherDot", "subtractScaled"};
+
+// Random operands of one size: x is indexed by index (a permutation-free
+// random pick, as a sparse row gathers from a dense vector).
+struct Operands {
+  std::vector<MeReal> a, x, y;
+  std::vector<int> index;
+  explicit Operands(int n) {
+    std::mt19937 rng(static_cast<unsigned>(n));
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::uniform_int_distribution<int> pick(0, n - 1);
+    for (int k = 0; k < n; ++k) {
+      a.push_back(static_cast<MeReal>(u(rng)));
+      x.push_back(static_cast<MeReal>(u(rng)));
+      y.push_back(static_cast<MeReal>(u(rng)));
+      index.push_back(pick(rng));
+    }
+  }
+};
+
+void Run(benchmark::State &state, const Kernels *k, int kernel) {
+  const int n = static_cast<int>(state.range(0));
+  Operands o(n);
+  // subtractScaled's y drifts by at most n_iterations * 1e-6 per element.
+  const MeReal alpha = static_cast<MeReal>(1e-6);
+  for (auto _ : state) {
+    if (kernel == 0) {
+      benchmark::DoNotOptimize(k->dot(o.a.data(), o.x.data(), n));
+    } else if (kernel == 1) {
+      benchmark::DoNotOptimize(k->gatherDot(o.a.data(), o.index.data(), o.x.data(), n));
+    } else {
+      k->subtractScaled(alpha, o.x.data(), o.y.data(), n);
+      benchmark::ClobberMemory();
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * n);
+}
+
+// Collects each benchmark's time (the median aggregate when there are
+// repetitions, else the single run) while printing as usual.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  // name "kernel/backend" -> n -> ns per call
+  std::map<std::string, std::map<std::string, double>> ns;
+
+  void ReportRuns(const std::vector<Run> &runs) override {
+    for (const Run &run : runs) {
+      const bool median = run.aggregate_name == "median";
+      if (run.run_type == Run::RT_Aggregate && !median) continue;
+      if (run.run_type == Run::RT_Iteration && run.repetitions > 1) continue;
+      ns[run.run_name.function_name][run.run_name.args] = run.GetAdjustedRealTime();
+    }
+    ConsoleReporter::ReportRuns(runs);
+  }
+
+  void PrintTable(const std::vector<const Kernels *> &backends) {
+    std::printf("\nPlatform kernels: ns per call and speed-up over reference (reference / backend)\n\n");
+    std::printf("| kernel | n |");
+    for (const Kernels *k : backends) {
+      std::printf(" %s ns |", k->name);
+      if (k != backends.front()) std::printf(" %s × |", k->name);
+    }
+    std::printf("\n|---|---:|");
+    for (const Kernels *k : backends) std::printf("---:|%s", k == backends.front() ? "" : "---:|");
+    std::printf("\n");
+    for (const char *kernel : kKernelNames)
+      for (int n : kSizes) {
+        const std::string arg = std::to_string(n);
+        const double ref = ns[std::string(kernel) + "/reference"][arg];
+        std::printf("| %s | %d |", kernel, n);
+        for (const Kernels *k : backends) {
+          const double t = ns[std::string(kernel) + "/" + k->name][arg];
+          std::printf(" %.1f |", t);
+          if (k != backends.front()) std::printf(" %.2f |", t > 0 ? ref / t : 0.0);
+        }
+        std::printf("\n");
+      }
+    std::printf("\n");
+  }
+};
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  std::vector<const Kernels *> backends;
+  for (const Kernels *k : platform::AllKernels())
+    if (platform::Supported(*k))
+      backends.push_back(k);
+    else
+      std::printf("platform_kernels_bench: this CPU lacks %s: skipped\n", k->name);
+  for (int kernel = 0; kernel < 3; ++kernel)
+    for (const Kernels *k : backends) {
+      benchmark::internal::Benchmark *b =
+          benchmark::RegisterBenchmark((std::string(kKernelNames[kernel]) + "/" + k->name).c_str(),
+                                       [k, kernel](benchmark::State &state) { Run(state, k, kernel); });
+      for (int n : kSizes) b->Arg(n);
+    }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  reporter.PrintTable(backends);
+  return 0;
+}
