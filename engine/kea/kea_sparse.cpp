@@ -85,8 +85,9 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
     for (std::size_t i = 0; i < n; ++i) {
       if (!(s.diag[i] > 0)) continue; /* a null row: nothing to gain from it */
       const int k0 = p.rowStart[i];
-      const MeReal wi = (-p.b[i] + eps * r.lambda[i]) + platform::GatherDot(kernels, p.val.data() + k0, p.col.data() + k0,
-                                                                          r.lambda.data(), p.rowStart[i + 1] - k0);
+      const MeReal wi =
+          (-p.b[i] + eps * r.lambda[i]) +
+          platform::GatherDot(kernels, p.val.data() + k0, p.col.data() + k0, r.lambda.data(), p.rowStart[i + 1] - k0);
       MeReal rowLo = s.lo[i], rowHi = s.hi[i];
       if (friction && p.findex[i] >= 0) {
         const MeReal limit = p.mu[i] * std::max(r.lambda[static_cast<std::size_t>(p.findex[i])], MeReal(0));

@@ -59,8 +59,6 @@ KARMA_AVX2 MeReal Avx2GatherDot(const MeReal *value, const int *index, const MeR
 #else
   __m256d acc0 = _mm256_setzero_pd(), acc1 = _mm256_setzero_pd();
   for (; k + kLanes <= n; k += kLanes) {
-    const __m128i at0 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(index + k));
-    const __m128i at1 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(index + k + 4));
     acc0 = _mm256_add_pd(acc0, _mm256_mul_pd(_mm256_loadu_pd(value + k), Gather(x, index + k)));
     acc1 = _mm256_add_pd(acc1, _mm256_mul_pd(_mm256_loadu_pd(value + k + 4), Gather(x, index + k + 4)));
   }

@@ -38,8 +38,10 @@ void fillBodies(StepScratch &s, const Partition &part, BodySpaceProblem &p) {
 // J v* of one row.
 MeReal rowVelocityPredicted(const Row &row, const MdtConstraint *c) {
   MeReal jv = 0;
-  if (bodyIndex(c->body[0]) >= 0) jv += platform::reference::RowPairEntry(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
-  if (bodyIndex(c->body[1]) >= 0) jv += platform::reference::RowPairEntry(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
+  if (bodyIndex(c->body[0]) >= 0)
+    jv += platform::reference::RowPairEntry(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
+  if (bodyIndex(c->body[1]) >= 0)
+    jv += platform::reference::RowPairEntry(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
   return jv;
 }
 

@@ -15,12 +15,16 @@
 
 #include "arena.h"
 #include "problem.h"
+#include "kernels.h"
 
 namespace karma::mdt {
 
 struct SolverSettings {
   int maxIterations = 0;  // 0: the solver's default
   MeReal tolerance = 0;   // 0: the solver's default
+  // The world's platform backend for the exact solver's array kernels
+  // (kernels.h); nullptr: the process default. It changes speed only.
+  const platform::Kernels *kernels = nullptr;
 };
 
 struct SolveReport {

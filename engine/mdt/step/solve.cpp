@@ -25,6 +25,7 @@ SolverChoice chooseSolver(MdtWorldID world, const StepScratch &s, const BodySpac
   SolverChoice c;
   c.settings.maxIterations = params.keaMaxIterations;
   c.settings.tolerance = params.keaTolerance;
+  c.settings.kernels = world->priv->kernels;
   if (s.budget.on()) {
     c.budgeted = true;
     c.budget = s.budget.choose(problem.identity, rows);

@@ -56,7 +56,7 @@ std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
       if (b < 0) continue;
       const auto *inertia = reinterpret_cast<const MeReal(*)[3]>(&p.invInertia[(size_t)b * 9]);
       platform::reference::BodyMinvJt(p.invMass[(size_t)b], inertia, J + side * 6, J + side * 6 + 3, out + side * 6,
-                      out + side * 6 + 3);
+                                      out + side * 6 + 3);
     }
   }
   return mj;
@@ -234,9 +234,10 @@ class KeaSolver final : public PartitionSolver {
     std::fill(lambda.begin(), lambda.end(), MeReal(0));
     if (p.rowCount == 0) return report;
     PartitionMemory &memory = memories_.take(p.identity);
-    const Csr a = assemble(p, arena, memory, [](const MeReal *jl, const MeReal *ja, const MeReal *ml, const MeReal *ma) {
-      return platform::reference::RowPairEntry(jl, ja, ml, ma);
-    });
+    const Csr a =
+        assemble(p, arena, memory, [](const MeReal *jl, const MeReal *ja, const MeReal *ml, const MeReal *ma) {
+          return platform::reference::RowPairEntry(jl, ja, ml, ma);
+        });
     kea::SparseLcpProblem prob;
     prob.n = p.rowCount;
     prob.rowStart = a.rowStart;
@@ -253,6 +254,7 @@ class KeaSolver final : public PartitionSolver {
     opt.method = kea::KeaMethod::ActiveSet;
     opt.maxIterations = settings.maxIterations;
     opt.tolerance = settings.tolerance;
+    opt.kernels = settings.kernels;
     opt.epsilon = 0;  // softness is already on the diagonal
     if (p.anyWarm) opt.warmStart = p.warm;
     opt.factorMemory = kea::KeaFactorMemory::WhenCheaper;

@@ -33,11 +33,11 @@ struct PinnedHash {
 
 // clang-format off
 constexpr PinnedHash kPinned[] = {
-    {"car",      300,  "0x48cc3de936742a83", "0xc426845d422f0c12"},
-    {"topple",   600,  "0xca1b980d1d351e0a", "0xcfa3067555bab418"},
-    {"ragdoll",  600,  "0x2d9f33beb302094a", "0x7074b9ab3a44e4aa"},
-    {"stack21",  1200, "0xa68177a70af36dee", "0x1e42afa1ef7645cc"},
-    {"pile1000", 60,   "0x15b056f0fca7a38b", "0xd6fa6268492c732f"},
+    {"car",      300,  "0xd979b8cf10ee74fa", "0xcd5097a0ac3077f8"},
+    {"topple",   600,  "0x1b70de3477294acd", "0xce2a4659bbfffd46"},
+    {"ragdoll",  600,  "0xd6ba3378e6f6fc40", "0x7bab175e8268ebf9"},
+    {"stack21",  1200, "0xd4a63600c26892c2", "0x98c2ce309338eb01"},
+    {"pile1000", 60,   "0x3ec3bee71c401415", "0x92b299bc76fb8f4e"},
 };
 // clang-format on
 
