@@ -31,7 +31,7 @@ struct RowView {
 };
 /* The backend of a solve's array kernels (KeaOptions::kernels). */
 inline const platform::Kernels &KernelsOf(const KeaOptions &o) {
-  return o.kernels ? *o.kernels : platform::ActiveKernels();
+  return o.kernels ? *o.kernels : platform::DefaultKernels();
 }
 
 inline RowView Rows(const LcpProblem &p) { return {p.n, p.b, p.lo, p.hi, p.findex, p.mu}; }

@@ -154,7 +154,7 @@ const char *KeaStatusName(KeaStatus status);
 struct KeaOptions {
   KeaMethod method = KeaMethod::ActiveSet;
   /* The platform backend of the array kernels (engine/platform/kernels.h);
-   * nullptr: platform::ActiveKernels(). Every backend gives the same bits,
+   * nullptr: platform::DefaultKernels(). Every backend gives the same bits,
    * so this chooses speed only. */
   const platform::Kernels *kernels = nullptr;
   /* Active set: the number of linear solves (pivot steps) allowed over the

@@ -26,6 +26,8 @@ KARMA_AVX2 __m256d Gather(const double *x, const int *at) {
 }
 #endif
 
+}  // namespace
+
 KARMA_AVX2 MeReal Avx2Dot(const MeReal *a, const MeReal *b, int n) {
   MeReal s[kLanes];
   int k = 0;
@@ -68,6 +70,8 @@ KARMA_AVX2 MeReal Avx2GatherDot(const MeReal *value, const int *index, const MeR
   reference::AddGatherTail(value, index, x, k, n, s);
   return reference::LaneSum(s);
 }
+
+namespace {
 
 KARMA_AVX2 void Avx2SubtractScaled(MeReal alpha, const MeReal *x, MeReal *y, int n) {
   int k = 0;

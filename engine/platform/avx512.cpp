@@ -1,8 +1,8 @@
 /* avx512.cpp: the AVX-512F backend (kernels.h). Doubles: the eight partial
  * sums of a reduction are one 512-bit register, term k in lane k mod 8.
  * Floats: eight lanes are a 256-bit register (sixteen would change the
- * reference's order), so the reductions are AVX2's, and the array update
- * uses 512-bit registers. No FMA: every result is the reference's to the
+ * reference's order), so the reductions are avx2.cpp's own functions, and
+ * the array update uses 512-bit registers. No FMA: every result is the reference's to the
  * bit. */
 #include "backends.h"
 #include "reference_inline.h"
@@ -14,20 +14,14 @@
 namespace karma::platform {
 namespace {
 
+#if KARMA_DOUBLE
 KARMA_AVX512 MeReal Avx512Dot(const MeReal *a, const MeReal *b, int n) {
   MeReal s[kLanes];
   int k = 0;
-#if !KARMA_DOUBLE
-  __m256 acc = _mm256_setzero_ps();
-  for (; k + kLanes <= n; k += kLanes)
-    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(a + k), _mm256_loadu_ps(b + k)));
-  _mm256_storeu_ps(s, acc);
-#else
   __m512d acc = _mm512_setzero_pd();
   for (; k + kLanes <= n; k += kLanes)
     acc = _mm512_add_pd(acc, _mm512_mul_pd(_mm512_loadu_pd(a + k), _mm512_loadu_pd(b + k)));
   _mm512_storeu_pd(s, acc);
-#endif
   reference::AddTail(a, b, k, n, s);
   return reference::LaneSum(s);
 }
@@ -37,15 +31,6 @@ KARMA_AVX512 MeReal Avx512GatherDot(const MeReal *value, const int *index, const
   MeReal s[kLanes];
   int k = 0;
   const int *i = index;
-#if !KARMA_DOUBLE
-  __m256 acc = _mm256_setzero_ps();
-  for (; k + kLanes <= n; k += kLanes) {
-    const __m256 xk = _mm256_set_ps(x[i[k + 7]], x[i[k + 6]], x[i[k + 5]], x[i[k + 4]], x[i[k + 3]], x[i[k + 2]],
-                                    x[i[k + 1]], x[i[k]]);
-    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(value + k), xk));
-  }
-  _mm256_storeu_ps(s, acc);
-#else
   __m512d acc = _mm512_setzero_pd();
   for (; k + kLanes <= n; k += kLanes) {
     const __m512d xk = _mm512_set_pd(x[i[k + 7]], x[i[k + 6]], x[i[k + 5]], x[i[k + 4]], x[i[k + 3]], x[i[k + 2]],
@@ -53,10 +38,10 @@ KARMA_AVX512 MeReal Avx512GatherDot(const MeReal *value, const int *index, const
     acc = _mm512_add_pd(acc, _mm512_mul_pd(_mm512_loadu_pd(value + k), xk));
   }
   _mm512_storeu_pd(s, acc);
-#endif
   reference::AddGatherTail(value, index, x, k, n, s);
   return reference::LaneSum(s);
 }
+#endif
 
 KARMA_AVX512 void Avx512SubtractScaled(MeReal alpha, const MeReal *x, MeReal *y, int n) {
   int k = 0;
@@ -74,6 +59,10 @@ KARMA_AVX512 void Avx512SubtractScaled(MeReal alpha, const MeReal *x, MeReal *y,
 
 }  // namespace
 
+#if KARMA_DOUBLE
 const Kernels kAvx512Kernels = {"avx512", Avx512Dot, Avx512GatherDot, Avx512SubtractScaled};
+#else
+const Kernels kAvx512Kernels = {"avx512", Avx2Dot, Avx2GatherDot, Avx512SubtractScaled};
+#endif
 
 }  // namespace karma::platform

@@ -92,9 +92,6 @@ void SetDefaultKernels(const Kernels &kernels);
  * warning saying why. */
 const Kernels &KernelsForRequest(const char *name, const Kernels &fallback);
 
-/* The backend the step uses when no world chose one: DefaultKernels(). */
-const Kernels &ActiveKernels();
-
 /* The kernels through `kernels`, arrays shorter than kLanes inline. */
 inline MeReal Dot(const Kernels &kernels, const MeReal *a, const MeReal *b, int n) {
   return n < kLanes ? reference::Dot(a, b, n) : kernels.dot(a, b, n);

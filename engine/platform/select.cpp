@@ -79,6 +79,4 @@ const Kernels &DefaultKernels() { return *DefaultSlot().load(std::memory_order_a
 
 void SetDefaultKernels(const Kernels &kernels) { DefaultSlot().store(&kernels, std::memory_order_release); }
 
-const Kernels &ActiveKernels() { return DefaultKernels(); }
-
 }  // namespace karma::platform
