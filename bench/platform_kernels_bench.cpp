@@ -1,6 +1,7 @@
 // The platform kernels (engine/platform/kernels.h) on every backend this CPU
-// supports: dot, gatherDot and subtractScaled at n = 8, 32, 128 and 1024,
-// nanoseconds per call; the binary ends with a Markdown table of each
+// supports: dot, gatherDot and sparseRowsTimes at n = 8, 32, 128 and 1024
+// (for sparseRowsTimes n entries in CSR rows of up to 16, as Kea's rows
+// are), nanoseconds per call; the binary ends with a Markdown table of each
 // backend's speed-up over the reference (reference time / backend time, the
 // medians when run with --benchmark_repetitions). Run e.g.
 //   build/bench/bench/platform_kernels_bench --benchmark_repetitions=5
@@ -20,13 +21,14 @@ namespace platform = karma::platform;
 using platform::Kernels;
 
 constexpr int kSizes[] = {8, 32, 128, 1024};
-constexpr const char *kKernelNames[] = {"dot", "gatherDot", "subtractScaled"};
+constexpr int kRowLength = 16;
+constexpr const char *kKernelNames[] = {"dot", "gatherDot", "sparseRowsTimes"};
 
 // Random operands of one size: x is indexed by index (a permutation-free
 // random pick, as a sparse row gathers from a dense vector).
 struct Operands {
   std::vector<MeReal> a, x, y;
-  std::vector<int> index;
+  std::vector<int> index, rowStart; /* CSR rows of up to kRowLength entries */
   explicit Operands(int n) {
     std::mt19937 rng(static_cast<unsigned>(n));
     std::uniform_real_distribution<double> u(-1, 1);
@@ -37,21 +39,22 @@ struct Operands {
       y.push_back(static_cast<MeReal>(u(rng)));
       index.push_back(pick(rng));
     }
+    for (int k = 0; k < n; k += kRowLength) rowStart.push_back(k);
+    rowStart.push_back(n);
   }
+  int rows() const { return static_cast<int>(rowStart.size()) - 1; }
 };
 
 void Run(benchmark::State &state, const Kernels *k, int kernel) {
   const int n = static_cast<int>(state.range(0));
   Operands o(n);
-  // subtractScaled's y drifts by at most n_iterations * 1e-6 per element.
-  const MeReal alpha = static_cast<MeReal>(1e-6);
   for (auto _ : state) {
     if (kernel == 0) {
       benchmark::DoNotOptimize(k->dot(o.a.data(), o.x.data(), n));
     } else if (kernel == 1) {
       benchmark::DoNotOptimize(k->gatherDot(o.a.data(), o.index.data(), o.x.data(), n));
     } else {
-      k->subtractScaled(alpha, o.x.data(), o.y.data(), n);
+      k->sparseRowsTimes(o.rowStart.data(), o.index.data(), o.a.data(), nullptr, o.rows(), o.x.data(), o.y.data());
       benchmark::ClobberMemory();
     }
   }

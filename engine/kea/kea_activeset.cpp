@@ -131,7 +131,6 @@ KeaResult KeaSolveActiveSet(const LcpProblem &p, const KeaOptions &o) {
   static const char *const kName = "KeaSolveActiveSet";
   if (!detail::Validate(p, o, kName)) return detail::BadInputResult(p.n);
   DenseBackend backend{p, o.epsilon, {}, {}, {}, {}, {}, 0};
-  backend.block.kernels = &detail::KernelsOf(o);
   detail::ActiveSetScratch scratch;
   KeaResult r;
   detail::ActiveSetCore(detail::Rows(p), o, kName, backend, scratch, r);

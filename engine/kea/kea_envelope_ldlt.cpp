@@ -7,8 +7,30 @@
 #include <cmath>
 
 namespace karma::kea::detail {
-bool EnvelopeLdltFactor(const platform::Kernels &kernels, int m, std::span<const int> first, std::span<const int> start,
-                        std::span<MeReal> value) {
+namespace {
+
+/* sum_k a[k] b[k] in four interleaved partial sums, term k in sum k mod 4
+ * for the whole groups of four, the rest of the terms in sum 0, combined
+ * as (s0 + s1) + (s2 + s3). Short sums whose last term was computed a
+ * moment ago are what the factorisation is made of: a few partial sums
+ * keep the chain from that term to the result short (docs/NOTES.md,
+ * "Envelope recurrences"). */
+MeReal Dot4(const MeReal *a, const MeReal *b, int count) {
+  MeReal s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int k = 0;
+  for (; k + 4 <= count; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < count; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
+}  // namespace
+
+bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value) {
   for (int i = 0; i < m; ++i) {
     const int fi = first[static_cast<std::size_t>(i)];
     MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)]; /* rowI[j - fi] = entry (i, j) */
@@ -17,8 +39,7 @@ bool EnvelopeLdltFactor(const platform::Kernels &kernels, int m, std::span<const
       const int fj = first[static_cast<std::size_t>(j)];
       const MeReal *rowJ = value.data() + start[static_cast<std::size_t>(j)];
       const int k0 = std::max(fi, fj);
-      const MeReal *ui = rowI + (k0 - fi), *lj = rowJ + (k0 - fj);
-      rowI[j - fi] -= platform::Dot(kernels, ui, lj, j - k0);
+      rowI[j - fi] -= Dot4(rowI + (k0 - fi), rowJ + (k0 - fj), j - k0);
     }
     /* l_ij = u_ij / d_j and d_i = a_ii - sum_j u_ij l_ij */
     const MeReal aii = rowI[i - fi];
@@ -36,13 +57,15 @@ bool EnvelopeLdltFactor(const platform::Kernels &kernels, int m, std::span<const
   return true;
 }
 
-void EnvelopeLdltSolve(const platform::Kernels &kernels, int m, std::span<const int> first, std::span<const int> start,
-                       std::span<const MeReal> value, std::span<MeReal> x) {
-  /* L y = rhs, row by row. */
+void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start, std::span<const MeReal> value,
+                       std::span<MeReal> x) {
+  /* L y = rhs, row by row, each a running difference in ascending k. */
   for (int i = 0; i < m; ++i) {
     const int fi = first[static_cast<std::size_t>(i)];
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
-    x[static_cast<std::size_t>(i)] -= platform::Dot(kernels, rowI, x.data() + fi, i - fi);
+    MeReal s = x[static_cast<std::size_t>(i)];
+    for (int k = fi; k < i; ++k) s -= rowI[k - fi] * x[static_cast<std::size_t>(k)];
+    x[static_cast<std::size_t>(i)] = s;
   }
   /* D z = y */
   for (int i = 0; i < m; ++i)
@@ -52,7 +75,8 @@ void EnvelopeLdltSolve(const platform::Kernels &kernels, int m, std::span<const 
   for (int i = m - 1; i > 0; --i) {
     const int fi = first[static_cast<std::size_t>(i)];
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
-    platform::SubtractScaled(kernels, x[static_cast<std::size_t>(i)], rowI, x.data() + fi, i - fi);
+    const MeReal xi = x[static_cast<std::size_t>(i)];
+    for (int k = fi; k < i; ++k) x[static_cast<std::size_t>(k)] -= rowI[k - fi] * xi;
   }
 }
 
@@ -81,7 +105,7 @@ void EnvelopeSystem::layout() {
 
 void EnvelopeSystem::factor() {
   original.assign(value.begin(), value.begin() + static_cast<std::ptrdiff_t>(size()));
-  broken = !EnvelopeLdltFactor(*kernels, m, first, start, value);
+  broken = !EnvelopeLdltFactor(m, first, start, value);
   factored = true;
 }
 
@@ -89,7 +113,7 @@ void EnvelopeSystem::solve(std::span<const MeReal> rhs, std::span<MeReal> x) con
   const auto size = static_cast<std::size_t>(m);
   if (!broken) {
     std::copy(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(size), x.begin());
-    EnvelopeLdltSolve(*kernels, m, first, start, value, x);
+    EnvelopeLdltSolve(m, first, start, value, x);
     bool finite = true;
     for (std::size_t i = 0; i < size; ++i) finite = finite && std::isfinite(x[i]);
     if (finite) return;

@@ -21,16 +21,21 @@
  * breakdown: the matrix is (numerically) semi-definite or indefinite, and
  * the caller falls back to a least-squares solve.
  *
- * The inner products and updates run through a platform backend's kernels
- * (engine/platform/kernels.h): their sums follow its fixed lane order, the
- * same bits on every backend.
+ * Order of the sums. Each u_ij is a_ij minus a four-lane dot product (term
+ * k of the sum in partial sum k mod 4, the remainder in the first); each
+ * unknown of the triangular solves is a running difference in ascending k.
+ * Both are recurrences: the last term of each sum was computed a moment
+ * before, so what bounds their speed is the chain from that term to the
+ * result, which these orders keep short; the eight-lane reductions of the
+ * platform kernels (engine/platform/kernels.h) lengthen it, and measured
+ * slower on every backend (docs/NOTES.md, "Envelope recurrences"). The
+ * same code, and so the same bits, on every backend.
  *
  * Nothing here allocates. */
 #ifndef KARMA_KEA_ENVELOPE_LDLT_H
 #define KARMA_KEA_ENVELOPE_LDLT_H
 
 #include "MePrecision.h"
-#include "kernels.h"
 
 #include <span>
 #include <vector>
@@ -44,13 +49,12 @@ inline constexpr MeReal kPivotFloor = 64 * ME_REAL_EPSILON;
 /* Factorises the m x m envelope matrix (first, start, value as above) in
  * place: value then holds L below the diagonal and D on it. Returns false
  * on breakdown (value is then partly overwritten). */
-bool EnvelopeLdltFactor(const platform::Kernels &kernels, int m, std::span<const int> first, std::span<const int> start,
-                        std::span<MeReal> value);
+bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value);
 
 /* Solves L D L^T x = rhs with a factor from EnvelopeLdltFactor; x holds rhs
  * on entry and the solution on return (m values). */
-void EnvelopeLdltSolve(const platform::Kernels &kernels, int m, std::span<const int> first, std::span<const int> start,
-                       std::span<const MeReal> value, std::span<MeReal> x);
+void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start, std::span<const MeReal> value,
+                       std::span<MeReal> x);
 
 /* A symmetric system solved through the envelope LDL^T, its arrays kept
  * from one solve to the next (they only grow). Use:
@@ -64,9 +68,8 @@ struct EnvelopeSystem {
   int m = 0;
   std::vector<int> first, start;
   std::vector<MeReal> value, original;
-  bool factored = false;                                            /* factor() ran on the current matrix */
-  bool broken = false;                                              /* ... and broke down */
-  const platform::Kernels *kernels = &platform::ReferenceKernels(); /* the backend of factor() and solve() */
+  bool factored = false; /* factor() ran on the current matrix */
+  bool broken = false;   /* ... and broke down */
 
   /* Capacity for matrices of up to `rows` rows and `entries` envelope
    * entries (then begin/layout/factor allocate nothing). */

@@ -16,10 +16,11 @@ using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
 
 std::size_t U(int i) { return static_cast<std::size_t>(i); }
 
-/* sum_k A_ik x_k over the stored entries of CSR row i. */
-MeReal RowTimes(const platform::Kernels &kernels, const SparseLcpProblem &p, std::size_t i, const MeReal *x) {
-  const int k0 = p.rowStart[i];
-  return platform::GatherDot(kernels, p.val.data() + k0, p.col.data() + k0, x, p.rowStart[i + 1] - k0);
+/* y[a] = sum_k A_ik x_k over the stored entries of CSR row i = rows[a]
+ * (i = a when rows is null), a < count. */
+void RowsTimes(const platform::Kernels &kernels, const SparseLcpProblem &p, const int *rows, std::size_t count,
+               const MeReal *x, MeReal *y) {
+  kernels.sparseRowsTimes(p.rowStart.data(), p.col.data(), p.val.data(), rows, static_cast<int>(count), x, y);
 }
 
 }  // namespace
@@ -27,9 +28,8 @@ MeReal RowTimes(const platform::Kernels &kernels, const SparseLcpProblem &p, std
 MeReal SparseMultiplyResidual(const platform::Kernels &kernels, const SparseLcpProblem &p, MeReal eps,
                               std::span<const MeReal> lambda, std::span<MeReal> w) {
   const auto n = static_cast<std::size_t>(p.n);
-  for (std::size_t i = 0; i < n; ++i) {
-    w[i] = (-p.b[i] + eps * lambda[i]) + RowTimes(kernels, p, i, lambda.data());
-  }
+  RowsTimes(kernels, p, nullptr, n, lambda.data(), w.data());
+  for (std::size_t i = 0; i < n; ++i) w[i] = (-p.b[i] + eps * lambda[i]) + w[i];
   return ComplementarityResidual(Rows(p), lambda, w);
 }
 
@@ -176,13 +176,15 @@ const std::vector<int> &SparseBackend::factorOrder() const {
 /* y = (A + eps I)_FF x, the free rows in the order `rows`. Leaves x
  * scattered in cgFull_ (for productScale). */
 void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y) {
-  /* x scattered to all n rows (zero on the clamped ones): then every stored
-   * entry multiplies without a test. */
+  /* y = (A + eps I)_FF x (y must not overlap x). x scattered to all n rows
+   * (zero on the clamped ones): then every stored entry multiplies without
+   * a test. */
   const SparseLcpProblem &p = *p_;
   const std::size_t m = rows.size();
   cgFull_.assign(static_cast<std::size_t>(p.n), MeReal(0));
   for (std::size_t a = 0; a < m; ++a) cgFull_[U(rows[a])] = x[a];
-  for (std::size_t a = 0; a < m; ++a) y[a] = eps_ * x[a] + RowTimes(*kernels_, p, U(rows[a]), cgFull_.data());
+  RowsTimes(*kernels_, p, rows.data(), m, cgFull_.data(), y.data());
+  for (std::size_t a = 0; a < m; ++a) y[a] = eps_ * x[a] + y[a];
 }
 
 /* The largest component of (|A + eps I|)_FF |x| (the scale of the rounding

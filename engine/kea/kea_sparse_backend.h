@@ -59,8 +59,8 @@
 
 namespace karma::kea::detail {
 
-/* w = (A + eps I) lambda - b over the CSR rows (w: n values); returns the
- * contract's residual of lambda. */
+/* w = (A + eps I) lambda - b over the CSR rows (w: n values, not
+ * overlapping lambda); returns the contract's residual of lambda. */
 MeReal SparseMultiplyResidual(const platform::Kernels &kernels, const SparseLcpProblem &p, MeReal eps,
                               std::span<const MeReal> lambda, std::span<MeReal> w);
 
@@ -100,10 +100,7 @@ class SparseBackend {
              MeReal target = 0);
 
   /* The backend of the array kernels from now on (default: the reference). */
-  void useKernels(const platform::Kernels &kernels) {
-    kernels_ = &kernels;
-    envelope_.kernels = &kernels;
-  }
+  void useKernels(const platform::Kernels &kernels) { kernels_ = &kernels; }
 
   /* See kea_activeset_core.h. */
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w);

@@ -7,11 +7,6 @@
 
 namespace karma::platform {
 
-/* AVX2's reductions (avx2.cpp), which avx512.cpp also uses for floats:
- * eight float lanes are one 256-bit register either way. */
-MeReal Avx2Dot(const MeReal *a, const MeReal *b, int n);
-MeReal Avx2GatherDot(const MeReal *value, const int *index, const MeReal *x, int n);
-
 extern const Kernels kReferenceKernels; /* reference.cpp */
 extern const Kernels kSse4Kernels;      /* sse4.cpp */
 extern const Kernels kAvx2Kernels;      /* avx2.cpp */

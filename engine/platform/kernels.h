@@ -21,15 +21,20 @@
  * 8-lane vector accumulator gives, so a SIMD backend keeps one accumulator
  * per lane.
  *
- * Calls. Callers go through Dot, GatherDot and SubtractScaled below: an
- * array shorter than kLanes has nothing to vectorise, and is done by the
- * inline reference code (the same bits) instead of an indirect call.
+ * Calls. Callers go through Dot and GatherDot below: an array shorter than
+ * kLanes has nothing to vectorise, and is done by the inline reference code
+ * (the same bits) instead of an indirect call. A loop of many short
+ * reductions (a sparse product) is a whole routine in the table, so the
+ * indirect call is paid once per loop.
  *
- * What is here: the array kernels of Kea's sparse path, which profiling
- * puts at the top of a large scene's step (the envelope factorisation and
- * solves, sparse products). The per-row three-vector operations of the
- * assembly (reference_inline.h) are called inline: a table entry would cost
- * an indirect call per six flops, and there is nothing to batch in them.
+ * What is here: the array kernels of Kea's sparse path (its sparse
+ * products, the conjugate-gradient dots of its stale solves, the sparse PGS
+ * sweep). What is not: the per-row three-vector operations of the assembly
+ * (reference_inline.h), called inline, as a table entry would cost an
+ * indirect call per six flops; and the envelope LDL^T and its triangular
+ * solves (kea_envelope_ldlt.h), recurrences whose speed is the latency from
+ * one result to the next, which vector reductions lengthen
+ * (docs/NOTES.md, "Envelope recurrences").
  * Counts n may be 0. */
 #ifndef KARMA_PLATFORM_KERNELS_H
 #define KARMA_PLATFORM_KERNELS_H
@@ -52,9 +57,12 @@ struct Kernels {
    * in the lane order above. */
   MeReal (*gatherDot)(const MeReal *value, const int *index, const MeReal *x, int n);
 
-  /* y[k] -= alpha x[k] for k < n, each product rounded, then the
-   * difference (x and y must not overlap). */
-  void (*subtractScaled)(MeReal alpha, const MeReal *x, MeReal *y, int n);
+  /* A whole routine (routines.inc): y[a] = sum_{rowStart[i] <= k <
+   * rowStart[i+1]} val[k] x[col[k]] with i = rows[a] (i = a when rows is
+   * null), for a < count: CSR rows times a dense vector, each row a
+   * gatherDot (y must not overlap x). */
+  void (*sparseRowsTimes)(const int *rowStart, const int *col, const MeReal *val, const int *rows, int count,
+                          const MeReal *x, MeReal *y);
 };
 
 /* Every backend, reference first, then in order of preference (the last
@@ -99,13 +107,6 @@ inline MeReal Dot(const Kernels &kernels, const MeReal *a, const MeReal *b, int 
 inline MeReal GatherDot(const Kernels &kernels, const MeReal *value, const int *index, const MeReal *x, int n) {
   return n < kLanes ? reference::GatherDot(value, index, x, n) : kernels.gatherDot(value, index, x, n);
 }
-inline void SubtractScaled(const Kernels &kernels, MeReal alpha, const MeReal *x, MeReal *y, int n) {
-  if (n < kLanes)
-    reference::SubtractScaled(alpha, x, y, n);
-  else
-    kernels.subtractScaled(alpha, x, y, n);
-}
-
 }  // namespace karma::platform
 
 #endif

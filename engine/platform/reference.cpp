@@ -16,11 +16,13 @@ MeReal RefGatherDot(const MeReal *value, const int *index, const MeReal *x, int 
   return reference::GatherDot(value, index, x, n);
 }
 
-void RefSubtractScaled(MeReal alpha, const MeReal *x, MeReal *y, int n) { reference::SubtractScaled(alpha, x, y, n); }
+#define KARMA_ROUTINE_TARGET
+#define KARMA_ROUTINE_GATHER_DOT reference::GatherDot
+#include "routines.inc"
 
 }  // namespace
 
-const Kernels kReferenceKernels = {"reference", RefDot, RefGatherDot, RefSubtractScaled};
+const Kernels kReferenceKernels = {"reference", RefDot, RefGatherDot, RoutineSparseRowsTimes};
 
 const Kernels &ReferenceKernels() { return kReferenceKernels; }
 

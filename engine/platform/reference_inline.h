@@ -70,10 +70,6 @@ inline MeReal GatherDot(const MeReal *value, const int *index, const MeReal *x, 
   return LaneSum(s);
 }
 
-inline void SubtractScaled(MeReal alpha, const MeReal *x, MeReal *y, int n) {
-  for (int k = 0; k < n; ++k) y[k] -= alpha * x[k];
-}
-
 }  // namespace karma::platform::reference
 
 #endif

@@ -70,20 +70,12 @@ KARMA_SSE4 MeReal Sse4GatherDot(const MeReal *value, const int *index, const MeR
   return reference::LaneSum(s);
 }
 
-KARMA_SSE4 void Sse4SubtractScaled(MeReal alpha, const MeReal *x, MeReal *y, int n) {
-  int k = 0;
-#if !KARMA_DOUBLE
-  const __m128 a = _mm_set1_ps(alpha);
-  for (; k + 4 <= n; k += 4) _mm_storeu_ps(y + k, _mm_sub_ps(_mm_loadu_ps(y + k), _mm_mul_ps(a, _mm_loadu_ps(x + k))));
-#else
-  const __m128d a = _mm_set1_pd(alpha);
-  for (; k + 2 <= n; k += 2) _mm_storeu_pd(y + k, _mm_sub_pd(_mm_loadu_pd(y + k), _mm_mul_pd(a, _mm_loadu_pd(x + k))));
-#endif
-  for (; k < n; ++k) y[k] -= alpha * x[k];
-}
+#define KARMA_ROUTINE_TARGET KARMA_SSE4
+#define KARMA_ROUTINE_GATHER_DOT Sse4GatherDot
+#include "routines.inc"
 
 }  // namespace
 
-const Kernels kSse4Kernels = {"sse4", Sse4Dot, Sse4GatherDot, Sse4SubtractScaled};
+const Kernels kSse4Kernels = {"sse4", Sse4Dot, Sse4GatherDot, RoutineSparseRowsTimes};
 
 }  // namespace karma::platform

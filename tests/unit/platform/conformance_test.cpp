@@ -64,13 +64,21 @@ void ExpectSameAsReference(const Kernels &k, const Inputs &in, const std::string
   const MeReal g = k.gatherDot(in.a.data(), in.index.data(), in.b.data(), n);
   const MeReal refG = r.gatherDot(in.a.data(), in.index.data(), in.b.data(), n);
   EXPECT_TRUE(SameBits(g, refG)) << k.name << " gatherDot, " << what << ", n " << n << ": " << g << " vs " << refG;
-  std::vector<MeReal> y(in.b.begin(), in.b.begin() + n), refY = y;
-  const MeReal alpha = n > 0 ? in.a[0] + MeReal(0.375) : MeReal(2);
-  k.subtractScaled(alpha, in.a.data(), y.data(), n);
-  r.subtractScaled(alpha, in.a.data(), refY.data(), n);
-  for (int i = 0; i < n; ++i)
-    EXPECT_TRUE(SameBits(y[static_cast<std::size_t>(i)], refY[static_cast<std::size_t>(i)]))
-        << k.name << " subtractScaled, " << what << ", n " << n << ", element " << i;
+  // sparseRowsTimes: the inputs as three CSR rows of about n / 3 entries,
+  // every row and then rows 2 and 0 alone.
+  const std::vector<int> rowStart = {0, n / 3, (2 * n) / 3, n}, some = {2, 0};
+  for (const std::vector<int> *rows : {static_cast<const std::vector<int> *>(nullptr), &some}) {
+    const int count = rows ? static_cast<int>(rows->size()) : 3;
+    const int *at = rows ? rows->data() : nullptr;
+    std::vector<MeReal> y(3, MeReal(-7)), refY = y;
+    k.sparseRowsTimes(rowStart.data(), in.index.data(), in.a.data(), at, count, in.b.data(), y.data());
+    r.sparseRowsTimes(rowStart.data(), in.index.data(), in.a.data(), at, count, in.b.data(), refY.data());
+    for (std::size_t i = 0; i < 3; ++i)
+      EXPECT_TRUE(SameBits(y[i], refY[i])) << k.name << " sparseRowsTimes, " << what << ", n " << n << ", y " << i;
+    if (count < 3) {
+      EXPECT_EQ(y[static_cast<std::size_t>(count)], MeReal(-7)) << k.name << " wrote past count";
+    }
+  }
 }
 
 class Backend : public ::testing::TestWithParam<std::string> {
@@ -123,6 +131,11 @@ TEST(PlatformReference, ReductionsFollowTheLaneOrderWrittenOut) {
     const MeReal wantG = ((g[0] + g[4]) + (g[2] + g[6])) + ((g[1] + g[5]) + (g[3] + g[7]));
     EXPECT_TRUE(SameBits(Reference().dot(in.a.data(), in.b.data(), n), want)) << "n " << n;
     EXPECT_TRUE(SameBits(Reference().gatherDot(in.a.data(), in.index.data(), in.b.data(), n), wantG)) << "n " << n;
+    // One CSR row of all n entries is one gatherDot.
+    const int rowStart[2] = {0, n};
+    MeReal row = -1;
+    Reference().sparseRowsTimes(rowStart, in.index.data(), in.a.data(), nullptr, 1, in.b.data(), &row);
+    EXPECT_TRUE(SameBits(row, wantG)) << "n " << n;
   }
 }
 

@@ -33,11 +33,11 @@ struct PinnedHash {
 
 // clang-format off
 constexpr PinnedHash kPinned[] = {
-    {"car",      300,  "0xd979b8cf10ee74fa", "0xcd5097a0ac3077f8"},
-    {"topple",   600,  "0x1b70de3477294acd", "0xce2a4659bbfffd46"},
-    {"ragdoll",  600,  "0xd6ba3378e6f6fc40", "0x7bab175e8268ebf9"},
-    {"stack21",  1200, "0xd4a63600c26892c2", "0x98c2ce309338eb01"},
-    {"pile1000", 60,   "0x3ec3bee71c401415", "0x92b299bc76fb8f4e"},
+    {"car",      300,  "0x245c1392d39b71f1", "0xf83710fe4aa42475"},
+    {"topple",   600,  "0x2f43351cc406d168", "0x124905f8fec950bc"},
+    {"ragdoll",  600,  "0x36c98103f630131b", "0x7074b9ab3a44e4aa"},
+    {"stack21",  1200, "0xf91036733404e962", "0xaebbf50693e3fe1c"},
+    {"pile1000", 60,   "0x15b056f0fca7a38b", "0xd6fa6268492c732f"},
 };
 // clang-format on
 
