@@ -5,7 +5,7 @@
 // made so far, dv = M^-1 J^T lambda; row i's slack is then
 //     w_i = J_i dv + softness_i lambda_i - rhs_i,
 // and one Gauss-Seidel update of row i is
-//     lambda_i <- clamp(lambda_i - w_i / d_i, lo_i, hi_i),
+//     lambda_i <- clamp(lambda_i - w_i (1 / d_i), lo_i, hi_i),
 //     d_i = J_i M^-1 J_i^T + softness_i,
 // followed by dv += M^-1 J_i^T (change of lambda_i). A friction row's bounds
 // are +-mu_i times its normal row's current impulse. This is Gauss-Seidel on
@@ -27,6 +27,13 @@
 // (default 50) or once a sweep changes no row's velocity by more than the
 // tolerance times (1 + max |rhs|); it returns the last iterate (its natural-
 // map residual, as in kea_lcp.h, is reported).
+//
+// Arithmetic for speed: a sweep is one chain of dependent updates (each
+// row reads the dv the previous one wrote), so its time is the latency of
+// one update, not its flops. The update multiplies by 1 / d_i, kept per
+// row, instead of dividing; six-term dots add in pairs, a tree three
+// additions deep; the part of the slack that does not depend on dv
+// (softness_i lambda_i - rhs_i) is added to J_i dv last.
 #include <algorithm>
 #include <cmath>
 
@@ -51,7 +58,7 @@ struct PgsRow {
   MeReal J[12];
   MeReal mj[12];
   int dv0, dv1;
-  MeReal diag, softness, rhs, lo, hi, mu;
+  MeReal diag, invDiag, softness, rhs, lo, hi, mu;  // invDiag = 1 / diag, 0 for a null row
   int normal;  // a friction row's normal row, else -1
 };
 
@@ -68,7 +75,7 @@ struct Workspace {
 };
 
 MeReal dot6(const MeReal *a, const MeReal *b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5];
+  return ((a[0] * b[0] + a[1] * b[1]) + (a[2] * b[2] + a[3] * b[3])) + (a[4] * b[4] + a[5] * b[5]);
 }
 
 // A block qualifies when its rows share both bodies (a contact group's do)
@@ -155,6 +162,7 @@ PgsRow gatherRow(const BodySpaceProblem &p, int i) {
     d += dot6(r.J + side * 6, r.mj + side * 6);
   }
   r.diag = d;
+  r.invDiag = d > 0 ? 1 / d : 0;
   r.softness = p.softness[k];
   r.rhs = p.rhs[k];
   r.lo = p.lo[k];
@@ -193,9 +201,9 @@ MeReal rowVelocity(const PgsRow &r, const MeReal *dv) {
   return v;
 }
 
-// w_i = J_i dv + softness_i lambda_i - rhs_i.
+// w_i = J_i dv + (softness_i lambda_i - rhs_i).
 MeReal rowSlack(const PgsRow &r, const MeReal *dv, MeReal lambda) {
-  return rowVelocity(r, dv) + r.softness * lambda - r.rhs;
+  return rowVelocity(r, dv) + (r.softness * lambda - r.rhs);
 }
 
 // dv += M^-1 J_i^T * delta.
@@ -216,7 +224,7 @@ MeReal update(Workspace &w, std::span<MeReal> lambda, int i) {
   MeReal lo, hi;
   bounds(r, lambda, lo, hi);
   const MeReal old = lambda[(size_t)i];
-  const MeReal next = std::clamp(old - slack / d, lo, hi);
+  const MeReal next = std::clamp(old - slack * r.invDiag, lo, hi);
   lambda[(size_t)i] = next;
   push(r, dv, next - old);
   return std::fabs(next - old) * d;

@@ -37,7 +37,7 @@ constexpr PinnedHash kPinned[] = {
     {"topple",   600,  "0x2f43351cc406d168", "0x124905f8fec950bc"},
     {"ragdoll",  600,  "0x36c98103f630131b", "0x7074b9ab3a44e4aa"},
     {"stack21",  1200, "0xf91036733404e962", "0xaebbf50693e3fe1c"},
-    {"pile1000", 60,   "0x15b056f0fca7a38b", "0xd6fa6268492c732f"},
+    {"pile1000", 60,   "0xd167d8b7f341b9c1", "0x37750d4e37051bb3"},
 };
 // clang-format on
 
