@@ -45,8 +45,7 @@ KARMA_AVX2_INLINE __m256 Gather(const float *x, const int *at) {
   return _mm256_set_ps(x[at[7]], x[at[6]], x[at[5]], x[at[4]], x[at[3]], x[at[2]], x[at[1]], x[at[0]]);
 }
 
-/* The partial sums of a[k] b[k], k < n. */
-KARMA_AVX2_INLINE __m256 DotLanes(const float *a, const float *b, int n) {
+KARMA_AVX2_INLINE float Dot(const float *a, const float *b, int n) {
   __m256 acc = _mm256_setzero_ps();
   int k = 0;
   for (; k + kLanes <= n; k += kLanes)
@@ -55,10 +54,8 @@ KARMA_AVX2_INLINE __m256 DotLanes(const float *a, const float *b, int n) {
     const __m256i m = FirstLanes(n - k);
     acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_maskload_ps(a + k, m), _mm256_maskload_ps(b + k, m)));
   }
-  return acc;
+  return LaneSum(acc);
 }
-
-KARMA_AVX2_INLINE float Dot(const float *a, const float *b, int n) { return LaneSum(DotLanes(a, b, n)); }
 
 /* x[at[l]] for l < count (count < 8), zero in the other lanes, lane by lane. */
 KARMA_AVX2_INLINE __m256 GatherFirst(const float *x, const int *at, int count) {
@@ -110,10 +107,9 @@ KARMA_AVX2_INLINE __m256d Gather(const double *x, const int *at) {
   return _mm256_set_pd(x[at[3]], x[at[2]], x[at[1]], x[at[0]]);
 }
 
-/* The partial sums of a[k] b[k], k < n: lanes 0-3 in lo, 4-7 in hi. */
-KARMA_AVX2_INLINE void DotLanes(const double *a, const double *b, int n, __m256d &lo, __m256d &hi) {
-  lo = _mm256_setzero_pd();
-  hi = _mm256_setzero_pd();
+/* Lanes 0-3 in lo, 4-7 in hi. */
+KARMA_AVX2_INLINE double Dot(const double *a, const double *b, int n) {
+  __m256d lo = _mm256_setzero_pd(), hi = _mm256_setzero_pd();
   int k = 0;
   for (; k + kLanes <= n; k += kLanes) {
     lo = _mm256_add_pd(lo, _mm256_mul_pd(_mm256_loadu_pd(a + k), _mm256_loadu_pd(b + k)));
@@ -124,11 +120,6 @@ KARMA_AVX2_INLINE void DotLanes(const double *a, const double *b, int n, __m256d
     lo = _mm256_add_pd(lo, _mm256_mul_pd(_mm256_maskload_pd(a + k, m0), _mm256_maskload_pd(b + k, m0)));
     hi = _mm256_add_pd(hi, _mm256_mul_pd(_mm256_maskload_pd(a + k + 4, m1), _mm256_maskload_pd(b + k + 4, m1)));
   }
-}
-
-KARMA_AVX2_INLINE double Dot(const double *a, const double *b, int n) {
-  __m256d lo, hi;
-  DotLanes(a, b, n, lo, hi);
   return LaneSum(lo, hi);
 }
 
