@@ -51,6 +51,18 @@ bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, MeReal iteratio
   return static_cast<MeReal>(factorCost) > (2 + iterations) * static_cast<MeReal>(nnz + 2 * e.size());
 }
 
+/* Whether the free block (m rows) of an n x n matrix with nnz stored
+ * entries is taken by the dense LDL^T: m at most kDenseRows and the matrix
+ * at least a third full. Such a block costs the envelope's Crout order
+ * about as many multiply-adds as the dense factorisation, but there each
+ * one ends a dot product waiting on the entry before, while the dense
+ * updates run in vector lanes and skip the pairs of rows that do not meet
+ * (docs/NOTES.md, "Dense small blocks"). Decided from the whole matrix,
+ * once per problem, without looking at the free block's entries. */
+bool DenseFits(std::size_t m, std::size_t n, std::size_t nnz) {
+  return m <= SparseBackend::kDenseRows && 3 * nnz >= n * n;
+}
+
 }  // namespace
 
 /* Whether `p` has the sparsity and eps of the problem the kept factor was
@@ -93,11 +105,16 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   const auto n = static_cast<std::size_t>(p.n);
   position_.assign(n, -1);
   naturalRows_.reserve(n);
+  denseRows_.reserve(n);
+  degreeOrder_.reserve(n);
+  degreeRowStart_.reserve(n + 1);
+  denseMapRows_.reserve(n);
   /* Reverse Cuthill-McKee scratch (computeBandOrder). */
   bandRank_.reserve(n);
   queue_.reserve(n);
   factoredSet_.reserve(n);
   rhs_.reserve(n);
+  rhsFull_.reserve(n);
   x_.reserve(n);
   wScratch_.reserve(n);
   /* Room for the largest envelope the rule below accepts, so that no free
@@ -107,6 +124,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
     accepted = static_cast<std::size_t>(envelopeRows) * (static_cast<std::size_t>(envelopeRows) + 1) / 2;
   if (envelopeRows < 0) accepted = 0;
   envelope_.reserve(n, std::min(accepted, n * (n + 1) / 2));
+  dense_.reserve(std::min(n, kDenseRows));
   envelopeRows_ = envelopeRows;
   order_.clear();
   bandOrder_.clear();
@@ -159,7 +177,9 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
     ++factorizations_;
     stale_ = false;
   }
-  if (factor_ != Factor::Sparse) {
+  if (factor_ == Factor::Dense) {
+    dense_.solve(rhs_, x_);
+  } else if (factor_ != Factor::Sparse) {
     envelope_.solve(rhs_, x_);
   } else if (!solveSparse(m)) {
     fallback(set, lambda);
@@ -170,6 +190,7 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
 
 /* The free rows in the kept factor's order. */
 const std::vector<int> &SparseBackend::factorOrder() const {
+  if (factor_ == Factor::Dense) return denseRows_;
   return factor_ == Factor::Envelope ? naturalRows_ : factor_ == Factor::BandEnvelope ? bandRows_ : orderedRows_;
 }
 
@@ -278,6 +299,8 @@ bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows) {
 std::span<const int> SparseBackend::factorRows() const {
   if (stale_) return {}; /* its solves are not exact: no coupled friction step on it */
   switch (factor_) {
+    case Factor::Dense:
+      return denseRows_;
     case Factor::Envelope:
       return naturalRows_;
     case Factor::BandEnvelope:
@@ -290,6 +313,10 @@ std::span<const int> SparseBackend::factorRows() const {
 }
 
 void SparseBackend::solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x) {
+  if (factor_ == Factor::Dense) {
+    dense_.solve(rhs, x);
+    return;
+  }
   if (factor_ != Factor::Sparse) {
     envelope_.solve(rhs, x);
     return;
@@ -307,29 +334,42 @@ void SparseBackend::column(int row, std::span<const int> position, std::span<MeR
   }
 }
 
+/* rhs = b_F - A_FC lambda_C, by the clamped rows: A is symmetric, so
+ * column j of A_FC is row j's CSR entries, and each clamped row j, in
+ * ascending order, subtracts its terms from every row it meets. Each free
+ * row thus loses its clamped columns' terms in ascending column order, as
+ * a row-by-row sum would, at the cost of the clamped rows' entries only. */
 void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set,
                              const std::vector<MeReal> &lambda) {
-  /* rhs = b_F - A_FC lambda_C */
   const SparseLcpProblem &p = *p_;
-  rhs_.resize(rows.size());
-  for (std::size_t a = 0; a < rows.size(); ++a) {
-    const auto i = U(rows[a]);
-    MeReal r = p.b[i];
-    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
-      const auto j = U(p.col[U(k)]);
-      if (set[j] != Free) r -= p.val[U(k)] * lambda[j];
+  const auto n = static_cast<std::size_t>(p.n);
+  rhsFull_.assign(p.b.begin(), p.b.begin() + static_cast<std::ptrdiff_t>(n));
+  for (std::size_t j = 0; j < n; ++j) {
+    if (set[j] == Free || lambda[j] == 0) continue; /* a zero lambda subtracts nothing */
+    const MeReal lj = lambda[j];
+    for (int k = p.rowStart[j]; k < p.rowStart[j + 1]; ++k) {
+      const auto i = U(p.col[U(k)]);
+      rhsFull_[i] -= p.val[U(k)] * lj;
     }
-    rhs_[a] = r;
   }
+  rhs_.resize(rows.size());
+  for (std::size_t a = 0; a < rows.size(); ++a) rhs_[a] = rhsFull_[U(rows[a])];
 }
 
 /* The choice of factorisation for the free block (see
- * kea_sparse_backend.h): the envelope in the rows' own order when it is a
- * band; else, under the default rule, the envelope in reverse Cuthill-McKee
+ * kea_sparse_backend.h): under the default rule, the dense LDL^T when the
+ * block is small and the matrix full enough (DenseFits) and it does not
+ * break down; else the envelope in the rows' own order when it is a band;
+ * else, under the default rule, the envelope in reverse Cuthill-McKee
  * order when the block is small or that order makes it a band; else the
  * sparse LDL^T. */
 void SparseBackend::factorise(const std::vector<unsigned char> &set) {
   const std::size_t m = naturalRows_.size();
+  if (envelopeRows_ == 0 && DenseFits(m, U(p_->n), U(p_->rowStart[U(p_->n)])) && factoriseDense(set)) {
+    staleWorthIt_ = memory_ == KeaFactorMemory::Always;
+    rememberSparsity();
+    return;
+  }
   if (envelopeRows_ >= 0) {
     if (!orderChosen_) chooseEnvelopeOrder();
     if (useBandOrder_) {
@@ -440,6 +480,75 @@ void SparseBackend::fillEnvelope(const std::vector<int> &rows) {
     envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(a))] += eps_;
   }
   for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
+}
+
+/* Where each stored entry of a free row goes in the dense block
+ * (denseIndex_: row-major index, -1 in a clamped column), for the rows
+ * denseRows_ of the sparsity rowStart, col (kept with it: a new problem
+ * with the same sparsity and free rows reuses the map). */
+void SparseBackend::mapDense() {
+  const SparseLcpProblem &p = *p_;
+  const std::vector<int> &rows = denseRows_;
+  const std::size_t m = rows.size();
+  const auto stride = U(dense_.stride);
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
+  denseIndex_.assign(p.col.size(), -1);
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto i = U(rows[a]);
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int c = position_[U(p.col[U(k)])];
+      if (c >= 0) denseIndex_[U(k)] = static_cast<int>(a * stride + U(c));
+    }
+  }
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
+  denseMapRows_ = rows;
+  denseMapCol_.assign(p.col.begin(), p.col.end());
+}
+
+/* All rows by their number of nonzeros, then by index (std::sort: no
+ * allocation), for the row lengths in degreeRowStart_ (a new problem with
+ * the same lengths keeps the order). */
+void SparseBackend::computeDegreeOrder() {
+  const SparseLcpProblem &p = *p_;
+  degreeOrder_.resize(U(p.n));
+  for (std::size_t i = 0; i < degreeOrder_.size(); ++i) degreeOrder_[i] = static_cast<int>(i);
+  const auto degree = [&p](int i) { return p.rowStart[U(i) + 1] - p.rowStart[U(i)]; };
+  std::sort(degreeOrder_.begin(), degreeOrder_.end(),
+            [&](int a, int b) { return degree(a) != degree(b) ? degree(a) < degree(b) : a < b; });
+  degreeRowStart_.assign(p.rowStart.begin(), p.rowStart.end());
+}
+
+/* The free block (A + eps I)_FF factorised densely, its rows ordered by
+ * their number of nonzeros in A, then by index (denseRows_): a row that
+ * meets few others is eliminated before the fill reaches it (see
+ * kea_dense_ldlt.h). False on breakdown (the envelope path then takes the
+ * block, with its least-squares fallback). */
+bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
+  const SparseLcpProblem &p = *p_;
+  if (!std::equal(p.rowStart.begin(), p.rowStart.end(), degreeRowStart_.begin(), degreeRowStart_.end())) {
+    computeDegreeOrder();
+    denseMapRows_.clear(); /* other rows' extents: the map is made again */
+  }
+  std::vector<int> &rows = denseRows_;
+  rows.clear();
+  for (int i : degreeOrder_)
+    if (set[U(i)] == Free) rows.push_back(i);
+  const std::size_t m = rows.size();
+  dense_.begin(static_cast<int>(m));
+  if (rows != denseMapRows_ || !std::equal(p.col.begin(), p.col.end(), denseMapCol_.begin(), denseMapCol_.end()))
+    mapDense();
+  MeReal *upper = dense_.upper.data();
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto i = U(rows[a]);
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
+      const int at = denseIndex_[U(k)];
+      if (at >= 0) upper[at] = p.val[U(k)]; /* both triangles: the lower is scratch */
+    }
+    upper[a * U(dense_.stride) + a] += eps_;
+  }
+  if (!dense_.factor()) return false;
+  factor_ = Factor::Dense;
+  return true;
 }
 
 /* Reverse Cuthill-McKee on the whole matrix's graph (rows joined by a

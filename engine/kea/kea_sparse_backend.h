@@ -2,7 +2,16 @@
  * (kea_activeset_core.h) for a matrix in compressed sparse rows (not
  * installed).
  *
- * The free block (A + eps I)_FF is factorised one of two ways:
+ * The free block (A + eps I)_FF is factorised one of three ways:
+ *
+ *  - Dense LDL^T (kea_dense_ldlt.h), under the default rule, for blocks
+ *    of at most kDenseRows rows of a matrix at least a third full
+ *    (DenseFits; a car, whose rows all share the chassis): the envelope's
+ *    Crout order would be a chain of dot products, each waiting on the
+ *    entry before, while the dense updates run in vector lanes
+ *    (docs/NOTES.md, "Dense small blocks"). Such a factor is not kept as a
+ *    stale one (below) unless the memory is KeaFactorMemory::Always:
+ *    refactorising costs about as much as one conjugate-gradient step.
  *
  *  - Envelope LDL^T (kea_envelope_ldlt.h), allocation-free once its arrays
  *    have grown to the problem, and faster than the sparse LDL^T on small
@@ -47,6 +56,7 @@
 #ifndef KARMA_KEA_SPARSE_BACKEND_H
 #define KARMA_KEA_SPARSE_BACKEND_H
 
+#include "kea_dense_ldlt.h"
 #include "kea_envelope_ldlt.h"
 #include "kea_internal.h"
 
@@ -73,6 +83,10 @@ class SparseBackend {
   /* Larger blocks take it when their mean envelope row width is at most
    * this (a band: chains, stacks). */
   static constexpr std::size_t kEnvelopeWidth = 32;
+  /* Free blocks up to this many rows of a matrix at least a third full
+   * (DenseFits) are factorised densely (kea_dense_ldlt.h), under the
+   * default rule only. */
+  static constexpr std::size_t kDenseRows = DenseLdlt::kMaxRows;
   /* Breakdown of the sparse factorisation: dense least squares up to this
    * size. */
   static constexpr std::size_t kDenseFallback = 600;
@@ -123,7 +137,7 @@ class SparseBackend {
   int staleIterations() const { return staleIterations_; }
 
  private:
-  enum class Factor { None, Envelope, BandEnvelope, Sparse };
+  enum class Factor { None, Dense, Envelope, BandEnvelope, Sparse };
 
   void buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set, const std::vector<MeReal> &lambda);
   bool sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const;
@@ -137,6 +151,9 @@ class SparseBackend {
   void factorise(const std::vector<unsigned char> &set);
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   void fillEnvelope(const std::vector<int> &rows);
+  bool factoriseDense(const std::vector<unsigned char> &set);
+  void computeDegreeOrder();
+  void mapDense();
   void chooseEnvelopeOrder();
   void computeBandOrder();
   void computeOrder();
@@ -169,14 +186,21 @@ class SparseBackend {
   /* The free rows ascending (naturalRows_), in elimination order
    * (orderedRows_, sparse path), and the free rows of the kept factor. */
   std::vector<int> naturalRows_, orderedRows_, factoredSet_;
+  /* All rows, fewest nonzeros first, the rowStart it was made for, and
+   * the free rows in that order (the dense factor's). */
+  std::vector<int> degreeOrder_, degreeRowStart_, denseRows_;
+  /* Where the free rows' entries go in the dense block, and the rows and
+   * columns the map was made for (mapDense). */
+  std::vector<int> denseIndex_, denseMapRows_, denseMapCol_;
   /* The whole matrix's rows in reverse Cuthill-McKee order, and the free
    * rows in that order (envelope path when the natural order is wide). */
   std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
   bool orderChosen_ = false, useBandOrder_ = false;
   std::vector<int> position_, order_, rank_, upStart_, upRow_;
   std::vector<std::pair<int, int>> entries_;
-  std::vector<MeReal> upVal_, wScratch_, rhs_, x_;
+  std::vector<MeReal> upVal_, wScratch_, rhs_, rhsFull_, x_;
   EnvelopeSystem envelope_;
+  DenseLdlt dense_;
   SpMat block_;
   PreorderedLdlt ldlt_;
   Factor factor_ = Factor::None;

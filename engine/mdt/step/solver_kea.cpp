@@ -98,38 +98,59 @@ void layoutColumns(const BodySpaceProblem &p, std::span<const int> bodyRowStart,
   }
 }
 
+// How the lower-triangle entries (i, j), j <= i, are summed, once per
+// sparsity: share[k] tells, for each side of row i, which side of row j
+// acts on the same body (2 bits a side: 0 none, 1 body 0, 2 body 1), and
+// mirror[k] is the index of (j, i). Rows are visited in ascending order, so
+// the entries above row j's diagonal are reached in ascending column order:
+// next[j] walks them.
+void layoutShares(const BodySpaceProblem &p, std::span<const int> rowStart, std::span<const int> col,
+                  std::span<const int> diagonal, std::span<int> next, std::span<unsigned char> share,
+                  std::span<int> mirror) {
+  for (int i = 0; i < p.rowCount; ++i) next[(size_t)i] = diagonal[(size_t)i] + 1;
+  for (int i = 0; i < p.rowCount; ++i) {
+    const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
+    for (int k = rowStart[(size_t)i]; k <= diagonal[(size_t)i]; ++k) {
+      const int j = col[(size_t)k];
+      unsigned code = 0;
+      for (int side = 0; side < 2; ++side) {
+        const int bi = bodies[side];
+        if (bi < 0) continue;
+        const unsigned sideJ = p.body0[(size_t)j] == bi ? 1u : p.body1[(size_t)j] == bi ? 2u : 0u;
+        code |= sideJ << (2 * side);
+      }
+      share[(size_t)k] = (unsigned char)code;
+      mirror[(size_t)k] = j == i ? k : next[(size_t)j]++;
+    }
+  }
+}
+
 // A's values. Entry (i, j) is summed over the bodies the two rows share,
 //     A_ij = sum_b J_i,b . (M_b^-1 J_j,b^T)   (+ softness_i when j = i),
 // body 0 of row i first; `entry` is one body's share (the reference
 // RowPairEntry). Only j <= i is computed: A is symmetric, and (i, j) is
-// copied to (j, i). Rows are visited in ascending order, so the entries
-// above row j's diagonal are reached in ascending column order: next[j]
-// walks them.
+// copied to (j, i).
 template <class Entry>
 void fillValues(const BodySpaceProblem &p, std::span<const MeReal> mj, std::span<const int> diagonal,
-                std::span<int> next, Csr &a, Entry entry) {
-  for (int i = 0; i < p.rowCount; ++i) next[(size_t)i] = diagonal[(size_t)i] + 1;
+                std::span<const unsigned char> share, std::span<const int> mirror, Csr &a, Entry entry) {
   for (int i = 0; i < p.rowCount; ++i) {
     const MeReal *Ji = &p.J[(size_t)i * 12];
-    const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
     for (int k = a.rowStart[(size_t)i]; k <= diagonal[(size_t)i]; ++k) {
-      const int j = a.col[(size_t)k];
+      const MeReal *mjj = &mj[(size_t)a.col[(size_t)k] * 12];
+      const unsigned code = share[(size_t)k];
       MeReal v = 0;
-      for (int side = 0; side < 2; ++side) {
-        const int bi = bodies[side];
-        if (bi < 0) continue;
-        const int sideJ = p.body0[(size_t)j] == bi ? 0 : p.body1[(size_t)j] == bi ? 1 : -1;
-        if (sideJ < 0) continue;
-        const MeReal *mjj = &mj[(size_t)j * 12 + (size_t)(sideJ * 6)];
-        v += entry(Ji + side * 6, Ji + side * 6 + 3, mjj, mjj + 3);
+      if (const unsigned sideJ = code & 3u; sideJ != 0) {
+        const MeReal *m = mjj + (sideJ - 1) * 6;
+        v += entry(Ji, Ji + 3, m, m + 3);
       }
-      if (j == i) {
-        a.val[(size_t)k] = v + p.softness[(size_t)i];
-      } else {
-        a.val[(size_t)k] = v;
-        a.val[(size_t)next[(size_t)j]++] = v;
+      if (const unsigned sideJ = code >> 2; sideJ != 0) {
+        const MeReal *m = mjj + (sideJ - 1) * 6;
+        v += entry(Ji + 6, Ji + 9, m, m + 3);
       }
+      a.val[(size_t)k] = v;
+      a.val[(size_t)mirror[(size_t)k]] = v;
     }
+    a.val[(size_t)diagonal[(size_t)i]] += p.softness[(size_t)i];
   }
 }
 
@@ -140,7 +161,8 @@ struct PartitionMemory {
   std::uintptr_t identity = 0;
   std::uint64_t lastUse = 0;
   kea::KeaWorkspace *workspace = nullptr;
-  std::vector<int> body0, body1, rowStart, col, diagonal;
+  std::vector<int> body0, body1, rowStart, col, diagonal, mirror;
+  std::vector<unsigned char> share;
 
   bool sameBodies(const BodySpaceProblem &p) const {
     return body0.size() == p.body0.size() && std::equal(body0.begin(), body0.end(), p.body0.begin()) &&
@@ -166,7 +188,12 @@ void updateSparsity(const BodySpaceProblem &p, StepArena &arena, PartitionMemory
   memory.diagonal.resize((size_t)m);
   Csr a{memory.rowStart, memory.col, {}};
   layoutColumns(p, bodyRowStart, bodyRows, a, memory.diagonal);
-  memory.col.resize((size_t)memory.rowStart[(size_t)m]);
+  const size_t nnz = (size_t)memory.rowStart[(size_t)m];
+  memory.col.resize(nnz);
+  memory.share.resize(nnz);
+  memory.mirror.resize(nnz);
+  layoutShares(p, memory.rowStart, memory.col, memory.diagonal, arena.take<int>((size_t)m), memory.share,
+               memory.mirror);
   memory.body0.assign(p.body0.begin(), p.body0.end());
   memory.body1.assign(p.body1.begin(), p.body1.end());
 }
@@ -175,8 +202,7 @@ template <class Entry>
 Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory, Entry entry) {
   updateSparsity(p, arena, memory);
   Csr a{memory.rowStart, memory.col, arena.take<MeReal>(memory.col.size())};
-  std::span<int> next = arena.take<int>((size_t)p.rowCount);
-  fillValues(p, minvJt(p, arena), memory.diagonal, next, a, entry);
+  fillValues(p, minvJt(p, arena), memory.diagonal, memory.share, memory.mirror, a, entry);
   return a;
 }
 

@@ -217,17 +217,21 @@ TEST(KeaWarmStart, ACyclingWarmStartIsRetriedCold) {
 
 // WhenCheaper keeps an envelope factor while refactorising is expected to
 // cost more than a stale solve of the iterations the workspace's stale
-// solves have taken (kStaleIterationsPrior before the first): a car's small
-// dense block, whose stale solves take a couple of iterations from one step
-// to the next, is kept; once its stale solves take many iterations (a
-// problem far from the kept factor each time) it is refactorised instead,
-// and once the problems change little again it is kept again.
+// solves have taken (kStaleIterationsPrior before the first): a car's
+// block, whose stale solves take a couple of iterations from one step to
+// the next, is kept; once its stale solves take many iterations (a problem
+// far from the kept factor each time) it is refactorised instead, and once
+// the problems change little again it is kept again. The default rule
+// factorises the car's small dense block densely and keeps nothing
+// (ASmallDenseBlockIsFactorisedAfreshEachSolve): the envelope path is
+// forced here (envelopeRows) to test its rule.
 // A sparse LDL^T is always kept (here a 20-box stack forced onto that path).
 TEST(KeaFactorMemory, WhenCheaperKeepsAFactorWhileItsStaleSolvesPay) {
   const ContactProblem car = kea_test::Car(1);
   Workspace workspace(KeaWorkspaceCreate());
   KeaOptions o;
   o.factorMemory = KeaFactorMemory::WhenCheaper;
+  o.envelopeRows = 96;
   KeaResult r;
   KeaSolveSparse(car.sparse(), o, *workspace, r);
   ASSERT_EQ(r.status, KeaStatus::Solved);
@@ -273,4 +277,36 @@ TEST(KeaFactorMemory, WhenCheaperKeepsAFactorWhileItsStaleSolvesPay) {
   EXPECT_EQ(r.status, KeaStatus::Solved);
   EXPECT_EQ(r.staleSolves, 1);
   EXPECT_EQ(r.factorizations, 0);
+}
+
+// Under the default rule a car's block (32 rows, every one sharing the
+// chassis: a full matrix) takes the dense LDL^T, which WhenCheaper never
+// keeps: each solve of the next step's problem factorises afresh, makes no
+// stale solve, and agrees with the envelope path's answer to the tolerance.
+// With Always the dense factor is kept like any other and used stale.
+TEST(KeaFactorMemory, ASmallDenseBlockIsFactorisedAfreshEachSolve) {
+  const ContactProblem car = kea_test::Car(1);
+  ASSERT_LE(car.n, 64);
+  Workspace workspace(KeaWorkspaceCreate());
+  KeaOptions o;
+  o.factorMemory = KeaFactorMemory::WhenCheaper;
+  KeaResult r;
+  KeaSolveSparse(car.sparse(), o, *workspace, r);
+  ASSERT_EQ(r.status, KeaStatus::Solved);
+  ContactProblem step = car;
+  for (unsigned seed = 30; seed < 40; ++seed) {
+    o.warmStart = r.lambda;
+    step = Perturbed(step, 1e-5, seed);
+    KeaSolveSparse(step.sparse(), o, *workspace, r);
+    ASSERT_EQ(r.status, KeaStatus::Solved);
+    EXPECT_EQ(r.staleSolves, 0) << "seed " << seed;
+    EXPECT_GE(r.factorizations, 1) << "seed " << seed;
+    KeaOptions envelope;
+    envelope.envelopeRows = 96;
+    ExpectAgree(r, KeaSolveSparse(step.sparse(), envelope), "car, dense against envelope");
+  }
+  const KeaResult kept = SolveAfter(car, Perturbed(car, 1e-5, 7));
+  EXPECT_EQ(kept.status, KeaStatus::Solved);
+  EXPECT_EQ(kept.staleSolves, 1);
+  EXPECT_EQ(kept.factorizations, 0);
 }

@@ -1,0 +1,78 @@
+/* kea_dense_ldlt.h: an LDL^T of a small dense symmetric block, in
+ * outer-product order (not installed).
+ *
+ * Storage. Two m x m arrays, row-major, each row padded to a multiple of
+ * kLanes values (stride): `upper`, whose upper triangle (entries (i, j),
+ * j >= i) the caller fills, and `lower`, which receives L. After factor():
+ *     upper[k][k] = d_k,   upper[k][c] = u_kc = l_ck d_k,   lower[c][k] = l_ck
+ * (c > k; L unit lower triangular). The forward solve reads the rows of
+ * `upper`, the backward solve the rows of `lower`: every loop runs along a
+ * row.
+ *
+ * Factorisation (right-looking, Golub & Van Loan, "Matrix Computations",
+ * sec. 4.1): for each k, with r_k = 1 / d_k and d_k = upper[k][k],
+ *     l_jk = u_kj r_k,   upper[j][c] <- upper[j][c] - l_jk u_kc,  k < j <= c.
+ * Unlike the envelope's Crout order (kea_envelope_ldlt.h), where each entry
+ * ends a dot product whose last term was computed just before, the updates
+ * of one k are independent of one another, element by element: the
+ * compiler runs them in vector lanes, and since no sum is reassociated the
+ * bits are those of the scalar loop, on every backend and in every build.
+ * Row j's update starts at column j rounded down to kLanes, so that it runs
+ * in whole lanes: the columns before j in `upper` are scratch (finite, never
+ * read as results), the padding stays zero. The cost is m^3 / 6
+ * multiply-adds at most; a row j that does not interact with row k (l_jk
+ * exactly zero, so the update would subtract zeros) is skipped, which
+ * leaves the same values (an exact zero changes no sum) and makes the cost
+ * that of the block's fill in the order the caller chose: rows of few
+ * nonzeros first (a car's contacts before its joints, which all share the
+ * chassis) keep it low.
+ *
+ * Breakdown as in the envelope LDL^T: a pivot d_k <= kPivotFloor * (the
+ * original a_kk), or a_kk <= 0, stops the factorisation and factor()
+ * returns false; the caller takes another path.
+ *
+ * Solve: L D L^T x = b as
+ *     z_k = y_k r_k,  y_c <- y_c - u_kc z_k  (k ascending, c > k),
+ *     x_k <- x_k - l_ck x_c                  (c descending, k < c),
+ * again element by element along rows.
+ *
+ * Nothing here allocates once reserve() has covered the block. */
+#ifndef KARMA_KEA_DENSE_LDLT_H
+#define KARMA_KEA_DENSE_LDLT_H
+
+#include "MePrecision.h"
+
+#include <span>
+#include <vector>
+
+namespace karma::kea::detail {
+
+struct DenseLdlt {
+  /* Rows are padded to a multiple of this many values. */
+  static constexpr int kLanes = 8;
+  /* The largest block factor() takes. */
+  static constexpr int kMaxRows = 64;
+
+  int m = 0, stride = 0;
+  std::vector<MeReal> upper, lower;
+  std::vector<MeReal> reciprocal; /* r_k = 1 / d_k */
+  std::vector<MeReal> diagonal;   /* the original a_kk, for the pivot floor */
+
+  /* Room for blocks of up to `rows` rows. */
+  void reserve(std::size_t rows);
+  /* A new m x m block, all zero. */
+  void begin(int rows);
+  /* Entry (i, j) of the upper triangle, j >= i. */
+  MeReal &at(int i, int j) {
+    return upper[static_cast<std::size_t>(i) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(j)];
+  }
+  /* Factorises the block whose upper triangle the caller filled; false on
+   * breakdown (the arrays are then partly overwritten). */
+  bool factor();
+  /* x = A^-1 rhs (m values each; x may alias rhs). */
+  void solve(std::span<const MeReal> rhs, std::span<MeReal> x) const;
+};
+
+}  // namespace karma::kea::detail
+
+#endif

@@ -1,0 +1,151 @@
+// The dense LDL^T (kea_dense_ldlt.h): it solves symmetric positive definite
+// systems of every size it takes to the rounding of a backward-stable
+// factorisation, agrees with the envelope LDL^T, leaves the padding of its
+// rows zero, reports a breakdown on a singular or indefinite block, refuses
+// a block larger than kMaxRows, and gives the same bits on every run.
+#include "kea_dense_ldlt.h"
+#include "kea_envelope_ldlt.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+using karma::kea::detail::DenseLdlt;
+using karma::kea::detail::EnvelopeSystem;
+
+namespace {
+
+// A deterministic value in [-1, 1).
+double Unit(std::uint32_t seed, std::uint32_t i) {
+  std::uint32_t x = seed * 2654435761u ^ (i + 1) * 40503u;
+  x ^= x >> 13;
+  x *= 0x5bd1e995u;
+  x ^= x >> 15;
+  return (x & 0xffffff) / double(1 << 23) - 1;
+}
+
+// A = G G^T + m I / 4 (G: m x m random), positive definite with a
+// condition number of a few hundred; `band` > 0 keeps only |i - j| < band.
+std::vector<double> Spd(int m, std::uint32_t seed, int band = 0) {
+  std::vector<double> g((size_t)m * m), a((size_t)m * m, 0.0);
+  for (size_t k = 0; k < g.size(); ++k) g[k] = Unit(seed, (std::uint32_t)k);
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      double s = i == j ? m / 4.0 : 0.0;
+      for (int k = 0; k < m; ++k) s += g[(size_t)i * m + k] * g[(size_t)j * m + k];
+      if (band == 0 || std::abs(i - j) < band) a[(size_t)i * m + j] = s;
+    }
+  if (band > 0)  // a band of a positive definite matrix need not be one: add to the diagonal
+    for (int i = 0; i < m; ++i) a[(size_t)i * m + i] += m;
+  return a;
+}
+
+void Fill(DenseLdlt &d, const std::vector<double> &a, int m) {
+  d.begin(m);
+  for (int i = 0; i < m; ++i)
+    for (int j = i; j < m; ++j) d.at(i, j) = (MeReal)a[(size_t)i * m + j];
+}
+
+// max_i |A x - b|_i / (|A| |x| + |b|)_i: the componentwise backward error.
+double BackwardError(const std::vector<double> &a, int m, const std::vector<MeReal> &x, const std::vector<MeReal> &b) {
+  double worst = 0;
+  for (int i = 0; i < m; ++i) {
+    double r = -(double)b[(size_t)i], scale = std::fabs((double)b[(size_t)i]);
+    for (int j = 0; j < m; ++j) {
+      const double aij = (double)(MeReal)a[(size_t)i * m + j];
+      r += aij * (double)x[(size_t)j];
+      scale += std::fabs(aij * (double)x[(size_t)j]);
+    }
+    worst = std::max(worst, std::fabs(r) / scale);
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(DenseLdlt, SolvesPositiveDefiniteSystemsOfEverySize) {
+  DenseLdlt d;
+  d.reserve(DenseLdlt::kMaxRows);
+  for (int m = 1; m <= DenseLdlt::kMaxRows; ++m) {
+    const std::vector<double> a = Spd(m, (std::uint32_t)m);
+    Fill(d, a, m);
+    ASSERT_TRUE(d.factor()) << "m = " << m;
+    std::vector<MeReal> b((size_t)m), x((size_t)m);
+    for (int i = 0; i < m; ++i) b[(size_t)i] = (MeReal)Unit(99, (std::uint32_t)i);
+    d.solve(b, x);
+    // Backward stable: a small multiple of m times the unit roundoff.
+    EXPECT_LT(BackwardError(a, m, x, b), 4.0 * m * ME_REAL_EPSILON) << "m = " << m;
+    // The padding of each row stays zero.
+    for (int i = 0; i < m; ++i)
+      for (int c = m; c < d.stride; ++c) EXPECT_EQ(d.upper[(size_t)i * d.stride + c], MeReal(0));
+    // In place (x aliasing rhs) gives the same bits.
+    std::vector<MeReal> y = b;
+    d.solve(y, y);
+    EXPECT_TRUE(y == x) << "m = " << m;
+  }
+}
+
+TEST(DenseLdlt, AgreesWithTheEnvelopeLdltAndSkipsRowsThatDoNotMeet) {
+  // A band: most pairs of rows do not meet (their multiplier is exactly
+  // zero and the update is skipped), which must not change the answer.
+  for (int band : {0, 2, 5}) {
+    const int m = 40;
+    const std::vector<double> a = Spd(m, 7, band);
+    DenseLdlt d;
+    Fill(d, a, m);
+    ASSERT_TRUE(d.factor());
+    EnvelopeSystem e;
+    e.begin(m);
+    e.layout();
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j <= i; ++j) e.value[e.at(i, j)] = (MeReal)a[(size_t)i * m + j];
+    e.factor();
+    std::vector<MeReal> b((size_t)m), xd((size_t)m), xe((size_t)m);
+    for (int i = 0; i < m; ++i) b[(size_t)i] = (MeReal)Unit(5, (std::uint32_t)i);
+    d.solve(b, xd);
+    e.solve(b, xe);
+    double big = 0;
+    for (MeReal v : xe) big = std::max(big, std::fabs((double)v));
+    for (int i = 0; i < m; ++i)
+      EXPECT_NEAR(xd[(size_t)i], xe[(size_t)i], 64 * m * ME_REAL_EPSILON * big) << "band " << band << " row " << i;
+  }
+}
+
+TEST(DenseLdlt, ReportsABreakdownOnASingularOrIndefiniteBlock) {
+  DenseLdlt d;
+  // Rows 0 and 1 equal: singular.
+  Fill(d, {1, 1, 0, 1, 1, 0, 0, 0, 1}, 3);
+  EXPECT_FALSE(d.factor());
+  // Indefinite: a 2 x 2 block with a negative determinant.
+  Fill(d, {1, 2, 2, 1}, 2);
+  EXPECT_FALSE(d.factor());
+  // A non-positive diagonal entry.
+  Fill(d, {0, 0, 0, 1}, 2);
+  EXPECT_FALSE(d.factor());
+  // Too large for it.
+  d.begin(DenseLdlt::kMaxRows + 1);
+  for (int i = 0; i <= DenseLdlt::kMaxRows; ++i) d.at(i, i) = 1;
+  EXPECT_FALSE(d.factor());
+}
+
+TEST(DenseLdlt, TheSameBitsOnEveryRun) {
+  const int m = 33;
+  const std::vector<double> a = Spd(m, 3);
+  std::vector<MeReal> b((size_t)m), first((size_t)m), again((size_t)m);
+  for (int i = 0; i < m; ++i) b[(size_t)i] = (MeReal)Unit(8, (std::uint32_t)i);
+  DenseLdlt d;
+  Fill(d, a, m);
+  ASSERT_TRUE(d.factor());
+  d.solve(b, first);
+  const std::vector<MeReal> factor = d.upper;
+  for (int run = 0; run < 3; ++run) {
+    DenseLdlt e;
+    Fill(e, a, m);
+    ASSERT_TRUE(e.factor());
+    e.solve(b, again);
+    EXPECT_TRUE(again == first);
+    EXPECT_TRUE(e.upper == factor);
+  }
+}
