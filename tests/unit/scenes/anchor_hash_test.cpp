@@ -33,11 +33,11 @@ struct PinnedHash {
 
 // clang-format off
 constexpr PinnedHash kPinned[] = {
-    {"car",      300,  "0x245c1392d39b71f1", "0xf83710fe4aa42475"},
-    {"topple",   600,  "0x2f43351cc406d168", "0x124905f8fec950bc"},
-    {"ragdoll",  600,  "0x36c98103f630131b", "0x7074b9ab3a44e4aa"},
-    {"stack21",  1200, "0xf91036733404e962", "0xaebbf50693e3fe1c"},
-    {"pile1000", 60,   "0xd167d8b7f341b9c1", "0x37750d4e37051bb3"},
+    {"car",      300,  "0x06adb4d0f5bd0888", "0xc5f9e6d2d605d049"},
+    {"topple",   600,  "0xd2fc6524fafb8323", "0x615bbc80a9473ef3"},
+    {"ragdoll",  600,  "0x3a8a2ed4376e4cf9", "0xaf732a033cbb167a"},
+    {"stack21",  1200, "0xe715c5150750f0f6", "0x45e6f28055330b5b"},
+    {"pile1000", 60,   "0x025caf0dab4ebefb", "0x955c4c2d382b9a0c"},
 };
 // clang-format on
 
