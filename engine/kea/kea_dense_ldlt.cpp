@@ -9,9 +9,12 @@
 namespace karma::kea::detail {
 namespace {
 
-/* y[c] -= s * x[c], c < count: one element at a time, in lanes. */
-void SubtractScaled(MeReal *__restrict y, const MeReal *__restrict x, MeReal s, std::size_t count) {
-  for (std::size_t c = 0; c < count; ++c) y[c] = y[c] - s * x[c];
+/* y[c] -= s * x[c] on whole groups of kLanes values (count a multiple of
+ * kLanes): one element at a time, in lanes, no remainder loop. */
+void SubtractScaledLanes(MeReal *__restrict y, const MeReal *__restrict x, MeReal s, std::size_t count) {
+  constexpr auto kLanes = static_cast<std::size_t>(DenseLdlt::kLanes);
+  for (std::size_t c = 0; c < count; c += kLanes)
+    for (std::size_t l = 0; l < kLanes; ++l) y[c + l] = y[c + l] - s * x[c + l];
 }
 
 /* Row j of the factorisation, columns from .. from + Width - 1 (from = j
@@ -33,6 +36,7 @@ void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::si
     for (std::size_t c = 0; c < Width; ++c) acc[c] = acc[c] - l * rowK[from + c];
   }
   for (std::size_t c = 0; c < Width; ++c) rowJ[from + c] = acc[c];
+  for (std::size_t c = from; c < j; ++c) rowJ[c] = 0; /* the scratch columns stay zero */
 }
 
 template <std::size_t... Groups>
@@ -55,6 +59,7 @@ void DenseLdlt::reserve(std::size_t rows) {
   upper.reserve(rows * Padded(rows));
   lower.reserve(rows * Padded(rows));
   reciprocal.reserve(rows);
+  work.reserve(Padded(rows));
   diagonal.reserve(rows);
 }
 
@@ -89,16 +94,30 @@ bool DenseLdlt::factor() {
 void DenseLdlt::solve(std::span<const MeReal> rhs, std::span<MeReal> x) const {
   const auto n = static_cast<std::size_t>(m);
   const auto s = static_cast<std::size_t>(stride);
-  if (x.data() != rhs.data()) std::copy(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(n), x.begin());
-  /* z_k = y_k r_k; y_c -= u_kc z_k for the rows below. */
+  const auto lanes = static_cast<std::size_t>(kLanes);
+  if (n == 0) return;
+  work.resize(s);
+  std::copy(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(n), work.begin());
+  std::fill(work.begin() + static_cast<std::ptrdiff_t>(n), work.end(), MeReal(0));
+  /* z_k = y_k r_k; y_c -= u_kc z_k for the rows below, in whole lanes from
+   * column k + 1 rounded down: the columns up to k of work are spent (z_k
+   * is in x), so what the scratch part of row k does to them is never read. */
   for (std::size_t k = 0; k < n; ++k) {
-    const MeReal z = x[k] * reciprocal[k];
+    const MeReal z = work[k] * reciprocal[k];
     x[k] = z;
-    SubtractScaled(x.data() + k + 1, upper.data() + k * s + k + 1, z, n - k - 1);
+    const std::size_t from = (k + 1) / lanes * lanes;
+    SubtractScaledLanes(work.data() + from, upper.data() + k * s + from, z, s - from);
   }
   /* L^T x = z by rows of L from the bottom: x_c is final once the rows
-   * below it have been subtracted. */
-  for (std::size_t c = n; c-- > 1;) SubtractScaled(x.data(), lower.data() + c * s, x[c], c);
+   * below it have been subtracted; it is taken out before its own row runs
+   * over columns c .. (c rounded up) - 1, which are spent. */
+  std::copy(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(n), work.begin());
+  for (std::size_t c = n; c-- > 1;) {
+    const MeReal xc = work[c];
+    x[c] = xc;
+    SubtractScaledLanes(work.data(), lower.data() + c * s, xc, (c + lanes - 1) / lanes * lanes);
+  }
+  x[0] = work[0];
 }
 
 }  // namespace karma::kea::detail

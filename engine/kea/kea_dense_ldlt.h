@@ -9,23 +9,26 @@
  * `upper`, the backward solve the rows of `lower`: every loop runs along a
  * row.
  *
- * Factorisation (right-looking, Golub & Van Loan, "Matrix Computations",
- * sec. 4.1): for each k, with r_k = 1 / d_k and d_k = upper[k][k],
- *     l_jk = u_kj r_k,   upper[j][c] <- upper[j][c] - l_jk u_kc,  k < j <= c.
- * Unlike the envelope's Crout order (kea_envelope_ldlt.h), where each entry
- * ends a dot product whose last term was computed just before, the updates
- * of one k are independent of one another, element by element: the
- * compiler runs them in vector lanes, and since no sum is reassociated the
- * bits are those of the scalar loop, on every backend and in every build.
- * Row j's update starts at column j rounded down to kLanes, so that it runs
- * in whole lanes: the columns before j in `upper` are scratch (finite, never
- * read as results), the padding stays zero. The cost is m^3 / 6
- * multiply-adds at most; a row j that does not interact with row k (l_jk
- * exactly zero, so the update would subtract zeros) is skipped, which
- * leaves the same values (an exact zero changes no sum) and makes the cost
- * that of the block's fill in the order the caller chose: rows of few
- * nonzeros first (a car's contacts before its joints, which all share the
- * chassis) keep it low.
+ * Factorisation, row by row (j ascending), with r_k = 1 / d_k:
+ *     l_jk = u_kj r_k,   upper[j][c] <- upper[j][c] - l_jk u_kc   (k < j <= c,
+ *     k ascending),  then d_j = upper[j][j],
+ * the outer-product (right-looking) elimination of Golub & Van Loan,
+ * "Matrix Computations", sec. 4.1, with the updates of one row gathered:
+ * every entry receives the same subtractions in the same order, while row
+ * j is held in registers (a fixed padded width) and the finished rows k
+ * stream past. Unlike the envelope's Crout order (kea_envelope_ldlt.h),
+ * where each entry ends a dot product whose last term was computed just
+ * before, the updates are element by element: the compiler runs them in
+ * vector lanes, and since no sum is reassociated the bits are those of the
+ * scalar loop, on every backend and in every build. Row j's update starts
+ * at column j rounded down to kLanes, so that it runs in whole lanes; the
+ * columns it covers before j are scratch and are set back to zero, and the
+ * padding stays zero. The cost is m^3 / 6 multiply-adds at most; a row k
+ * that does not meet row j (l_jk exactly zero, so the update would
+ * subtract zeros) is skipped, which leaves the same values (an exact zero
+ * changes no sum) and makes the cost that of the block's fill in the order
+ * the caller chose: rows of few nonzeros first (a car's contacts before its
+ * joints, which all share the chassis) keep it low.
  *
  * Breakdown as in the envelope LDL^T: a pivot d_k <= kPivotFloor * (the
  * original a_kk), or a_kk <= 0, stops the factorisation and factor()
@@ -34,7 +37,9 @@
  * Solve: L D L^T x = b as
  *     z_k = y_k r_k,  y_c <- y_c - u_kc z_k  (k ascending, c > k),
  *     x_k <- x_k - l_ck x_c                  (c descending, k < c),
- * again element by element along rows.
+ * again element by element along rows, in whole lanes on a padded copy:
+ * each value is taken out as soon as it is final, so what a row's lanes do
+ * to the values already taken out is never read.
  *
  * Nothing here allocates once reserve() has covered the block. */
 #ifndef KARMA_KEA_DENSE_LDLT_H
@@ -57,6 +62,9 @@ struct DenseLdlt {
   std::vector<MeReal> upper, lower;
   std::vector<MeReal> reciprocal; /* r_k = 1 / d_k */
   std::vector<MeReal> diagonal;   /* the original a_kk, for the pivot floor */
+  /* solve()'s scratch, one padded row (so solve() is const but not safe to
+   * call from two threads on one factor). */
+  mutable std::vector<MeReal> work;
 
   /* Room for blocks of up to `rows` rows. */
   void reserve(std::size_t rows);

@@ -482,22 +482,22 @@ void SparseBackend::fillEnvelope(const std::vector<int> &rows) {
   for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
 }
 
-/* Where each stored entry of a free row goes in the dense block
- * (denseIndex_: row-major index, -1 in a clamped column), for the rows
- * denseRows_ of the sparsity rowStart, col (kept with it: a new problem
- * with the same sparsity and free rows reuses the map). */
+/* The upper-triangle entries of the free block (A + eps I)_FF with the
+ * rows and columns in the order denseRows_, as pairs (CSR index, index in
+ * the dense block, row-major), for the sparsity rowStart, col (kept with
+ * it: a new problem with the same sparsity and free rows reuses it). */
 void SparseBackend::mapDense() {
   const SparseLcpProblem &p = *p_;
   const std::vector<int> &rows = denseRows_;
   const std::size_t m = rows.size();
   const auto stride = U(dense_.stride);
   for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
-  denseIndex_.assign(p.col.size(), -1);
+  denseFill_.clear();
   for (std::size_t a = 0; a < m; ++a) {
     const auto i = U(rows[a]);
     for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
       const int c = position_[U(p.col[U(k)])];
-      if (c >= 0) denseIndex_[U(k)] = static_cast<int>(a * stride + U(c));
+      if (c >= static_cast<int>(a)) denseFill_.emplace_back(k, static_cast<int>(a * stride + U(c)));
     }
   }
   for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
@@ -538,14 +538,8 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   if (rows != denseMapRows_ || !std::equal(p.col.begin(), p.col.end(), denseMapCol_.begin(), denseMapCol_.end()))
     mapDense();
   MeReal *upper = dense_.upper.data();
-  for (std::size_t a = 0; a < m; ++a) {
-    const auto i = U(rows[a]);
-    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
-      const int at = denseIndex_[U(k)];
-      if (at >= 0) upper[at] = p.val[U(k)]; /* both triangles: the lower is scratch */
-    }
-    upper[a * U(dense_.stride) + a] += eps_;
-  }
+  for (const auto &[k, at] : denseFill_) upper[U(at)] = p.val[U(k)];
+  for (std::size_t a = 0; a < m; ++a) upper[a * U(dense_.stride) + a] += eps_;
   if (!dense_.factor()) return false;
   factor_ = Factor::Dense;
   return true;

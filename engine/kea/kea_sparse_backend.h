@@ -189,9 +189,10 @@ class SparseBackend {
   /* All rows, fewest nonzeros first, the rowStart it was made for, and
    * the free rows in that order (the dense factor's). */
   std::vector<int> degreeOrder_, degreeRowStart_, denseRows_;
-  /* Where the free rows' entries go in the dense block, and the rows and
-   * columns the map was made for (mapDense). */
-  std::vector<int> denseIndex_, denseMapRows_, denseMapCol_;
+  /* Where the free block's upper-triangle entries go in the dense block,
+   * and the rows and columns the map was made for (mapDense). */
+  std::vector<std::pair<int, int>> denseFill_;
+  std::vector<int> denseMapRows_, denseMapCol_;
   /* The whole matrix's rows in reverse Cuthill-McKee order, and the free
    * rows in that order (envelope path when the natural order is wide). */
   std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
