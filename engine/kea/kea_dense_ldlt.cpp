@@ -39,6 +39,8 @@ void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::si
   for (std::size_t c = from; c < j; ++c) rowJ[c] = 0; /* the scratch columns stay zero */
 }
 
+/* EliminateRow at the width of `groups` groups of kLanes (1 ..
+ * kMaxRows / kLanes): a run-time width picks its compiled instance. */
 template <std::size_t... Groups>
 void EliminateRowOf(std::size_t groups, std::index_sequence<Groups...>, MeReal *rowJ, const MeReal *upper,
                     std::size_t stride, std::size_t j, const MeReal *reciprocal, MeReal *lowerJ) {
