@@ -57,8 +57,8 @@ bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, MeReal iteratio
  * about as many multiply-adds as the dense factorisation, but there each
  * one ends a dot product waiting on the entry before, while the dense
  * updates run in vector lanes and skip the pairs of rows that do not meet
- * (docs/NOTES.md, "Dense small blocks"). Decided from the whole matrix,
- * once per problem, without looking at the free block's entries. */
+ * (docs/NOTES.md, "Dense small blocks"). Decided from the whole matrix's
+ * counts, without looking at the free block's entries. */
 bool DenseFits(std::size_t m, std::size_t n, std::size_t nnz) {
   return m <= SparseBackend::kDenseRows && 3 * nnz >= n * n;
 }
@@ -107,7 +107,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   naturalRows_.reserve(n);
   denseRows_.reserve(n);
   degreeOrder_.reserve(n);
-  degreeRowStart_.reserve(n + 1);
+  denseRowStart_.reserve(n + 1);
   denseMapRows_.reserve(n);
   /* Reverse Cuthill-McKee scratch (computeBandOrder). */
   bandRank_.reserve(n);
@@ -464,50 +464,48 @@ std::size_t SparseBackend::envelopeFirsts(const std::vector<int> &rows) {
   return entries;
 }
 
+/* visit(a, c, k) for each stored entry k of free row rows[a] whose column
+ * is free row rows[c] (positions in `rows`). */
+template <class Visit>
+void SparseBackend::forEachFreeEntry(const std::vector<int> &rows, Visit visit) {
+  const SparseLcpProblem &p = *p_;
+  const std::size_t m = rows.size();
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
+  for (std::size_t a = 0; a < m; ++a) {
+    const auto i = U(rows[a]);
+    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k)
+      if (const int c = position_[U(p.col[U(k)])]; c >= 0) visit(a, U(c), k);
+  }
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
+}
+
 /* Lays the envelope out (firsts from envelopeFirsts on the same rows) and
  * stores the free block (A + eps I)_FF in it. */
 void SparseBackend::fillEnvelope(const std::vector<int> &rows) {
   const SparseLcpProblem &p = *p_;
-  const std::size_t m = rows.size();
-  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
   envelope_.layout();
-  for (std::size_t a = 0; a < m; ++a) {
-    const auto i = U(rows[a]);
-    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
-      const int c = position_[U(p.col[U(k)])];
-      if (c >= 0 && U(c) <= a) envelope_.value[envelope_.at(static_cast<int>(a), c)] = p.val[U(k)];
-    }
+  forEachFreeEntry(rows, [&](std::size_t a, std::size_t c, int k) {
+    if (c <= a) envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(c))] = p.val[U(k)];
+  });
+  for (std::size_t a = 0; a < rows.size(); ++a)
     envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(a))] += eps_;
-  }
-  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
 }
 
 /* The upper-triangle entries of the free block (A + eps I)_FF with the
  * rows and columns in the order denseRows_, as pairs (CSR index, index in
- * the dense block, row-major), for the sparsity rowStart, col (kept with
- * it: a new problem with the same sparsity and free rows reuses it). */
+ * the dense block, row-major), kept with the sparsity and the free rows
+ * they were made for. */
 void SparseBackend::mapDense() {
-  const SparseLcpProblem &p = *p_;
-  const std::vector<int> &rows = denseRows_;
-  const std::size_t m = rows.size();
   const auto stride = U(dense_.stride);
-  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
   denseFill_.clear();
-  for (std::size_t a = 0; a < m; ++a) {
-    const auto i = U(rows[a]);
-    for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) {
-      const int c = position_[U(p.col[U(k)])];
-      if (c >= static_cast<int>(a)) denseFill_.emplace_back(k, static_cast<int>(a * stride + U(c)));
-    }
-  }
-  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
-  denseMapRows_ = rows;
-  denseMapCol_.assign(p.col.begin(), p.col.end());
+  forEachFreeEntry(denseRows_, [&](std::size_t a, std::size_t c, int k) {
+    if (c >= a) denseFill_.emplace_back(k, static_cast<int>(a * stride + c));
+  });
+  denseMapRows_ = denseRows_;
 }
 
 /* All rows by their number of nonzeros, then by index (std::sort: no
- * allocation), for the row lengths in degreeRowStart_ (a new problem with
- * the same lengths keeps the order). */
+ * allocation). */
 void SparseBackend::computeDegreeOrder() {
   const SparseLcpProblem &p = *p_;
   degreeOrder_.resize(U(p.n));
@@ -515,7 +513,6 @@ void SparseBackend::computeDegreeOrder() {
   const auto degree = [&p](int i) { return p.rowStart[U(i) + 1] - p.rowStart[U(i)]; };
   std::sort(degreeOrder_.begin(), degreeOrder_.end(),
             [&](int a, int b) { return degree(a) != degree(b) ? degree(a) < degree(b) : a < b; });
-  degreeRowStart_.assign(p.rowStart.begin(), p.rowStart.end());
 }
 
 /* The free block (A + eps I)_FF factorised densely, its rows ordered by
@@ -525,9 +522,14 @@ void SparseBackend::computeDegreeOrder() {
  * block, with its least-squares fallback). */
 bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   const SparseLcpProblem &p = *p_;
-  if (!std::equal(p.rowStart.begin(), p.rowStart.end(), degreeRowStart_.begin(), degreeRowStart_.end())) {
+  /* The order and the map depend on the sparsity only (and the map on the
+   * free rows): a problem of another sparsity makes both again. */
+  if (!std::equal(p.rowStart.begin(), p.rowStart.end(), denseRowStart_.begin(), denseRowStart_.end()) ||
+      !std::equal(p.col.begin(), p.col.end(), denseCol_.begin(), denseCol_.end())) {
+    denseRowStart_.assign(p.rowStart.begin(), p.rowStart.end());
+    denseCol_.assign(p.col.begin(), p.col.end());
     computeDegreeOrder();
-    denseMapRows_.clear(); /* other rows' extents: the map is made again */
+    denseMapRows_.clear();
   }
   std::vector<int> &rows = denseRows_;
   rows.clear();
@@ -535,8 +537,7 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
     if (set[U(i)] == Free) rows.push_back(i);
   const std::size_t m = rows.size();
   dense_.begin(static_cast<int>(m));
-  if (rows != denseMapRows_ || !std::equal(p.col.begin(), p.col.end(), denseMapCol_.begin(), denseMapCol_.end()))
-    mapDense();
+  if (rows != denseMapRows_) mapDense();
   MeReal *upper = dense_.upper.data();
   for (const auto &[k, at] : denseFill_) upper[U(at)] = p.val[U(k)];
   for (std::size_t a = 0; a < m; ++a) upper[a * U(dense_.stride) + a] += eps_;

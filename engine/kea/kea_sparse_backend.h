@@ -150,6 +150,8 @@ class SparseBackend {
   bool solveStaleAndLearn(const std::vector<int> &rows);
   void factorise(const std::vector<unsigned char> &set);
   std::size_t envelopeFirsts(const std::vector<int> &rows);
+  template <class Visit>
+  void forEachFreeEntry(const std::vector<int> &rows, Visit visit);
   void fillEnvelope(const std::vector<int> &rows);
   bool factoriseDense(const std::vector<unsigned char> &set);
   void computeDegreeOrder();
@@ -186,13 +188,13 @@ class SparseBackend {
   /* The free rows ascending (naturalRows_), in elimination order
    * (orderedRows_, sparse path), and the free rows of the kept factor. */
   std::vector<int> naturalRows_, orderedRows_, factoredSet_;
-  /* All rows, fewest nonzeros first, the rowStart it was made for, and
-   * the free rows in that order (the dense factor's). */
-  std::vector<int> degreeOrder_, degreeRowStart_, denseRows_;
-  /* Where the free block's upper-triangle entries go in the dense block,
-   * and the rows and columns the map was made for (mapDense). */
+  /* The dense path's sparsity (rowStart, col), all rows fewest nonzeros
+   * first, the free rows in that order (the dense factor's), and where the
+   * free block's upper-triangle entries go in the dense block, with the
+   * free rows that map was made for (mapDense). */
+  std::vector<int> denseRowStart_, denseCol_, degreeOrder_, denseRows_;
   std::vector<std::pair<int, int>> denseFill_;
-  std::vector<int> denseMapRows_, denseMapCol_;
+  std::vector<int> denseMapRows_;
   /* The whole matrix's rows in reverse Cuthill-McKee order, and the free
    * rows in that order (envelope path when the natural order is wide). */
   std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
