@@ -24,6 +24,11 @@ function(karma_library target export_name)
   get_target_property(type ${target} TYPE)
   if(NOT type STREQUAL "INTERFACE_LIBRARY")
     target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:karma_build_flags>)
+    # The libraries are built position-independent; without this, GCC may
+    # not inline an exported (MEPUBLIC) function into its callers in the same
+    # file, in case a shared library's user replaces it. Nobody does.
+    target_compile_options(${target} PRIVATE
+      $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-fno-semantic-interposition>)
     # The libraries are C++; a program linked by the C compiler (a C-only
     # project) gets the C++ runtime from here.
     target_link_libraries(${target} INTERFACE "$<$<LINK_LANGUAGE:C>:stdc++>")

@@ -119,9 +119,10 @@ struct ConstraintType {
   // Writes this step's rows. May update state that depends on the current
   // configuration (limit positions). Bodies are those of the constraint.
   void (*addRows)(MdtConstraint *c, RowSink &rows, const StepContext &ctx);
-  // Optional: after the solve, with this constraint's row impulses (same
-  // order as written). The base has already stored force and torque.
-  void (*afterSolve)(MdtConstraint *c, const MeReal *impulse, int n, const StepContext &ctx);
+  // Optional: after the solve, with this constraint's n rows as written and
+  // their impulses (same order). The base has already stored force and
+  // torque.
+  void (*afterSolve)(MdtConstraint *c, const Row *rows, const MeReal *impulse, int n, const StepContext &ctx);
   // Optional: called when the constraint is destroyed (contact groups free
   // their contacts).
   void (*destroy)(MdtConstraint *c);

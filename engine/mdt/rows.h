@@ -44,6 +44,11 @@ void springRow(Row &row, const StepContext &ctx, MeReal k, MeReal c, MeReal erro
 // The J v of a row with the bodies' current velocities.
 MeReal rowVelocity(const MdtConstraint *c, const Row &row);
 
+// Whether a limit's position is kept (MdtLimitCalculatePosition, set by
+// activating its stops or its motor): a limit with none of the three
+// writes no row and need not be measured.
+inline bool limitTracked(const MdtLimit &l) { return l.calculatePosition || l.limited || l.motorized; }
+
 // The rows of a limit and motor on a joint coordinate whose rate is
 // jAxis . v (jAxis: a row Jacobian, as in Row::J) and whose measured value
 // is `measured` (user position = measured + offset, angles unwrapped by the

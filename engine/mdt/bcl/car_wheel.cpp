@@ -54,6 +54,10 @@ MeReal wheelSteeringAngle(const MdtCarWheel *j) {
   attachmentAxis(j, 0, a0);
   attachmentOrtho(j, 0, o0);
   MeVector3Cross(s, a0, o0);
+  return steeringAngleAbout(j, s);
+}
+
+MeReal steeringAngleAbout(const MdtCarWheel *j, const MeVector3 s) {
   // twistAngle measures from body 1's secondary (h) to body 0's (o0).
   return -twistAngle(j, s);
 }
@@ -133,15 +137,19 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
   addAngularRow(sink, ctx, e, -std::asin(sh));
 
   MeReal jac[4][3];
-  const MeReal phi = wheelSteeringAngle(j);
+  const MeReal phi = steeringAngleAbout(j, g.s);
   if (j->steeringLocked) {
     addAngularRow(sink, ctx, g.s, phi);  // J v = s . (w0 - w1) = -d(phi)/dt
   } else {
     angularJacobian(jac, g.s);
     addLimitRows(&j->steer, c, sink, ctx, jac, phi, true);
   }
-  angularJacobian(jac, g.h);
-  addLimitRows(&j->hinge, c, sink, ctx, jac, wheelHingeAngle(j), true);
+  // The hinge angle (an atan2 and both frames) only when the hinge limit
+  // needs it: a wheel driven by torque keeps no hinge position.
+  if (limitTracked(j->hinge)) {
+    angularJacobian(jac, g.h);
+    addLimitRows(&j->hinge, c, sink, ctx, jac, wheelHingeAngle(j), true);
+  }
 
   if (j->kp > 0 || j->kd > 0) {
     Row &row = sink.add(ctx);

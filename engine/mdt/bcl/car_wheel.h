@@ -40,6 +40,8 @@ struct WheelGeometry {
 
 WheelGeometry wheelGeometry(const MdtCarWheel *j);
 MeReal wheelSteeringAngle(const MdtCarWheel *j);  // (-pi, pi]
+// The steering angle given the steering axis s (wheelGeometry's).
+MeReal steeringAngleAbout(const MdtCarWheel *j, const MeVector3 s);
 MeReal wheelHingeAngle(const MdtCarWheel *j);     // [0, 2 pi)
 // Rate of an angle whose Jacobian is {0, -e, 0, e}: e . (w1 - w0).
 MeReal wheelRelativeRate(const MdtCarWheel *j, const MeVector3 e);

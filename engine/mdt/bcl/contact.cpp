@@ -66,18 +66,13 @@ int contactRowCount(const MdtContact *c) {
   return 1 + (frictionActs(c->params, 0) ? 1 : 0) + (frictionActs(c->params, 1) ? 1 : 0);
 }
 
-int storeContactImpulses(MdtContact *c, const MeReal *impulse, int n) {
-  const int rows = contactRowCount(c) < n ? contactRowCount(c) : n;
-  c->warmNormal = rows > 0 ? impulse[0] : 0;
+int storeContactImpulses(MdtContact *c, const Row *rows, const MeReal *impulse, int n) {
+  const int count = contactRowCount(c) < n ? contactRowCount(c) : n;
+  c->warmNormal = count > 0 ? impulse[0] : 0;
   MeVector3Set(c->warmFriction, 0, 0, 0);
-  if (rows > 1) {
-    MeVector3 d[2];
-    contactDirections(c, d[0], d[1]);
-    int r = 1;
-    for (int k = 0; k < 2 && r < rows; ++k)
-      if (frictionActs(c->params, k)) MeVector3MultiplyAdd(c->warmFriction, impulse[r++], d[k]);
-  }
-  return rows;
+  // A friction row's linear Jacobian on body 0 is its direction (frictionRow).
+  for (int r = 1; r < count; ++r) MeVector3MultiplyAdd(c->warmFriction, impulse[r], rows[r].J[0]);
+  return count;
 }
 
 void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2) {
@@ -210,10 +205,10 @@ void reset(MdtConstraint *c) { resetContact(as<MdtContact>(c)); }
 
 void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) { addContactRows(as<MdtContact>(c), sink, ctx); }
 
-void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContext &ctx) {
+void afterSolve(MdtConstraint *c, const Row *rows, const MeReal *impulse, int n, const StepContext &ctx) {
   auto *k = as<MdtContact>(c);
   k->normalForce = n > 0 ? impulse[0] * ctx.invH : 0;
-  storeContactImpulses(k, impulse, n);
+  storeContactImpulses(k, rows, impulse, n);
 }
 
 void destroy(MdtConstraint *c) {

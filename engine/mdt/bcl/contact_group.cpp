@@ -29,7 +29,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 
 int rowCapacity(const MdtConstraint *c) { return 3 * as<MdtContactGroup>(c)->count; }
 
-void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContext &ctx) {
+void afterSolve(MdtConstraint *c, const Row *rows, const MeReal *impulse, int n, const StepContext &ctx) {
   auto *g = as<MdtContactGroup>(c);
   g->normalForce = 0;
   // Walk the rows as addContactRows wrote them: a normal row, then one row
@@ -39,7 +39,7 @@ void afterSolve(MdtConstraint *c, const MeReal *impulse, int n, const StepContex
   for (MdtContact *k = g->first; k && r < n; k = k->next) {
     k->normalForce = impulse[r] * ctx.invH;
     g->normalForce += k->normalForce;
-    r += storeContactImpulses(k, impulse + r, n - r);
+    r += storeContactImpulses(k, rows + r, impulse + r, n - r);
   }
 }
 

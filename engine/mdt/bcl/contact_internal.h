@@ -43,9 +43,9 @@ void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2);
 // Contact defaults (params, normal, penetration, no direction, no memory).
 void resetContact(MdtContact *c);
 // Stores the impulses of one contact's rows (normal first, then friction in
-// the order addContactRows wrote them) as its warm-start memory; returns
-// the number of rows read.
-int storeContactImpulses(MdtContact *c, const MeReal *impulse, int n);
+// the order addContactRows wrote them; `rows` as written, for the friction
+// directions) as its warm-start memory; returns the number of rows read.
+int storeContactImpulses(MdtContact *c, const Row *rows, const MeReal *impulse, int n);
 // Whether addContactRows writes the friction row of `direction` (0: primary,
 // 1: secondary): the contact type has that direction and its force bound is
 // not identically zero (Box: friction > 0; NormalForce: coefficient > 0).

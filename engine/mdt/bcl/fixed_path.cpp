@@ -52,7 +52,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
   }
 }
 
-void afterSolve(MdtConstraint *c, const MeReal *, int, const StepContext &ctx) {
+void afterSolve(MdtConstraint *c, const Row *, const MeReal *, int, const StepContext &ctx) {
   auto *j = as<MdtFixedPath>(c);
   for (int i = 0; i < 2; ++i) MeVector3MultiplyAdd(j->localPos[i], ctx.h, j->pathVelocity[i]);
 }

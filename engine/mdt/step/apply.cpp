@@ -29,7 +29,7 @@ void applyImpulses(StepScratch &s, const Partition &part, const PartitionRows &r
     }
     c->warmRows = r1 - r0 <= kMaxWarmRows ? r1 - r0 : 0;
     for (int r = r0; r < r0 + c->warmRows; ++r) c->warm[r - r0] = all[(size_t)r];
-    if (c->type->afterSolve) c->type->afterSolve(c, all.data() + r0, r1 - r0, ctx);
+    if (c->type->afterSolve) c->type->afterSolve(c, rows.rows.data() + r0, all.data() + r0, r1 - r0, ctx);
   }
 }
 
