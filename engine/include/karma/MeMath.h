@@ -85,12 +85,8 @@ MEPUBLIC MeReal MEAPI MeMatrix3Determinant(MECONSTMATRIX MeMatrix3 m);
  * |det m| <= ME_REAL_EPSILON * |m[0]| |m[1]| |m[2]| or det is not finite,
  * returns FALSE and leaves out unchanged. */
 MEPUBLIC MeBool MEAPI MeMatrix3Inverse(MeMatrix3 out, MECONSTMATRIX MeMatrix3 m);
-/* out = m * v with v a column: out[i] = sum_j m[i][j] v[j].
- * For a rotation R this takes a WORLD vector into BODY coordinates. */
-MEPUBLIC void MEAPI MeMatrix3MultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m, const MeVector3 v);
-/* out = m^T * v = v * m with v a row: out[j] = sum_i v[i] m[i][j].
- * For a rotation R this takes a BODY vector into WORLD coordinates. */
-MEPUBLIC void MEAPI MeMatrix3TransposeMultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m, const MeVector3 v);
+/* MultiplyVector (out = m v) and TransposeMultiplyVector (out = m^T v) are
+ * defined inline in MeMathInline.h. */
 /* R = turn by angle about x: rows (1,0,0), (0,c,s), (0,-s,c) */
 MEPUBLIC void MEAPI MeMatrix3MakeRotationX(MeMatrix3 R, MeReal angle);
 /* R = turn by angle about y: rows (c,0,-s), (0,1,0), (s,0,c) */
@@ -132,8 +128,7 @@ MEPUBLIC void MEAPI MeMatrix4TMMakeFromRotationAndPosition(MeMatrix4 tm, MECONST
 MEPUBLIC void MEAPI MeMatrix4TMSetPosition(MeMatrix4 tm, MeReal x, MeReal y, MeReal z);
 /* t = p */
 MEPUBLIC void MEAPI MeMatrix4TMSetPositionVector(MeMatrix4 tm, const MeVector3 p);
-/* out = t */
-MEPUBLIC void MEAPI MeMatrix4TMGetPosition(MeVector3 out, MECONSTMATRIX MeMatrix4 tm);
+/* TMGetPosition (out = t) is defined inline in MeMathInline.h. */
 /* rows 0..2 = R with column 3 = 0; the translation is untouched */
 MEPUBLIC void MEAPI MeMatrix4TMSetRotation(MeMatrix4 tm, MECONSTMATRIX MeMatrix3 R);
 /* R = rows 0..2, columns 0..2 of tm */
@@ -144,10 +139,9 @@ MEPUBLIC void MEAPI MeMatrix4TMGetRotation(MeMatrix3 R, MECONSTMATRIX MeMatrix4 
 MEPUBLIC void MEAPI MeMatrix4TMCompose(MeMatrix4 out, MECONSTMATRIX MeMatrix4 a, MECONSTMATRIX MeMatrix4 b);
 /* out = tm^-1 for a rigid tm: R' = R^T, t' = -t R^T */
 MEPUBLIC void MEAPI MeMatrix4TMInverse(MeMatrix4 out, MECONSTMATRIX MeMatrix4 tm);
-/* out = p R + t: a body-frame point into world coordinates */
-MEPUBLIC void MEAPI MeMatrix4TMTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p);
-/* out = v R: a body-frame direction into world coordinates (no translation) */
-MEPUBLIC void MEAPI MeMatrix4TMRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 v);
+/* TMTransform (out = p R + t, a body point into the world) and TMRotate
+ * (out = v R, a body direction into the world) are defined inline in
+ * MeMathInline.h. */
 /* out = (p - t) R^T: a world point into body coordinates */
 MEPUBLIC void MEAPI MeMatrix4TMInverseTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p);
 /* out = v R^T: a world direction into body coordinates */

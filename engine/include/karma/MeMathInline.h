@@ -1,5 +1,6 @@
-/* MeMathInline.h: the small MeVector3 operations, defined in the header so
- * that a call costs no more than its arithmetic. Included by MeMath.h; do
+/* MeMathInline.h: the small MeVector3 operations and the products of a
+ * vector with a 3x3 matrix or a TM, defined in the header so that a call
+ * costs no more than its arithmetic. Included by MeMath.h; do
  * not include it on its own.
  *
  * Each function here is also exported by the library under the same name
@@ -97,6 +98,41 @@ ME_MATH_INLINE MeReal MEAPI MeVector3Normalize(MeVector3 v) {
 /* TRUE when no component is NaN or infinite */
 ME_MATH_INLINE MeBool MEAPI MeVector3AllFinite(const MeVector3 v) {
   return (isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2])) ? TRUE : FALSE;
+}
+
+/* out = m * v with v a column: out[i] = sum_j m[i][j] v[j].
+ * For a rotation R this takes a WORLD vector into BODY coordinates. */
+ME_MATH_INLINE void MEAPI MeMatrix3MultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m, const MeVector3 v) {
+  MeVector3Set(out, MeVector3Dot(m[0], v), MeVector3Dot(m[1], v), MeVector3Dot(m[2], v));
+}
+
+/* out = m^T * v = v * m with v a row: out[j] = sum_i v[i] m[i][j].
+ * For a rotation R this takes a BODY vector into WORLD coordinates. */
+ME_MATH_INLINE void MEAPI MeMatrix3TransposeMultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m,
+                                                          const MeVector3 v) {
+  const MeReal x = v[0], y = v[1], z = v[2];
+  MeVector3Set(out, x * m[0][0] + y * m[1][0] + z * m[2][0], x * m[0][1] + y * m[1][1] + z * m[2][1],
+               x * m[0][2] + y * m[1][2] + z * m[2][2]);
+}
+
+/* out = t, the translation (row 3) of a TM */
+ME_MATH_INLINE void MEAPI MeMatrix4TMGetPosition(MeVector3 out, MECONSTMATRIX MeMatrix4 tm) {
+  MeVector3Set(out, tm[3][0], tm[3][1], tm[3][2]);
+}
+
+/* out = v R: a body-frame direction into world coordinates (no translation) */
+ME_MATH_INLINE void MEAPI MeMatrix4TMRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 v) {
+  const MeReal x = v[0], y = v[1], z = v[2];
+  MeVector3Set(out, x * tm[0][0] + y * tm[1][0] + z * tm[2][0], x * tm[0][1] + y * tm[1][1] + z * tm[2][1],
+               x * tm[0][2] + y * tm[1][2] + z * tm[2][2]);
+}
+
+/* out = p R + t: a body-frame point into world coordinates */
+ME_MATH_INLINE void MEAPI MeMatrix4TMTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p) {
+  const MeReal x = p[0], y = p[1], z = p[2];
+  MeVector3Set(out, x * tm[0][0] + y * tm[1][0] + z * tm[2][0] + tm[3][0],
+               x * tm[0][1] + y * tm[1][1] + z * tm[2][1] + tm[3][1],
+               x * tm[0][2] + y * tm[1][2] + z * tm[2][2] + tm[3][2]);
 }
 
 ME_EXTERN_C_END

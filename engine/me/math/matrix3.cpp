@@ -58,16 +58,6 @@ MeBool MEAPI MeMatrix3Inverse(MeMatrix3 out, MECONSTMATRIX MeMatrix3 m) {
   return TRUE;
 }
 
-void MEAPI MeMatrix3MultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m, const MeVector3 v) {
-  MeVector3Set(out, dot3(m[0], v), dot3(m[1], v), dot3(m[2], v));
-}
-
-void MEAPI MeMatrix3TransposeMultiplyVector(MeVector3 out, MECONSTMATRIX MeMatrix3 m, const MeVector3 v) {
-  const MeReal x = v[0], y = v[1], z = v[2];
-  MeVector3Set(out, x * m[0][0] + y * m[1][0] + z * m[2][0], x * m[0][1] + y * m[1][1] + z * m[2][1],
-               x * m[0][2] + y * m[1][2] + z * m[2][2]);
-}
-
 MeBool MEAPI MeMatrix3IsOrthonormal(MECONSTMATRIX MeMatrix3 R, MeReal tol) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {

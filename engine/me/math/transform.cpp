@@ -58,10 +58,6 @@ void MEAPI MeMatrix4TMSetPositionVector(MeMatrix4 tm, const MeVector3 p) {
   MeMatrix4TMSetPosition(tm, p[0], p[1], p[2]);
 }
 
-void MEAPI MeMatrix4TMGetPosition(MeVector3 out, MECONSTMATRIX MeMatrix4 tm) {
-  MeVector3Set(out, tm[3][0], tm[3][1], tm[3][2]);
-}
-
 void MEAPI MeMatrix4TMSetRotation(MeMatrix4 tm, MECONSTMATRIX MeMatrix3 R) {
   const Mat3 r = karma::me::detail::load3(R);
   for (int i = 0; i < 3; ++i) {
@@ -94,18 +90,6 @@ void MEAPI MeMatrix4TMInverse(MeMatrix4 out, MECONSTMATRIX MeMatrix4 tm) {
   rowTimesTranspose(t, tm[3], r);  // t R^T
   for (int j = 0; j < 3; ++j) t[j] = -t[j];
   storeTM(out, rt, t);
-}
-
-void MEAPI MeMatrix4TMTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p) {
-  MeReal w[3];
-  rowTimes(w, p, rotationOf(tm));
-  MeVector3Set(out, w[0] + tm[3][0], w[1] + tm[3][1], w[2] + tm[3][2]);
-}
-
-void MEAPI MeMatrix4TMRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 v) {
-  MeReal w[3];
-  rowTimes(w, v, rotationOf(tm));
-  MeVector3Copy(out, w);
 }
 
 void MEAPI MeMatrix4TMInverseTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p) {
