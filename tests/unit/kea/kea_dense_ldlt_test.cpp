@@ -2,14 +2,17 @@
 // systems of every size it takes to the rounding of a backward-stable
 // factorisation, agrees with the envelope LDL^T, leaves the padding of its
 // rows zero, reports a breakdown on a singular or indefinite block, refuses
-// a block larger than kMaxRows, and gives the same bits on every run.
+// a block larger than kMaxRows, and gives the same bits on every run and
+// the bits of its documented order taken one scalar at a time.
 #include "kea_dense_ldlt.h"
 #include "kea_envelope_ldlt.h"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 using karma::kea::detail::DenseLdlt;
@@ -148,4 +151,57 @@ TEST(DenseLdlt, TheSameBitsOnEveryRun) {
     EXPECT_TRUE(again == first);
     EXPECT_TRUE(e.upper == factor);
   }
+}
+
+namespace {
+
+using Bits = std::conditional_t<sizeof(MeReal) == 4, std::uint32_t, std::uint64_t>;
+
+// The factorisation and the solves exactly as kea_dense_ldlt.h orders them,
+// one scalar at a time: row by row, each entry's updates in ascending k (a
+// row k whose multiplier is exactly zero skipped); forward in ascending k,
+// backward in descending c.
+std::vector<MeReal> ScalarLdltSolve(const std::vector<double> &a, int m, const std::vector<MeReal> &b) {
+  std::vector<MeReal> u((size_t)m * m, 0), l((size_t)m * m, 0), r((size_t)m, 0);
+  for (int i = 0; i < m; ++i)
+    for (int j = i; j < m; ++j) u[(size_t)i * m + j] = (MeReal)a[(size_t)i * m + j];
+  for (int j = 0; j < m; ++j) {
+    for (int k = 0; k < j; ++k) {
+      const MeReal lj = u[(size_t)k * m + j] * r[(size_t)k];
+      l[(size_t)j * m + k] = lj;
+      if (lj == 0) continue;
+      for (int c = j; c < m; ++c) u[(size_t)j * m + c] = u[(size_t)j * m + c] - lj * u[(size_t)k * m + c];
+    }
+    r[(size_t)j] = MeReal(1) / u[(size_t)j * m + j];
+  }
+  std::vector<MeReal> y = b, x((size_t)m);
+  for (int k = 0; k < m; ++k) {
+    x[(size_t)k] = y[(size_t)k] * r[(size_t)k];
+    for (int c = k + 1; c < m; ++c) y[(size_t)c] = y[(size_t)c] - x[(size_t)k] * u[(size_t)k * m + c];
+  }
+  for (int c = m - 1; c > 0; --c)
+    for (int k = 0; k < c; ++k) x[(size_t)k] = x[(size_t)k] - x[(size_t)c] * l[(size_t)c * m + k];
+  return x;
+}
+
+}  // namespace
+
+// The vector lanes and the blocks of the solves change no rounding: every
+// size, full and banded (rows that do not meet), gives the scalar order's
+// bits.
+TEST(DenseLdlt, GivesTheBitsOfTheScalarOrder) {
+  DenseLdlt d;
+  for (int band : {0, 3})
+    for (int m = 1; m <= DenseLdlt::kMaxRows; ++m) {
+      const std::vector<double> a = Spd(m, 7u + (std::uint32_t)m, band);
+      std::vector<MeReal> b((size_t)m), x((size_t)m);
+      for (int i = 0; i < m; ++i) b[(size_t)i] = (MeReal)Unit(99u, (std::uint32_t)i);
+      Fill(d, a, m);
+      ASSERT_TRUE(d.factor()) << "m = " << m;
+      d.solve(b, x);
+      const std::vector<MeReal> expected = ScalarLdltSolve(a, m, b);
+      for (int i = 0; i < m; ++i)
+        ASSERT_EQ(std::bit_cast<Bits>(x[(size_t)i]), std::bit_cast<Bits>(expected[(size_t)i]))
+            << "m = " << m << ", band = " << band << ", x[" << i << "]";
+    }
 }
