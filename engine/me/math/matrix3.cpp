@@ -1,4 +1,5 @@
-// matrix3.cpp: MeMatrix3 algebra (see MeMath.h for the formulas).
+// matrix3.cpp: MeMatrix3 algebra (see MeMath.h for the formulas); the
+// matrix-vector products are inline in MeMathInline.h.
 // Outputs are written only after the result is complete, so they may alias
 // inputs.
 #include "math_detail.h"

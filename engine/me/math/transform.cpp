@@ -5,7 +5,8 @@
 //
 // A body point p maps to the world point p R + t; a direction v maps to v R.
 // The inverse is | R^T 0 ; -t R^T 1 |. Every function builds its result
-// in locals before writing, so outputs may alias inputs.
+// in locals before writing, so outputs may alias inputs. TMGetPosition,
+// TMTransform and TMRotate are inline in MeMathInline.h.
 #include "math_detail.h"
 
 using karma::me::detail::dot3;

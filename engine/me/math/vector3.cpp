@@ -1,6 +1,7 @@
 // vector3.cpp: MeVector3 arithmetic (see MeMath.h for the formulas). The
-// operations MeMathInline.h defines inline are exported from here, compiled
-// from that same text.
+// operations MeMathInline.h defines inline (the small vector operations and
+// the matrix-vector and TM point/direction products) are exported from
+// here, compiled from that same text.
 #define ME_MATH_EXPORT_INLINES
 #include "math_detail.h"
 
