@@ -7,10 +7,11 @@
 //
 //   friction_models   a scripted run (the doll falls down the stairs; the
 //                     push at frame 130 sends it into the boxes; 300
-//                     frames of 4 substeps) once per model:
-//                     dynamics time per frame (MdtWorldStep: Kea's solve
-//                     and the integration) mean and peak, Kea's iterations
-//                     and rows per substep, and the ratios high / cheap.
+//                     frames, one world step each) once per model:
+//                     dynamics time per frame (MdtWorldStep: Kea's solve,
+//                     the integration and the joint projection) mean and
+//                     peak, Kea's iterations and rows per step, and the
+//                     ratios high / cheap.
 //                     The two runs take different paths (the cheap doll
 //                     slides, the Coulomb one stops on the steps), so
 //                     their contact sets differ too; hence the next one.
@@ -19,7 +20,7 @@
 //                     its dynamics timed, so both solve the same bodies
 //                     and contacts.
 // Times are the thread's CPU time (clock_gettime THREAD_CPUTIME), in
-// microseconds per frame of 4 substeps.
+// microseconds per frame (one step).
 // Run e.g.  build/release/bench/ballman_bench --benchmark_repetitions=5
 // (the machines are shared and noisy: read the ratios, and the medians).
 #include <benchmark/benchmark.h>
@@ -46,28 +47,24 @@ struct Figures {
   double dynamicsUs = 0;   // per frame, mean
   double peakUs = 0;       // the slowest frame's dynamics
   double collisionUs = 0;  // per frame, mean
-  double iterations = 0;   // Kea's, per substep
-  double rows = 0;         // per substep
-  int frames = 0, substeps = 0;
+  double iterations = 0;   // Kea's, per frame
+  double rows = 0;         // per frame
+  int frames = 0;
 };
 
-// One frame: the substeps, collision and dynamics timed apart.
+// One frame (one step), collision and dynamics timed apart.
 void Frame(Ballman *b, Figures &f) {
-  double dynamics = 0;
-  for (int s = 0; s < b->substeps; ++s) {
-    const double t0 = CpuUs();
-    BallmanCollide(b);
-    const double t1 = CpuUs();
-    BallmanDynamics(b);
-    const double t2 = CpuUs();
-    f.collisionUs += t1 - t0;
-    dynamics += t2 - t1;
-    MdtWorldStepStats st;
-    BallmanStepStats(b, &st);
-    f.iterations += st.keaIterations;
-    f.rows += st.rows;
-    ++f.substeps;
-  }
+  const double t0 = CpuUs();
+  BallmanCollide(b);
+  const double t1 = CpuUs();
+  BallmanDynamics(b);
+  const double t2 = CpuUs();
+  f.collisionUs += t1 - t0;
+  const double dynamics = t2 - t1;
+  MdtWorldStepStats st;
+  BallmanStepStats(b, &st);
+  f.iterations += st.keaIterations;
+  f.rows += st.rows;
   f.dynamicsUs += dynamics;
   f.peakUs = std::max(f.peakUs, dynamics);
   ++f.frames;
@@ -76,8 +73,8 @@ void Frame(Ballman *b, Figures &f) {
 void Finish(Figures &f) {
   f.dynamicsUs /= f.frames;
   f.collisionUs /= f.frames;
-  f.iterations /= f.substeps;
-  f.rows /= f.substeps;
+  f.iterations /= f.frames;
+  f.rows /= f.frames;
 }
 
 Figures Scripted(bool highQuality) {

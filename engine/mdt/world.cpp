@@ -39,6 +39,7 @@ void setDefaultParams(MdtWorldParams &p, MeReal l, MeReal m) {
   p.keaTolerance = 0;
   p.geometricStiffness = 1;
   p.keaIterativeRows = kDefaultIterativeRows;
+  p.jointProjection = 0;
 }
 
 }  // namespace

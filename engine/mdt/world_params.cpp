@@ -167,6 +167,18 @@ void MEAPI MdtWorldSetKeaMaxIterations(const MdtWorldID world, const int n) {
   world->params.keaMaxIterations = world->priv->checked.keaMaxIterations = n;
 }
 
+void MEAPI MdtWorldSetJointProjection(const MdtWorldID world, const int sweeps) {
+  static const char *fn = "MdtWorldSetJointProjection";
+  ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
+  ME_REQUIRE_ARG(sweeps >= 0, fn, "sweeps must be >= 0 (0 = off), got %d; ignored", sweeps);
+  world->params.jointProjection = world->priv->checked.jointProjection = sweeps;
+}
+
+int MEAPI MdtWorldGetJointProjection(const MdtWorldID world) {
+  ME_REQUIRE_ARG_RET(world != nullptr, 0, "MdtWorldGetJointProjection", "world is NULL");
+  return world->params.jointProjection;
+}
+
 void MEAPI MdtWorldSetGeometricStiffness(const MdtWorldID world, const MeReal factor) {
   setNonNegative(world, factor, &MdtWorldParams::geometricStiffness, "MdtWorldSetGeometricStiffness");
 }
@@ -286,6 +298,7 @@ void checkDirectParamWrites(MdtWorldID world) {
   p.autoDisable = ok.autoDisable = p.autoDisable ? TRUE : FALSE;
   checkCount(p.maxMatrixSize, ok.maxMatrixSize, "MdtWorldSetMaxMatrixSize", "maxMatrixSize");
   checkCount(p.keaMaxIterations, ok.keaMaxIterations, "MdtWorldSetKeaMaxIterations", "keaMaxIterations");
+  checkCount(p.jointProjection, ok.jointProjection, "MdtWorldSetJointProjection", "jointProjection");
   checkKeaMethod(p, ok);
 }
 

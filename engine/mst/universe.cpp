@@ -5,6 +5,8 @@
 // for the step (PrepareModelsForStep, step_bounds.cpp), the space updates
 // every unfrozen model's box, the bridge turns the pairs into contacts, and
 // the world steps.
+#include <cmath>
+
 #include "mst_internal.h"
 
 extern "C" {
@@ -74,6 +76,14 @@ void MEAPI MstUniverseStep(MstUniverseID u, MeReal stepSize) {
   McdSpaceUpdateAll(u->space);
   MstBridgeUpdateContacts(u->bridge, u->space, u->world);
   MdtWorldStep(u->world, stepSize);
+}
+
+void MEAPI MstUniversePrepareStep(MstUniverseID u, MeReal stepSize) {
+  static const char *fn = "MstUniversePrepareStep";
+  ME_REQUIRE_ARG(u != nullptr, fn, "universe is NULL");
+  ME_REQUIRE_ARG(std::isfinite(stepSize) && stepSize > 0, fn, "stepSize must be positive and finite, got %g; ignored",
+                 (double)stepSize);
+  karma::mst::PrepareModelsForStep(u, stepSize);
 }
 
 MdtWorldID MEAPI MstUniverseGetWorld(MstUniverseID u) { return u ? u->world : nullptr; }

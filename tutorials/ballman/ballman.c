@@ -78,18 +78,15 @@ static void MEAPI Propel(RRender *r, void *userdata) {
 }
 
 static void MEAPI tick(RRender *r, void *userdata) {
-  int i;
   (void)r, (void)userdata;
-  /* One frame: the substeps, each timed in the two sections the
-     * performance bar reads (a section's times add up over the frame). */
-  for (i = 0; i < ballman->substeps; ++i) {
-    MeProfileStartSection("collision");
-    BallmanCollide(ballman);
-    MeProfileEndSection("collision");
-    MeProfileStartSection("dynamics");
-    BallmanDynamics(ballman);
-    MeProfileEndSection("dynamics");
-  }
+  /* One frame, one step, timed in the two sections the performance bar
+     * reads. */
+  MeProfileStartSection("collision");
+  BallmanCollide(ballman);
+  MeProfileEndSection("collision");
+  MeProfileStartSection("dynamics");
+  BallmanDynamics(ballman);
+  MeProfileEndSection("dynamics");
   CapEnds();
   TutorialRecordStep(record);
 }

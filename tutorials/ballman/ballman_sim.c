@@ -6,10 +6,10 @@
 #include <string.h>
 
 const MeReal kBallmanStep = (MeReal)1 / 60;
-const int kBallmanSubsteps = 4;
+const int kBallmanProjection = 2;
 /* The guide's VISCOCITY: the cheap materials' slip, sliding speed (m/s)
  * per newton of friction force. */
-const MeReal kBallmanViscosity = (MeReal)0.05;
+const MeReal kBallmanViscosity = (MeReal)0.3;
 const MeReal kBallmanPropelTime = (MeReal)0.5;
 
 /* ---- the rag doll, standing, facing +x, feet at y = 0, centred on x = z = 0 */
@@ -171,12 +171,12 @@ Ballman *BallmanCreate(void) {
   }
   fw = b->universe->frame;
   MdtWorldSetGravity(b->universe->world, 0, -(MeReal)9.81, 0);
-  /* Four world steps per frame. The doll's limbs whip round at 20-25
-     * rad/s when it lands on the stairs face first (the sphere of a head
-     * rolls on the step), and a joint linearised over a 1/60 s step lets its
-     * two halves drift apart by centimetres at that rate; over 1/240 s the
-     * drift is sixteen times smaller. */
-  b->substeps = kBallmanSubsteps;
+  /* One world step per frame. The doll's limbs whip round at 20-25 rad/s
+     * when it lands on the stairs face first (the sphere of a head rolls on
+     * the step), and a joint linearised over a 1/60 s step lets its two
+     * halves drift apart by centimetres at that rate; the joint projection
+     * (MdtWorldSetJointProjection) closes them after every step. */
+  MdtWorldSetJointProjection(b->universe->world, kBallmanProjection);
 
   b->dollMaterial = MstBridgeGetNewMaterial(b->universe->bridge);
   b->stairMaterial = MstBridgeGetNewMaterial(b->universe->bridge);
@@ -289,10 +289,14 @@ void BallmanSetHighQualityFriction(Ballman *b, MeBool on) {
 }
 
 void BallmanPropel(Ballman *b) {
-  b->propelSteps = (int)(kBallmanPropelTime / kBallmanStep + (MeReal)0.5) * b->substeps;
+  b->propelSteps = (int)(kBallmanPropelTime / kBallmanStep + (MeReal)0.5);
 }
 
 void BallmanCollide(Ballman *b) {
+  /* Each model's box grown by how far it can move in the step (a limb
+     * whipping round, the doll pushed at the boxes), so that its contacts
+     * are found before it touches. */
+  MstUniversePrepareStep(b->universe, kBallmanStep);
   McdSpaceUpdateAll(b->universe->space);
   MstBridgeUpdateContacts(b->universe->bridge, b->universe->space, b->universe->world);
 }
@@ -321,15 +325,12 @@ void BallmanDynamics(Ballman *b) {
     Push(b);
     --b->propelSteps;
   }
-  MdtWorldStep(b->universe->world, kBallmanStep / (MeReal)b->substeps);
+  MdtWorldStep(b->universe->world, kBallmanStep);
 }
 
 void BallmanStep(Ballman *b) {
-  int i;
-  for (i = 0; i < b->substeps; ++i) {
-    BallmanCollide(b);
-    BallmanDynamics(b);
-  }
+  BallmanCollide(b);
+  BallmanDynamics(b);
 }
 
 MeReal BallmanJointError(const Ballman *b) {

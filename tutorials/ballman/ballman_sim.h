@@ -68,12 +68,11 @@ typedef struct Ballman {
   MeMatrix4 groundTM;
   MstMaterialID dollMaterial, stairMaterial, boxMaterial;
   MeBool highQuality;
-  int substeps;    /* world steps per frame (kBallmanSubsteps) */
-  int propelSteps; /* substeps of push left */
+  int propelSteps; /* steps of push left */
 } Ballman;
 
-extern const MeReal kBallmanStep;       /* 1/60 s: one frame */
-extern const int kBallmanSubsteps;      /* collision + dynamics runs per frame */
+extern const MeReal kBallmanStep;       /* 1/60 s: one frame, one world step */
+extern const int kBallmanProjection;    /* joint projection sweeps per step */
 extern const MeReal kBallmanViscosity;  /* the cheap materials' slip */
 extern const MeReal kBallmanPropelTime; /* how long one press pushes, s */
 
@@ -87,10 +86,10 @@ void BallmanReset(Ballman *b);
 void BallmanSetHighQualityFriction(Ballman *b, MeBool on);
 /* Pushes the rag doll towards the boxes for kBallmanPropelTime. */
 void BallmanPropel(Ballman *b);
-/* A frame is `substeps` substeps of kBallmanStep / substeps, each in two
- * halves so that the viewer and the benchmark can time them apart:
- * collision (farfield, nearfield, contacts), then dynamics (the push,
- * Kea's solve, integration). BallmanStep runs a whole frame. */
+/* A frame is one step of kBallmanStep in two halves, so that the viewer
+ * and the benchmark can time them apart: collision (farfield, nearfield,
+ * contacts), then dynamics (the push, Kea's solve, integration, joint
+ * projection). BallmanStep runs a whole frame. */
 void BallmanCollide(Ballman *b);
 void BallmanDynamics(Ballman *b);
 void BallmanStep(Ballman *b);

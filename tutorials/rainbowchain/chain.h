@@ -27,13 +27,12 @@ typedef struct RainbowChain {
   McdModelID ground;
   MeMatrix4 groundTM;
   MeVector3 endForce; /* applied to the last ball every step (the mouse) */
-  int substeps;       /* world steps per frame (kChainSubsteps) */
 } RainbowChain;
 
 extern const MeReal kChainBallRadius; /* 0.5 m */
 extern const MeReal kChainLink;       /* 1.1 m between neighbouring centres */
-extern const MeReal kChainStep;       /* 1/60 s: one frame */
-extern const int kChainSubsteps;      /* collision + dynamics runs per frame */
+extern const MeReal kChainStep;       /* 1/60 s: one frame, one world step */
+extern const int kChainProjection;    /* joint projection sweeps per step */
 
 /* Builds the universe, the ground and the chain in its starting pose.
  * Returns NULL if the universe cannot be made. */
@@ -43,10 +42,10 @@ void RainbowChainDestroy(RainbowChain *chain);
 void RainbowChainReset(RainbowChain *chain);
 /* The force on the last ball until changed (N). */
 void RainbowChainSetEndForce(RainbowChain *chain, MeReal fx, MeReal fy, MeReal fz);
-/* A frame is `substeps` substeps of kChainStep / substeps, each in two
- * halves so that the viewer can time them apart: collision (farfield,
- * nearfield, contacts) then dynamics (forces, solve, integration).
- * RainbowChainStep runs a whole frame. */
+/* A frame is one step of kChainStep in two halves, so that the viewer can
+ * time them apart: collision (farfield, nearfield, contacts) then dynamics
+ * (forces, solve, integration, joint projection). RainbowChainStep runs a
+ * whole frame. */
 void RainbowChainCollide(RainbowChain *chain);
 void RainbowChainDynamics(RainbowChain *chain);
 void RainbowChainStep(RainbowChain *chain);

@@ -67,6 +67,7 @@ typedef struct MdtWorldParams {
   MeReal keaTolerance;
   MeReal geometricStiffness;
   int keaIterativeRows; /* see MdtWorldSetKeaIterativeRows; 0 = never, default 300 */
+  int jointProjection;  /* see MdtWorldSetJointProjection; 0 = off (the default) */
 } MdtWorldParams;
 
 /* What the last MdtWorldStep did. */
@@ -262,6 +263,19 @@ MEPUBLIC MdtBodyEnableCallbackPtr MEAPI MdtWorldGetBodyEnableCallback(const MdtW
  * large mass ratios unstable, and leaves bodies driven through their centre
  * of mass (wheels on axles) untouched. factor >= 0; 0 switches it off. */
 MEPUBLIC void MEAPI MdtWorldSetGeometricStiffness(const MdtWorldID world, const MeReal factor);
+
+/* Projection of the point joints (ball-and-socket, hinge, universal,
+ * skeletal) after each step: up to `sweeps` rounds of position impulses,
+ * joint by joint, that bring each joint's two anchors back together (to
+ * 1e-4 m times the world's length scale); velocities are left as the step
+ * made them. For chains and rag dolls whose links whip round faster than
+ * the step can follow (a joint drifts open by about h^2 w^2 d / 2 a step),
+ * so they hold at 1/60 s without sub-steps. It turns the bodies it moves:
+ * do not use it where a fast spinner hangs from a joint (a top) or where a
+ * body is also held by a soft row (a suspension). sweeps >= 0; 0, the
+ * default, switches it off. */
+MEPUBLIC void MEAPI MdtWorldSetJointProjection(const MdtWorldID world, const int sweeps);
+MEPUBLIC int MEAPI MdtWorldGetJointProjection(const MdtWorldID world);
 
 /* Solver knobs (see kea_lcp.h's contract): the method, its iteration cap
  * (0 = default) and relative tolerance (0 = default). */

@@ -51,6 +51,13 @@ typedef MstUniverse *MstUniverseID;
 MEPUBLIC MstUniverseID MEAPI MstUniverseCreate(const MstUniverseSizes *sizes);
 MEPUBLIC void MEAPI MstUniverseDestroy(MstUniverseID universe);
 MEPUBLIC void MEAPI MstUniverseStep(MstUniverseID universe, MeReal stepSize);
+/* The first stage of MstUniverseStep alone: every unfrozen model takes its
+ * body's sort key and a bounds padding for a step of stepSize (how far it
+ * can move in it), so that the space pairs it with what it can reach within
+ * the step and the bridge finds the contacts before it touches. A program
+ * that runs the stages itself (to time them apart) calls it before
+ * McdSpaceUpdateAll; stepSize > 0. */
+MEPUBLIC void MEAPI MstUniversePrepareStep(MstUniverseID universe, MeReal stepSize);
 
 MEPUBLIC MdtWorldID MEAPI MstUniverseGetWorld(MstUniverseID universe);
 MEPUBLIC McdSpaceID MEAPI MstUniverseGetSpace(MstUniverseID universe);

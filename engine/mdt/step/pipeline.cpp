@@ -24,6 +24,7 @@ bool stepPartition(MdtWorldID world, StepScratch &s, int index, const StepContex
   applyImpulses(s, part, rows, lambda, ctx);
   integratePartition(s, part, ctx.h);
   applyBounces(s, part, rows, problem);
+  projectJoints(world, s, part);
   s.arena.release(mark);
   return autoDisablePartition(world, s, part, ctx.h);
 }

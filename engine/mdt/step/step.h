@@ -25,7 +25,9 @@
 //                  impulses;
 //   6. apply       (apply.cpp) impulses to the bodies' velocities, forces
 //                  and warm-start memory to the constraints;
-//   7. integrate   (advance.cpp) positions and orientations;
+//   7. integrate   (advance.cpp) positions and orientations; then the
+//                  bounces owed (bounce.cpp) and, if the world asks for it,
+//                  the point joints' projection (project_joints.cpp);
 //   8. sleep       (sleep.cpp) a partition whose bodies have all stayed below
 //                  every threshold for the alive window goes to sleep.
 //
@@ -117,6 +119,9 @@ void integratePartition(StepScratch &s, const Partition &p, MeReal h);
 // Stage 7b: the bounces owed by impacts found apart (bounce.cpp); nothing
 // at all when no row asked for one (rows.bounceRows = 0).
 void applyBounces(StepScratch &s, const Partition &p, const PartitionRows &rows, const BodySpaceProblem &problem);
+// Stage 7c, optional (MdtWorldSetJointProjection): the point joints'
+// anchors brought back together by position impulses (project_joints.cpp).
+void projectJoints(MdtWorldID world, StepScratch &s, const Partition &p);
 // Stage 8: updates each body's rest time from its new velocities and
 // accelerations; true if the whole partition has rested for the alive window
 // and was put to sleep.
