@@ -9,7 +9,7 @@ const MeReal kBallmanStep = (MeReal)1 / 60;
 const int kBallmanProjection = 2;
 /* The guide's VISCOCITY: the cheap materials' slip, sliding speed (m/s)
  * per newton of friction force. */
-const MeReal kBallmanViscosity = (MeReal)0.3;
+const MeReal kBallmanViscosity = (MeReal)0.05;
 const MeReal kBallmanPropelTime = (MeReal)0.5;
 
 /* ---- the rag doll, standing, facing +x, feet at y = 0, centred on x = z = 0 */

