@@ -14,10 +14,12 @@ using namespace hard;
 namespace {
 
 // 10 links 0.1 m apart hanging from the world by ball joints, the bottom
-// link 1000 times heavier than the others; largest joint gap over 10 s.
-double chainGap(MdtKeaMethod m, double h) {
+// link 1000 times heavier than the others; largest joint gap over 10 s, at
+// the world's epsilon `epsilon`.
+double chainGap(MdtKeaMethod m, double h, double epsilon = 0.01) {
   World w(16, 32);
   MdtWorldSetGravity(w, 0, (MeReal)-kG, 0);
+  MdtWorldSetEpsilon(w, (MeReal)epsilon);
   MdtWorldSetAutoDisable(w, FALSE);
   MdtWorldSetKeaMethod(w, m);
   std::vector<MdtConstraintID> joints;
@@ -65,6 +67,23 @@ TEST_P(JointSolvers, HangingChain1000To1Holds) {
     GTEST_SKIP() << "known limit (joint error at the default epsilon for a 1000:1 mass ratio, "
                     "issue 15; engine/mdt/step and engine/kea): gap "
                  << gap60 << " m at 1/60 s";
+}
+
+// The setting that lifts it, as the guide advises for large masses: a
+// smaller epsilon. At 1e-4 the exact solver holds the gap to 1.4 mm at
+// 1/60 s (single precision). The iterative solver does not: its 50 sweeps
+// leave a 1000:1 chain of stiff rows far from converged, and from step to
+// step the error grows until the heavy link flies off (gap ~1e8 m; about
+// 1000 sweeps hold it to 6 mm).
+TEST_P(JointSolvers, HangingChain1000To1HoldsAtEpsilon1e4) {
+  const double gap = chainGap(GetParam(), 1.0 / 60, 1e-4);
+  std::printf("[ figures  ] 1000:1 chain %s, epsilon 1e-4: largest joint gap %.4g m at 1/60 s\n",
+              solverName(GetParam()), gap);
+  if (GetParam() == MdtKeaMethodPGS && !(gap < 0.005))
+    GTEST_SKIP() << "known limit (the iterative solver diverges on a 1000:1 chain of stiff rows, issue 14; "
+                    "engine/mdt/step/solver_pgs.cpp): gap "
+                 << gap << " m at 1/60 s";
+  EXPECT_LT(gap, 0.005);
 }
 
 namespace {
