@@ -222,5 +222,8 @@ void anyOrthogonal(const MeVector3 n, MeVector3 out);
 void pointVelocity(const MdtConstraint *c, int i, const MeVector3 p, MeVector3 out);
 // Position of body i's origin (zero for the world), for lever arms.
 void bodyOrigin(const MdtConstraint *c, int i, MeVector3 out);
+// A joint whose two attachment points coincide when it holds (ball and
+// socket, hinge, universal, skeletal).
+bool isPointJoint(const MdtConstraint *c);
 
 }  // namespace karma::mdt

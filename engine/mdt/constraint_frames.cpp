@@ -72,6 +72,18 @@ void bodyOrigin(const MdtConstraint *c, int i, MeVector3 out) {
     MeVector3Set(out, 0, 0, 0);
 }
 
+bool isPointJoint(const MdtConstraint *c) {
+  switch (c->type->id) {
+    case MdtConstraintTypeBSJoint:
+    case MdtConstraintTypeHinge:
+    case MdtConstraintTypeUniversal:
+    case MdtConstraintTypeSkeletal:
+      return true;
+    default:
+      return false;
+  }
+}
+
 void pointVelocity(const MdtConstraint *c, int i, const MeVector3 p, MeVector3 out) {
   const MdtBody *b = c->body[i];
   if (!b) {

@@ -66,19 +66,6 @@ double energyDrift(MdtWorldID world) {
   return ledger.drift;
 }
 
-// Joints whose two attachment points coincide when the joint holds.
-bool pointJoint(const MdtConstraint *c) {
-  switch (c->type->id) {
-    case MdtConstraintTypeBSJoint:
-    case MdtConstraintTypeHinge:
-    case MdtConstraintTypeUniversal:
-    case MdtConstraintTypeSkeletal:
-      return true;
-    default:
-      return false;
-  }
-}
-
 // Simulated: enabled, or for a contact of a group, its group enabled.
 bool active(const MdtConstraint *c) { return c->owner ? c->owner->enabled : c->enabled; }
 
@@ -90,7 +77,7 @@ void jointsAndContacts(MdtWorldID world, MeDiagnosticFigures &f) {
     if (!active(c) || !c->body[0]) continue;
     if (c->type->id == MdtConstraintTypeContact) {
       deepest = std::max(deepest, double(MdtContactGetPenetration(MdtConstraintDCastContact(c))));
-    } else if (pointJoint(c)) {
+    } else if (isPointJoint(c)) {
       MeVector3 a, b;
       MdtConstraintBodyGetPosition(c, 0, a);
       MdtConstraintBodyGetPosition(c, 1, b);

@@ -82,18 +82,6 @@ struct Projection {
   std::span<MeReal> P;  // C on entry to a solve, the impulses after
 };
 
-bool isPointJoint(const MdtConstraint *c) {
-  switch (c->type->id) {
-    case MdtConstraintTypeBSJoint:
-    case MdtConstraintTypeHinge:
-    case MdtConstraintTypeUniversal:
-    case MdtConstraintTypeSkeletal:
-      return true;
-    default:
-      return false;
-  }
-}
-
 // The sign of body B in joint c's anchor equation: +1 body 0, -1 body 1,
 // 0 neither (the world is no body).
 MeReal sideOf(const MdtConstraint *c, const MdtBody *B) {
