@@ -54,6 +54,7 @@ TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
                                              "h",
                                              "tolerance",
                                              "cap",
+                                             "projection",
                                              "repeats",
                                              "us_per_step",
                                              "us_min",
@@ -77,6 +78,7 @@ TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
   const std::string path = TempPath("tradeoff_test.csv");
   std::vector<ResultRow> rows = {SampleRow(100, 0.01, true), SampleRow(50, 0.2, false)};
   rows[0].frontDrift = true;
+  rows[1].setting.projection = 2;
   std::FILE *f = std::fopen(path.c_str(), "w");
   ASSERT_NE(f, nullptr);
   WriteCsv(f, rows);
@@ -89,15 +91,17 @@ TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
   const std::vector<std::string> cells = SplitCsvLine(line);
   ASSERT_EQ(cells.size(), expected.size());
   EXPECT_EQ(cells[3], "iterative:10 epsilon=0.001 h=1/120");
-  EXPECT_EQ(cells[11], "100");  // the median of the repetitions
-  EXPECT_EQ(cells[14], "200");  // 1/60 s is two steps of 1/120 s
-  EXPECT_EQ(cells[26], "1");
-  EXPECT_EQ(cells[28], "top box drift 0.00 mm, height \"6.1\" m");  // quotes survive
+  EXPECT_EQ(cells[10], "");     // projection: the scene's own
+  EXPECT_EQ(cells[12], "100");  // the median of the repetitions
+  EXPECT_EQ(cells[15], "200");  // 1/60 s is two steps of 1/120 s
+  EXPECT_EQ(cells[27], "1");
+  EXPECT_EQ(cells[29], "top box drift 0.00 mm, height \"6.1\" m");  // quotes survive
   std::vector<ResultRow> back;
   std::string error;
   ASSERT_TRUE(ReadCsv(path, back, error)) << error;
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[1].setting.label(), rows[1].setting.label());
+  EXPECT_EQ(back[1].setting.projection, 2);
   EXPECT_DOUBLE_EQ(back[1].median(), 50);
   EXPECT_DOUBLE_EQ(back[1].drift, 0.2);
   EXPECT_FALSE(back[1].held);

@@ -78,6 +78,25 @@ TEST(TradeoffSweep, KnobsLeftOutKeepTheScenesValues) {
   EXPECT_EQ(FormatStep(0.003), "0.003");
 }
 
+TEST(TradeoffSweep, JointProjectionIsAKnob) {
+  std::vector<Setting> s;
+  std::string error;
+  ASSERT_TRUE(ParseSweep("projection=0,2", s, error)) << error;
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].label(), "exact h=1/60 projection=0");
+  EXPECT_EQ(s[1].label(), "exact h=1/60 projection=2");
+  MdtWorldID world = MdtWorldCreate(1, 1, 1, 1);
+  s[1].apply(world);
+  EXPECT_EQ(MdtWorldGetJointProjection(world), 2);
+  s[0].apply(world);
+  EXPECT_EQ(MdtWorldGetJointProjection(world), 0);
+  Setting{}.apply(world);  // left out: the world keeps its own
+  EXPECT_EQ(MdtWorldGetJointProjection(world), 0);
+  MdtWorldDestroy(world);
+  EXPECT_FALSE(ParseSweep("projection=1.5", s, error));
+  EXPECT_FALSE(ParseSweep("projection=-1", s, error));
+}
+
 TEST(TradeoffSweep, BadSweepsSayWhatIsWrong) {
   std::vector<Setting> s;
   std::string error;

@@ -45,6 +45,7 @@ const std::vector<std::string> &CsvColumns() {
                                                    "h",
                                                    "tolerance",
                                                    "cap",
+                                                   "projection",
                                                    "repeats",
                                                    "us_per_step",
                                                    "us_min",
@@ -84,6 +85,7 @@ void WriteCsv(std::FILE *f, const std::vector<ResultRow> &rows) {
                                             Cell(s.h),
                                             peer ? "" : Cell(s.tolerance),
                                             peer || s.cap < 0 ? "" : std::to_string(s.cap),
+                                            peer || s.projection < 0 ? "" : std::to_string(s.projection),
                                             std::to_string(r.micros.size()),
                                             Cell(r.median()),
                                             Cell(r.low()),
@@ -194,20 +196,20 @@ bool ReadCsv(const std::string &path, std::vector<ResultRow> &out, std::string &
       if (!ParseSweep("solver=" + label, parsed, ignored) || parsed.size() != 1) continue;
       r.setting = parsed[0];
     }
-    const double median = Real(c[11]), low = Real(c[12]), high = Real(c[13]);
+    const double median = Real(c[12]), low = Real(c[13]), high = Real(c[14]);
     r.micros = {low, median, high};  // the median and range survive
-    r.steps = std::atoi(c[15].c_str());
-    r.drift = Real(c[16]);
-    r.jointError = Real(c[17]);
-    r.penetration = Real(c[18]);
-    r.energyError = Real(c[19]);
-    r.momentumError = Real(c[20]);
-    r.residual = Real(c[21]);
-    r.unsolvedSteps = std::atoi(c[22].c_str());
-    r.maxSpeed = Real(c[23]);
-    r.sceneError = Real(c[24]);
-    r.held = c[25] == "1";
-    r.detail = c[28];
+    r.steps = std::atoi(c[16].c_str());
+    r.drift = Real(c[17]);
+    r.jointError = Real(c[18]);
+    r.penetration = Real(c[19]);
+    r.energyError = Real(c[20]);
+    r.momentumError = Real(c[21]);
+    r.residual = Real(c[22]);
+    r.unsolvedSteps = std::atoi(c[23].c_str());
+    r.maxSpeed = Real(c[24]);
+    r.sceneError = Real(c[25]);
+    r.held = c[26] == "1";
+    r.detail = c[29];
     out.push_back(r);
   }
   return true;

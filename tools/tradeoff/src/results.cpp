@@ -61,6 +61,7 @@ std::string DifferingKnobs(const Setting &a, const Setting &b) {
   if (a.h != b.h) knobs.push_back("h");
   if (!Same(a.tolerance, b.tolerance)) knobs.push_back("tolerance");
   if (a.cap != b.cap) knobs.push_back("cap");
+  if (a.projection != b.projection) knobs.push_back("joint projection");
   if (a.precision != b.precision) knobs.push_back("precision");
   std::string out;
   for (size_t i = 0; i < knobs.size(); ++i) out += (i == 0 ? "" : i + 1 == knobs.size() ? " and " : ", ") + knobs[i];

@@ -79,6 +79,8 @@ bool Multiply(const std::string &name, const std::string &values, std::vector<Se
         s.tolerance = v;
       else if (name == "cap" && v >= 0 && v == std::floor(v))
         s.cap = (int)v;
+      else if (name == "projection" && v >= 0 && v == std::floor(v))
+        s.projection = (int)v;
       else {
         error = "bad knob or value: " + name + "=" + FormatValue(v);
         return false;
@@ -189,6 +191,7 @@ std::string Setting::label() const {
   s += " h=" + FormatStep(h);
   if (!std::isnan(tolerance)) s += " tolerance=" + FormatValue(tolerance);
   if (cap >= 0) s += " cap=" + std::to_string(cap);
+  if (projection >= 0) s += " projection=" + std::to_string(projection);
   if (!precision.empty()) s += " " + precision;
   return s;
 }
@@ -202,6 +205,7 @@ void Setting::apply(MdtWorldID world) const {
   if (!std::isnan(gamma)) MdtWorldSetGamma(world, (MeReal)gamma);
   if (!std::isnan(tolerance)) MdtWorldSetKeaTolerance(world, (MeReal)tolerance);
   if (cap >= 0) MdtWorldSetMaxMatrixSize(world, cap);
+  if (projection >= 0) MdtWorldSetJointProjection(world, projection);
 }
 
 }  // namespace karma::tradeoff

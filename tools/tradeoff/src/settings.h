@@ -15,6 +15,8 @@
 //   h          step size in seconds (1/60 is accepted)
 //   tolerance  Kea's relative tolerance (MdtWorldSetKeaTolerance)
 //   cap        matrix capping, rows per partition (MdtWorldSetMaxMatrixSize)
+//   projection joint projection iterations after each step
+//              (MdtWorldSetJointProjection; 0 = off)
 // Values: a comma list `a,b,c`, or a geometric range `lo..hi` (both ends
 // included; ratio 10 when both ends are powers of ten, otherwise 2), or
 // `lo..hi:N` (N points, geometric). A knob left out keeps the scene's own
@@ -40,13 +42,14 @@ struct Setting {
   double gamma = kUnset;
   double h = 1.0 / 60;
   double tolerance = kUnset;
-  int cap = -1;  // < 0: the scene's own
+  int cap = -1;         // < 0: the scene's own
+  int projection = -1;  // < 0: the scene's own
   // "single" or "double" when a sweep runs both (--precision); empty
   // otherwise. Not a world setting: the precision of the build that ran.
   std::string precision;
   // "exact", "exact:8", "iterative:50", "budget:300".
   std::string solver() const;
-  // The knobs that are set, e.g. "exact:8 epsilon=1e-3 h=1/120".
+  // The knobs that are set, e.g. "exact:8 epsilon=1e-3 h=1/120 projection=2".
   std::string label() const;
   // Applies every knob that is set (not h: the runner steps with it).
   void apply(MdtWorldID world) const;
