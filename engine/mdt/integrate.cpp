@@ -54,6 +54,15 @@ void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 te
   MeMatrix3TransposeMultiplyVector(out, R, lb);  // body -> world
 }
 
+void bodyTensorInWorld(MeMatrix3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor) {
+  for (int k = 0; k < 3; ++k) {
+    MeVector3 e = {0, 0, 0}, col;
+    e[k] = 1;
+    applyBodyTensor(col, b, tensor, e);
+    for (int r = 0; r < 3; ++r) out[r][k] = col[r];
+  }
+}
+
 namespace {
 
 // The gyroscopic velocity change, linearly implicit (bodies with a
@@ -134,21 +143,13 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
   // (R^T Ib R + h^2 K)^-1, with K the body's geometric stiffness (zero
   // unless the step's stabilisation filled it; see stabilize.cpp).
   if (MeMatrix3IsZero3(b->geomStiffness)) {
-    for (int k = 0; k < 3; ++k) {
-      MeVector3 e = {0, 0, 0}, col;
-      e[k] = 1;
-      applyBodyTensor(col, b, b->invInertia, e);
-      for (int r = 0; r < 3; ++r) b->invInertiaWorld[r][k] = col[r];
-    }
+    bodyTensorInWorld(b->invInertiaWorld, b, b->invInertia);
     return;
   }
   MeMatrix3 Iw;
-  for (int k = 0; k < 3; ++k) {
-    MeVector3 e = {0, 0, 0}, col;
-    e[k] = 1;
-    applyBodyTensor(col, b, b->inertia, e);
-    for (int r = 0; r < 3; ++r) Iw[r][k] = col[r] + h * h * b->geomStiffness[r][k];
-  }
+  bodyTensorInWorld(Iw, b, b->inertia);
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) Iw[r][k] += h * h * b->geomStiffness[r][k];
   if (!MeMatrix3Inverse(b->invInertiaWorld, Iw)) {
     MeMatrix3MakeIdentity(b->invInertiaWorld);  // unreachable: Iw is positive definite
   }

@@ -164,6 +164,9 @@ void classifyInertia(MdtBody *b);
 bool gyroscopicActs(const MdtBody *b, const MeVector3 w, MeReal h);
 // w = R^T (Ib (R v)): a world vector through a body-frame tensor.
 void applyBodyTensor(MeVector3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor, const MeVector3 v);
+// out = R^T Ib R: a body-frame tensor in the world frame, column k being
+// applyBodyTensor of the k-th unit vector.
+void bodyTensorInWorld(MeMatrix3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor);
 
 // The direct-write check of the world parameters (world_params.cpp):
 // rememberCheckedParams when the world is made, checkDirectParamWrites at

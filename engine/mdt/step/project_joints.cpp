@@ -89,25 +89,15 @@ MeReal sideOf(const MdtConstraint *c, const MdtBody *B) {
   return c->body[0] == B ? 1 : (c->body[1] == B ? -1 : 0);
 }
 
-// out = tensor (given in body axes) in the world frame, column by column.
-void worldTensor(MeMatrix3 out, const MdtBody *b, MECONSTMATRIX MeMatrix3 tensor) {
-  for (int j = 0; j < 3; ++j) {
-    MeVector3 e = {0, 0, 0}, col;
-    e[j] = 1;
-    applyBodyTensor(col, b, tensor, e);
-    for (int i = 0; i < 3; ++i) out[i][j] = col[i];
-  }
-}
-
 // W = I^-1 for every body.
 void plainMetric(Projection &p) {
-  for (MdtBody *B : p.bodies) worldTensor(p.W[(size_t)B->index].m, B, B->invInertia);
+  for (MdtBody *B : p.bodies) bodyTensorInWorld(p.W[(size_t)B->index].m, B, B->invInertia);
 }
 
 // W = (I + sum over its anchors |P| |r| (1 - r^ r^T))^-1, from the
 // impulses in p.P.
 void stiffMetric(Projection &p) {
-  for (MdtBody *B : p.bodies) worldTensor(p.W[(size_t)B->index].m, B, B->inertia);
+  for (MdtBody *B : p.bodies) bodyTensorInWorld(p.W[(size_t)B->index].m, B, B->inertia);
   for (size_t a = 0; a < p.joints.size(); ++a) {
     const MeVector3 Pa = {p.P[3 * a], p.P[3 * a + 1], p.P[3 * a + 2]};
     const MeReal force = MeVector3Magnitude(Pa);
@@ -127,7 +117,7 @@ void stiffMetric(Projection &p) {
     if (MeMatrix3Inverse(inverse, p.W[(size_t)B->index].m))
       MeMatrix3Copy(p.W[(size_t)B->index].m, inverse);
     else
-      worldTensor(p.W[(size_t)B->index].m, B, B->invInertia);
+      bodyTensorInWorld(p.W[(size_t)B->index].m, B, B->invInertia);
   }
 }
 
