@@ -39,4 +39,17 @@ void envelopeCholeskySolve(EnvelopeMatrix &L, std::span<MeReal> b) {
   }
 }
 
+void envelopeCholeskySolve(EnvelopeMatrix &L, std::span<const MeReal> inverseDiagonal, std::span<MeReal> b) {
+  const int n = L.size();
+  for (int i = 0; i < n; ++i) {
+    MeReal s = b[(size_t)i];
+    for (int k = L.first[(size_t)i]; k < i; ++k) s -= L.at(i, k) * b[(size_t)k];
+    b[(size_t)i] = s * inverseDiagonal[(size_t)i];
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    b[(size_t)i] *= inverseDiagonal[(size_t)i];
+    for (int k = L.first[(size_t)i]; k < i; ++k) b[(size_t)k] -= L.at(i, k) * b[(size_t)i];
+  }
+}
+
 }  // namespace karma::mdt

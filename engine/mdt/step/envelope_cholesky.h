@@ -26,5 +26,9 @@ struct EnvelopeMatrix {
 bool envelopeCholesky(EnvelopeMatrix &K);
 // Solves L L^T x = b in place, with L from envelopeCholesky.
 void envelopeCholeskySolve(EnvelopeMatrix &L, std::span<MeReal> b);
+// The same solve with the reciprocals of L's diagonal given: it multiplies
+// where the other divides (a shorter chain of dependent operations; the
+// results may differ from the other's in the last bits).
+void envelopeCholeskySolve(EnvelopeMatrix &L, std::span<const MeReal> inverseDiagonal, std::span<MeReal> b);
 
 }  // namespace karma::mdt
