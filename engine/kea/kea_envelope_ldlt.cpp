@@ -30,8 +30,9 @@ MeReal Dot4(const MeReal *a, const MeReal *b, int count) {
 
 }  // namespace
 
-bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value) {
-  for (int i = 0; i < m; ++i) {
+bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value,
+                        int fromRow) {
+  for (int i = fromRow; i < m; ++i) {
     const int fi = first[static_cast<std::size_t>(i)];
     MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)]; /* rowI[j - fi] = entry (i, j) */
     /* u_ij = a_ij - sum_{k in both envelopes, k < j} u_ik l_jk */
@@ -93,19 +94,22 @@ void EnvelopeSystem::begin(int rows) {
   factored = broken = false;
 }
 
-void EnvelopeSystem::layout() {
+void EnvelopeSystem::layout(int fromRow) {
   start.resize(static_cast<std::size_t>(m) + 1);
   start[0] = 0;
   for (int i = 0; i < m; ++i)
     start[static_cast<std::size_t>(i) + 1] =
         start[static_cast<std::size_t>(i)] + i - first[static_cast<std::size_t>(i)] + 1;
-  value.assign(size(), MeReal(0));
+  value.resize(size());
+  std::fill(value.begin() + start[static_cast<std::size_t>(fromRow)], value.end(), MeReal(0));
   factored = broken = false;
 }
 
-void EnvelopeSystem::factor() {
-  original.assign(value.begin(), value.begin() + static_cast<std::ptrdiff_t>(size()));
-  broken = !EnvelopeLdltFactor(m, first, start, value);
+void EnvelopeSystem::factor(int fromRow) {
+  const auto from = static_cast<std::ptrdiff_t>(start[static_cast<std::size_t>(fromRow)]);
+  original.resize(size());
+  std::copy(value.begin() + from, value.begin() + static_cast<std::ptrdiff_t>(size()), original.begin() + from);
+  broken = !EnvelopeLdltFactor(m, first, start, value, fromRow);
   factored = true;
 }
 

@@ -48,8 +48,15 @@ inline constexpr MeReal kPivotFloor = 64 * ME_REAL_EPSILON;
 
 /* Factorises the m x m envelope matrix (first, start, value as above) in
  * place: value then holds L below the diagonal and D on it. Returns false
- * on breakdown (value is then partly overwritten). */
-bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value);
+ * on breakdown (value is then partly overwritten).
+ *
+ * Row i of the factor depends on rows 0..i of the matrix only (Crout, row
+ * by row). With fromRow > 0, rows 0..fromRow-1 of value must already hold
+ * the factor of the same leading block (not broken down) and only rows
+ * fromRow.. are factorised: the result is the same, bit for bit, as the
+ * whole factorisation's. */
+bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value,
+                        int fromRow = 0);
 
 /* Solves L D L^T x = rhs with a factor from EnvelopeLdltFactor; x holds rhs
  * on entry and the solution on return (m values). */
@@ -76,15 +83,20 @@ struct EnvelopeSystem {
   void reserve(std::size_t rows, std::size_t entries);
   /* A new m x m matrix: first[] sized m (filled with 0 = dense rows). */
   void begin(int rows);
-  /* Computes start[] from first[] and zeroes the envelope. */
-  void layout();
+  /* Computes start[] from first[] and zeroes the envelope from row fromRow
+   * on (rows before it keep their values: see factor). */
+  void layout(int fromRow = 0);
   /* Index of entry (i, j), first[i] <= j <= i, in value. */
   std::size_t at(int i, int j) const {
     return static_cast<std::size_t>(start[static_cast<std::size_t>(i)] + j - first[static_cast<std::size_t>(i)]);
   }
   /* Number of stored entries (the envelope's size). */
   std::size_t size() const { return static_cast<std::size_t>(start[static_cast<std::size_t>(m)]); }
-  void factor();
+  /* Factorises the matrix. With fromRow > 0, rows 0..fromRow-1 must be
+   * those of the last factor(), which did not break down, of a matrix with
+   * the same leading block and layout: they are kept, and the rest is
+   * factorised (EnvelopeLdltFactor). */
+  void factor(int fromRow = 0);
   /* x = A^-1 rhs (m values each; x must not alias rhs). */
   void solve(std::span<const MeReal> rhs, std::span<MeReal> x) const;
 };

@@ -88,6 +88,7 @@ void SparseBackend::keepSparsity(const SparseLcpProblem &p) {
 void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory,
                           MeReal target) {
   factorizations_ = staleSolves_ = staleIterations_ = 0;
+  envelopeFresh_ = false;
   target_ = target;
   const bool usable = factor_ != Factor::None && (factor_ != Factor::Sparse || ldltOk_) && staleWorthIt_;
   if (memory != KeaFactorMemory::Off && usable && sameSparsity(p, eps, envelopeRows)) {
@@ -113,6 +114,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   bandRank_.reserve(n);
   queue_.reserve(n);
   factoredSet_.reserve(n);
+  envelopeFactorRows_.reserve(n);
   rhs_.reserve(n);
   rhsFull_.reserve(n);
   x_.reserve(n);
@@ -365,6 +367,8 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
  * sparse LDL^T. */
 void SparseBackend::factorise(const std::vector<unsigned char> &set) {
   const std::size_t m = naturalRows_.size();
+  const bool envelopeWasFresh = envelopeFresh_ && !envelope_.broken;
+  envelopeFresh_ = false;
   if (envelopeRows_ == 0 && DenseFits(m, U(p_->n), U(p_->rowStart[U(p_->n)])) && factoriseDense(set)) {
     staleWorthIt_ = memory_ == KeaFactorMemory::Always;
     rememberSparsity();
@@ -382,9 +386,12 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
     const bool accept = envelopeRows_ > 0 ? m <= static_cast<std::size_t>(envelopeRows_)
                                           : m <= kEnvelopeRows || entries <= kEnvelopeWidth * m;
     if (accept) {
-      fillEnvelope(rows);
-      envelope_.factor();
+      const std::size_t kept = envelopeWasFresh ? reusableEnvelopeRows(rows) : 0;
+      fillEnvelope(rows, kept);
+      envelope_.factor(static_cast<int>(kept));
       factor_ = useBandOrder_ ? Factor::BandEnvelope : Factor::Envelope;
+      envelopeFactorRows_ = rows;
+      envelopeFresh_ = !envelope_.broken;
       staleWorthIt_ = memory_ == KeaFactorMemory::Always ||
                       StaleSolveWorthIt(envelope_, U(p_->rowStart[U(p_->n)]), staleIterationsExpected_);
       /* A factor not kept teaches nothing: the expectation drifts back to
@@ -464,14 +471,27 @@ std::size_t SparseBackend::envelopeFirsts(const std::vector<int> &rows) {
   return entries;
 }
 
-/* visit(a, c, k) for each stored entry k of free row rows[a] whose column
- * is free row rows[c] (positions in `rows`). */
+/* How many leading rows of the last envelope factor the free block with
+ * rows `rows` (in factor order) can keep: the length of the two row lists'
+ * common prefix. Row a of an envelope LDL^T depends on rows 0..a of the
+ * matrix only, and the leading block of the free rows is the same matrix
+ * when the same rows lead in the same order, with the same envelope
+ * (envelopeFirsts looks only left of the diagonal). So a pivot that frees
+ * or clamps the row at position k refactorises rows k.. only, and the
+ * factor is the one a whole factorisation gives, bit for bit. */
+std::size_t SparseBackend::reusableEnvelopeRows(const std::vector<int> &rows) const {
+  const auto mismatch = std::mismatch(rows.begin(), rows.end(), envelopeFactorRows_.begin(), envelopeFactorRows_.end());
+  return static_cast<std::size_t>(mismatch.first - rows.begin());
+}
+
+/* visit(a, c, k) for each stored entry k of free row rows[a], a >= from,
+ * whose column is free row rows[c] (positions in `rows`). */
 template <class Visit>
-void SparseBackend::forEachFreeEntry(const std::vector<int> &rows, Visit visit) {
+void SparseBackend::forEachFreeEntry(const std::vector<int> &rows, Visit visit, std::size_t from) {
   const SparseLcpProblem &p = *p_;
   const std::size_t m = rows.size();
   for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
-  for (std::size_t a = 0; a < m; ++a) {
+  for (std::size_t a = from; a < m; ++a) {
     const auto i = U(rows[a]);
     for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k)
       if (const int c = position_[U(p.col[U(k)])]; c >= 0) visit(a, U(c), k);
@@ -480,14 +500,18 @@ void SparseBackend::forEachFreeEntry(const std::vector<int> &rows, Visit visit) 
 }
 
 /* Lays the envelope out (firsts from envelopeFirsts on the same rows) and
- * stores the free block (A + eps I)_FF in it. */
-void SparseBackend::fillEnvelope(const std::vector<int> &rows) {
+ * stores the free block (A + eps I)_FF in it, from row `from` on (the rows
+ * before it keep what they hold: see reusableEnvelopeRows). */
+void SparseBackend::fillEnvelope(const std::vector<int> &rows, std::size_t from) {
   const SparseLcpProblem &p = *p_;
-  envelope_.layout();
-  forEachFreeEntry(rows, [&](std::size_t a, std::size_t c, int k) {
-    if (c <= a) envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(c))] = p.val[U(k)];
-  });
-  for (std::size_t a = 0; a < rows.size(); ++a)
+  envelope_.layout(static_cast<int>(from));
+  forEachFreeEntry(
+      rows,
+      [&](std::size_t a, std::size_t c, int k) {
+        if (c <= a) envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(c))] = p.val[U(k)];
+      },
+      from);
+  for (std::size_t a = from; a < rows.size(); ++a)
     envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(a))] += eps_;
 }
 

@@ -151,8 +151,9 @@ class SparseBackend {
   void factorise(const std::vector<unsigned char> &set);
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   template <class Visit>
-  void forEachFreeEntry(const std::vector<int> &rows, Visit visit);
-  void fillEnvelope(const std::vector<int> &rows);
+  void forEachFreeEntry(const std::vector<int> &rows, Visit visit, std::size_t from = 0);
+  void fillEnvelope(const std::vector<int> &rows, std::size_t from = 0);
+  std::size_t reusableEnvelopeRows(const std::vector<int> &rows) const;
   bool factoriseDense(const std::vector<unsigned char> &set);
   void computeDegreeOrder();
   void mapDense();
@@ -203,6 +204,12 @@ class SparseBackend {
   std::vector<std::pair<int, int>> entries_;
   std::vector<MeReal> upVal_, wScratch_, rhs_, rhsFull_, x_;
   EnvelopeSystem envelope_;
+  /* The free rows, in order, of the envelope factor made last for this
+   * problem, when envelopeFresh_: it holds this problem's values and did
+   * not break down, so its leading rows serve the next free set that
+   * starts with the same rows (reusableEnvelopeRows). */
+  std::vector<int> envelopeFactorRows_;
+  bool envelopeFresh_ = false;
   DenseLdlt dense_;
   SpMat block_;
   PreorderedLdlt ldlt_;
