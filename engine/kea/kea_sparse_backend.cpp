@@ -110,6 +110,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   degreeOrder_.reserve(n);
   denseRowStart_.reserve(n + 1);
   denseMapRows_.reserve(n);
+  denseCandidateRows_.reserve(n);
   /* Reverse Cuthill-McKee scratch (computeBandOrder). */
   bandRank_.reserve(n);
   queue_.reserve(n);
@@ -127,6 +128,10 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   if (envelopeRows < 0) accepted = 0;
   envelope_.reserve(n, std::min(accepted, n * (n + 1) / 2));
   dense_.reserve(std::min(n, kDenseRows));
+  /* The dense map's entries: the free block's upper triangle (made only
+   * once a free set comes back, so reserved here). */
+  const std::size_t denseRowsMax = std::min(n, kDenseRows);
+  denseFill_.reserve(std::min(U(p.rowStart[n]), denseRowsMax * (denseRowsMax + 1) / 2));
   envelopeRows_ = envelopeRows;
   order_.clear();
   bandOrder_.clear();
@@ -554,6 +559,7 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
     denseCol_.assign(p.col.begin(), p.col.end());
     computeDegreeOrder();
     denseMapRows_.clear();
+    denseCandidateRows_.clear();
   }
   std::vector<int> &rows = denseRows_;
   rows.clear();
@@ -561,9 +567,21 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
     if (set[U(i)] == Free) rows.push_back(i);
   const std::size_t m = rows.size();
   dense_.begin(static_cast<int>(m));
-  if (rows != denseMapRows_) mapDense();
   MeReal *upper = dense_.upper.data();
-  for (const auto &[k, at] : denseFill_) upper[U(at)] = p.val[U(k)];
+  /* The map pays when the same free rows come back (the next step's first
+   * factorisation, from the warm start's active set); while pivots change
+   * them, the block is filled straight from the CSR rows (the same values
+   * in the same places), and the rows are remembered as a candidate. */
+  if (rows != denseMapRows_ && rows != denseCandidateRows_) {
+    const auto stride = U(dense_.stride);
+    forEachFreeEntry(rows, [&](std::size_t a, std::size_t c, int k) {
+      if (c >= a) upper[a * stride + c] = p.val[U(k)];
+    });
+    denseCandidateRows_ = rows;
+  } else {
+    if (rows != denseMapRows_) mapDense();
+    for (const auto &[k, at] : denseFill_) upper[U(at)] = p.val[U(k)];
+  }
   for (std::size_t a = 0; a < m; ++a) upper[a * U(dense_.stride) + a] += eps_;
   if (!dense_.factor()) return false;
   factor_ = Factor::Dense;

@@ -196,6 +196,9 @@ class SparseBackend {
   std::vector<int> denseRowStart_, denseCol_, degreeOrder_, denseRows_;
   std::vector<std::pair<int, int>> denseFill_;
   std::vector<int> denseMapRows_;
+  /* The free rows of the last dense factorisation made without the map:
+   * the map is made when they come back. */
+  std::vector<int> denseCandidateRows_;
   /* The whole matrix's rows in reverse Cuthill-McKee order, and the free
    * rows in that order (envelope path when the natural order is wide). */
   std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
