@@ -206,14 +206,20 @@ Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memor
   return a;
 }
 
-// The partitions' memories, found by partition identity (problem.h). At
-// most kMaxPartitions are kept; a new identity beyond that takes the one
-// used longest ago. A memory given to another partition only costs work
+// The partitions' memories, found by partition identity (problem.h). A
+// new identity takes the memory used longest ago when that one was not
+// used in the last round (as many takes as there are memories: every
+// partition of a step takes one); otherwise the memories grow, so a scene
+// of many partitions keeps one per partition (pile1000 settles into about
+// a hundred columns) instead of handing each one's memory to the next, up
+// to kMaxPartitions. A memory given to another partition only costs work
 // (the sparsity is checked here, the factor's in Kea), never accuracy.
+// The search is linear: a step's cost in it is partitions x memories
+// comparisons, small beside a solve.
 class PartitionMemories {
  public:
-  static constexpr std::size_t kMaxPartitions = 32;
-  PartitionMemories() { slots_.reserve(kMaxPartitions); }
+  static constexpr std::size_t kMaxPartitions = 4096;
+  PartitionMemories() { slots_.reserve(kInitialSlots); }
   ~PartitionMemories() {
     for (PartitionMemory &slot : slots_) kea::KeaWorkspaceDestroy(slot.workspace);
   }
@@ -227,7 +233,8 @@ class PartitionMemories {
       if (slot.identity == identity) return use(slot);
       if (!oldest || slot.lastUse < oldest->lastUse) oldest = &slot;
     }
-    if (slots_.size() < kMaxPartitions) {
+    const bool oldestInUse = oldest && clock_ - oldest->lastUse <= slots_.size();
+    if (!oldest || (oldestInUse && slots_.size() < kMaxPartitions)) {
       slots_.emplace_back();
       slots_.back().identity = identity;
       slots_.back().workspace = kea::KeaWorkspaceCreate();
@@ -238,6 +245,7 @@ class PartitionMemories {
   }
 
  private:
+  static constexpr std::size_t kInitialSlots = 32;
   PartitionMemory &use(PartitionMemory &slot) {
     slot.lastUse = clock_;
     return slot;
