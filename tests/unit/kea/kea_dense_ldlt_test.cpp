@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "kea_hash_unit.h"
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -20,14 +22,7 @@ using karma::kea::detail::EnvelopeSystem;
 
 namespace {
 
-// A deterministic value in [-1, 1).
-double Unit(std::uint32_t seed, std::uint32_t i) {
-  std::uint32_t x = seed * 2654435761u ^ (i + 1) * 40503u;
-  x ^= x >> 13;
-  x *= 0x5bd1e995u;
-  x ^= x >> 15;
-  return (x & 0xffffff) / double(1 << 23) - 1;
-}
+using kea_test::Unit;
 
 // A = G G^T + m I / 4 (G: m x m random), positive definite with a
 // condition number of a few hundred; `band` > 0 keeps only |i - j| < band.

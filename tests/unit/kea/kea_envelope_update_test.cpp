@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "kea_hash_unit.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -17,14 +19,7 @@ using karma::kea::detail::EnvelopeSystem;
 
 namespace {
 
-// A deterministic value in [-1, 1).
-double Unit(std::uint32_t seed, std::uint32_t i) {
-  std::uint32_t x = seed * 2654435761u ^ (i + 1) * 40503u;
-  x ^= x >> 13;
-  x *= 0x5bd1e995u;
-  x ^= x >> 15;
-  return (x & 0xffffff) / double(1 << 23) - 1;
-}
+using kea_test::Unit;
 
 // A symmetric positive definite n x n matrix with a band of half-width
 // `band` and a few far couplings (row i to row i - 3 band), like the rows
