@@ -33,11 +33,11 @@
 // skipped (rows updated one by one) when there are fewer than two equality
 // rows, when its envelope would hold more than kMaxEnvelopePerRow entries
 // per row on average (a body shared by many joints: a car's chassis, a rag
-// doll's torso), or when K is not numerically positive definite (rigid
-// redundant rows). Within that bound the block's solve costs a sweep about
-// what the row updates it replaces cost, and its factorisation a few
-// sweeps; a visit whose slacks are all within the tolerance changes
-// nothing.
+// doll's torso), or when K is not numerically positive definite (a pivot
+// below 64 eps of its diagonal entry: rigid redundant rows). Within that
+// bound the block's solve costs a sweep about what the row updates it
+// replaces cost, and its factorisation a few sweeps; a visit whose slacks
+// are all within the tolerance changes nothing.
 //
 // Warm start: lambda starts from the problem's warm impulses (clamped), and
 // dv from them. Sweeps alternate forward and backward through the rows
@@ -219,6 +219,14 @@ void prepareJointBlock(const BodySpaceProblem &p, Workspace &w, StepArena &arena
     jb.L.at(e, e) = re.diag;
   }
   if (!envelopeCholesky(jb.L)) return;
+  // A pivot L_ee^2 that the rows before e cancelled to rounding (redundant
+  // rigid rows) would give impulses that cancel in huge pairs: refused, as
+  // Kea's envelope LDL^T refuses d_e <= 64 eps a_ee.
+  constexpr MeReal kPivotFloor = 64 * ME_REAL_EPSILON;
+  for (int e = 0; e < m; ++e) {
+    const MeReal pivot = jb.L.at(e, e) * jb.L.at(e, e);
+    if (!(pivot > kPivotFloor * w.row[(size_t)jb.rows[(size_t)e]].diag)) return;
+  }
   jb.inverseDiagonal = arena.take<MeReal>((size_t)m);
   for (int e = 0; e < m; ++e) jb.inverseDiagonal[(size_t)e] = 1 / jb.L.at(e, e);
   jb.delta = arena.take<MeReal>((size_t)m);
