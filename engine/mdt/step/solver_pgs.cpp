@@ -103,7 +103,6 @@ struct JointBlock {
   std::span<MeReal> inverseDiagonal;  // 1 / L_ee
   std::span<MeReal> delta;            // scratch: -w_E, then the change of lambda_E
   MeReal tolerance = 0;               // the solve's: slacks all within it need no update
-  bool on = false;
 };
 
 struct Workspace {
@@ -231,7 +230,6 @@ void prepareJointBlock(const BodySpaceProblem &p, Workspace &w, StepArena &arena
   for (int e = 0; e < m; ++e) jb.inverseDiagonal[(size_t)e] = 1 / jb.L.at(e, e);
   jb.delta = arena.take<MeReal>((size_t)m);
   for (int i : jb.rows) w.block[(size_t)i] = kJointBlockRow;
-  jb.on = true;
 }
 
 // The visits of one sweep through `rows` rows in the order `rowAt(n)`
