@@ -372,7 +372,7 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
  * sparse LDL^T. */
 void SparseBackend::factorise(const std::vector<unsigned char> &set) {
   const std::size_t m = naturalRows_.size();
-  const bool envelopeWasFresh = envelopeFresh_ && !envelope_.broken;
+  const bool envelopeWasFresh = envelopeFresh_;
   envelopeFresh_ = false;
   if (envelopeRows_ == 0 && DenseFits(m, U(p_->n), U(p_->rowStart[U(p_->n)])) && factoriseDense(set)) {
     staleWorthIt_ = memory_ == KeaFactorMemory::Always;

@@ -8,17 +8,22 @@
 
 namespace karma::mdt {
 
+namespace {
+constexpr MeReal kPivotFloor = 64 * ME_REAL_EPSILON;
+}  // namespace
+
 bool envelopeCholesky(EnvelopeMatrix &K) {
   const int n = K.size();
   for (int i = 0; i < n; ++i) {
     const int fi = K.first[(size_t)i];
     for (int j = fi; j <= i; ++j) {
-      MeReal s = K.at(i, j);
+      const MeReal kij = K.at(i, j);
+      MeReal s = kij;
       for (int k = std::max(fi, K.first[(size_t)j]); k < j; ++k) s -= K.at(i, k) * K.at(j, k);
       if (j < i) {
         K.at(i, j) = s / K.at(j, j);
       } else {
-        if (!(s > 0) || !std::isfinite(s)) return false;
+        if (!(kij > 0) || !(s > kPivotFloor * kij) || !std::isfinite(s)) return false;
         K.at(i, i) = std::sqrt(s);
       }
     }
@@ -35,19 +40,6 @@ void envelopeCholeskySolve(EnvelopeMatrix &L, std::span<MeReal> b) {
   }
   for (int i = n - 1; i >= 0; --i) {  // L^T x = y, column by column
     b[(size_t)i] /= L.at(i, i);
-    for (int k = L.first[(size_t)i]; k < i; ++k) b[(size_t)k] -= L.at(i, k) * b[(size_t)i];
-  }
-}
-
-void envelopeCholeskySolve(EnvelopeMatrix &L, std::span<const MeReal> inverseDiagonal, std::span<MeReal> b) {
-  const int n = L.size();
-  for (int i = 0; i < n; ++i) {
-    MeReal s = b[(size_t)i];
-    for (int k = L.first[(size_t)i]; k < i; ++k) s -= L.at(i, k) * b[(size_t)k];
-    b[(size_t)i] = s * inverseDiagonal[(size_t)i];
-  }
-  for (int i = n - 1; i >= 0; --i) {
-    b[(size_t)i] *= inverseDiagonal[(size_t)i];
     for (int k = L.first[(size_t)i]; k < i; ++k) b[(size_t)k] -= L.at(i, k) * b[(size_t)i];
   }
 }

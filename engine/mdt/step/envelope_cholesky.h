@@ -21,14 +21,11 @@ struct EnvelopeMatrix {
   MeReal &at(int i, int j) { return value[(size_t)(start[(size_t)i] + j - first[(size_t)i])]; }
 };
 
-// Replaces K's lower triangle by L; false if a pivot is not positive and
-// finite (K is then partly overwritten).
+// Replaces K's lower triangle by L; false if a pivot L_ii^2 is not finite
+// or not above 64 eps of K_ii (rows that the ones before cancel to
+// rounding, as Kea's envelope LDL^T refuses; K is then partly overwritten).
 bool envelopeCholesky(EnvelopeMatrix &K);
 // Solves L L^T x = b in place, with L from envelopeCholesky.
 void envelopeCholeskySolve(EnvelopeMatrix &L, std::span<MeReal> b);
-// The same solve with the reciprocals of L's diagonal given: it multiplies
-// where the other divides (a shorter chain of dependent operations; the
-// results may differ from the other's in the last bits).
-void envelopeCholeskySolve(EnvelopeMatrix &L, std::span<const MeReal> inverseDiagonal, std::span<MeReal> b);
 
 }  // namespace karma::mdt

@@ -98,11 +98,10 @@ struct PgsRow {
 
 // The equality rows and their factorised K (see the top).
 struct JointBlock {
-  std::span<int> rows;                // problem rows, ascending
-  EnvelopeMatrix L;                   // K's Cholesky factor
-  std::span<MeReal> inverseDiagonal;  // 1 / L_ee
-  std::span<MeReal> delta;            // scratch: -w_E, then the change of lambda_E
-  MeReal tolerance = 0;               // the solve's: slacks all within it need no update
+  std::span<int> rows;      // problem rows, ascending
+  EnvelopeMatrix L;         // K's Cholesky factor
+  std::span<MeReal> delta;  // scratch: -w_E, then the change of lambda_E
+  MeReal tolerance = 0;     // the solve's: slacks all within it need no update
 };
 
 struct Workspace {
@@ -218,16 +217,6 @@ void prepareJointBlock(const BodySpaceProblem &p, Workspace &w, StepArena &arena
     jb.L.at(e, e) = re.diag;
   }
   if (!envelopeCholesky(jb.L)) return;
-  // A pivot L_ee^2 that the rows before e cancelled to rounding (redundant
-  // rigid rows) would give impulses that cancel in huge pairs: refused, as
-  // Kea's envelope LDL^T refuses d_e <= 64 eps a_ee.
-  constexpr MeReal kPivotFloor = 64 * ME_REAL_EPSILON;
-  for (int e = 0; e < m; ++e) {
-    const MeReal pivot = jb.L.at(e, e) * jb.L.at(e, e);
-    if (!(pivot > kPivotFloor * w.row[(size_t)jb.rows[(size_t)e]].diag)) return;
-  }
-  jb.inverseDiagonal = arena.take<MeReal>((size_t)m);
-  for (int e = 0; e < m; ++e) jb.inverseDiagonal[(size_t)e] = 1 / jb.L.at(e, e);
   jb.delta = arena.take<MeReal>((size_t)m);
   for (int i : jb.rows) w.block[(size_t)i] = kJointBlockRow;
 }
@@ -396,7 +385,7 @@ MeReal updateJointBlock(Workspace &w, std::span<MeReal> lambda) {
     biggest = std::max(biggest, std::fabs(jb.delta[e]));
   }
   if (biggest <= jb.tolerance) return biggest;
-  envelopeCholeskySolve(jb.L, jb.inverseDiagonal, jb.delta);
+  envelopeCholeskySolve(jb.L, jb.delta);
   for (size_t e = 0; e < m; ++e) {
     lambda[(size_t)jb.rows[e]] += jb.delta[e];
     push(w.row[(size_t)jb.rows[e]], w.dv.data(), jb.delta[e]);
