@@ -4,10 +4,19 @@
 //
 // Assembly. Two rows interact when they share a body b, through
 //     A_ij += J_i,b . (M_b^-1 J_j,b^T)
-// (reference_inline.h computes M^-1 J^T per row and side, and each share of
-// an entry). Per row, the columns are found by walking the rows of its (at
-// most two) bodies and stored in ascending order, diagonal always present;
-// the lower triangle is computed and mirrored, so A is exactly symmetric.
+// Per row, the columns are found by walking the rows of its (at most two)
+// bodies and stored in ascending order, diagonal always present. The values
+// are summed body by body: for each body, its rows' M^-1 J^T (reference_
+// inline.h's BodyMinvJt) are laid out side by side, and every pair of its
+// rows (j <= i) gets its share as one small block product, added at the
+// entry's place, which the layout keeps. Only the lower triangle is summed;
+// it is mirrored, so A is exactly symmetric.
+//
+// Bits. An entry has at most two shares (two rows share at most two
+// bodies); each is the six products summed as RowPairEntry sums them, and
+// the entry is 0 + one share + the other, then + softness on the diagonal.
+// Floating-point addition is commutative, so the order in which the bodies
+// are visited does not change a bit.
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -42,24 +51,6 @@ void rowsByBody(const BodySpaceProblem &p, StepArena &arena, std::span<int> &sta
     if (p.body0[(size_t)k] >= 0) rows[(size_t)fill[(size_t)p.body0[(size_t)k]]++] = k;
     if (p.body1[(size_t)k] >= 0) rows[(size_t)fill[(size_t)p.body1[(size_t)k]]++] = k;
   }
-}
-
-// M^-1 J^T of every row, per side: 12 values a row (lin0 ang0 lin1 ang1).
-std::span<MeReal> minvJt(const BodySpaceProblem &p, StepArena &arena) {
-  std::span<MeReal> mj = arena.filled<MeReal>((size_t)p.rowCount * 12, 0);
-  for (int k = 0; k < p.rowCount; ++k) {
-    const MeReal *J = &p.J[(size_t)k * 12];
-    MeReal *out = &mj[(size_t)k * 12];
-    const int bodies[2] = {p.body0[(size_t)k], p.body1[(size_t)k]};
-    for (int side = 0; side < 2; ++side) {
-      const int b = bodies[side];
-      if (b < 0) continue;
-      const auto *inertia = reinterpret_cast<const MeReal(*)[3]>(&p.invInertia[(size_t)b * 9]);
-      platform::reference::BodyMinvJt(p.invMass[(size_t)b], inertia, J + side * 6, J + side * 6 + 3, out + side * 6,
-                                      out + side * 6 + 3);
-    }
-  }
-  return mj;
 }
 
 // The columns of every row: row i's are the union of its bodies' row lists,
@@ -98,71 +89,60 @@ void layoutColumns(const BodySpaceProblem &p, std::span<const int> bodyRowStart,
   }
 }
 
-// How the lower-triangle entries (i, j), j <= i, are summed, once per
-// sparsity: share[k] tells, for each side of row i, which side of row j
-// acts on the same body (2 bits a side: 0 none, 1 body 0, 2 body 1), and
-// mirror[k] is the index of (j, i). Rows are visited in ascending order, so
-// the entries above row j's diagonal are reached in ascending column order:
-// next[j] walks them.
-void layoutShares(const BodySpaceProblem &p, std::span<const int> rowStart, std::span<const int> col,
-                  std::span<const int> diagonal, std::span<int> next, std::span<unsigned char> share,
-                  std::span<int> mirror) {
-  for (int i = 0; i < p.rowCount; ++i) next[(size_t)i] = diagonal[(size_t)i] + 1;
-  for (int i = 0; i < p.rowCount; ++i) {
-    const int bodies[2] = {p.body0[(size_t)i], p.body1[(size_t)i]};
+// mirror[k], for each lower-triangle entry k = (i, j), j <= i: the index of
+// (j, i). Rows are visited in ascending order, so the entries above row j's
+// diagonal are reached in ascending column order: next[j] walks them.
+void layoutMirror(int rowCount, std::span<const int> rowStart, std::span<const int> diagonal,
+                  std::span<const int> col, std::span<int> next, std::span<int> mirror) {
+  for (int i = 0; i < rowCount; ++i) next[(size_t)i] = diagonal[(size_t)i] + 1;
+  for (int i = 0; i < rowCount; ++i)
     for (int k = rowStart[(size_t)i]; k <= diagonal[(size_t)i]; ++k) {
       const int j = col[(size_t)k];
-      unsigned code = 0;
-      for (int side = 0; side < 2; ++side) {
-        const int bi = bodies[side];
-        if (bi < 0) continue;
-        const unsigned sideJ = p.body0[(size_t)j] == bi ? 1u : p.body1[(size_t)j] == bi ? 2u : 0u;
-        code |= sideJ << (2 * side);
-      }
-      share[(size_t)k] = (unsigned char)code;
       mirror[(size_t)k] = j == i ? k : next[(size_t)j]++;
     }
-  }
 }
 
-// A's values. Entry (i, j) is summed over the bodies the two rows share,
-//     A_ij = sum_b J_i,b . (M_b^-1 J_j,b^T)   (+ softness_i when j = i),
-// body 0 of row i first; `entry` is one body's share (the reference
-// RowPairEntry). Only j <= i is computed: A is symmetric, and (i, j) is
-// copied to (j, i).
-template <class Entry>
-void fillValues(const BodySpaceProblem &p, std::span<const MeReal> mj, std::span<const int> diagonal,
-                std::span<const unsigned char> share, std::span<const int> mirror, Csr &a, Entry entry) {
-  for (int i = 0; i < p.rowCount; ++i) {
-    const MeReal *Ji = &p.J[(size_t)i * 12];
-    for (int k = a.rowStart[(size_t)i]; k <= diagonal[(size_t)i]; ++k) {
-      const MeReal *mjj = &mj[(size_t)a.col[(size_t)k] * 12];
-      const unsigned code = share[(size_t)k];
-      MeReal v = 0;
-      if (const unsigned sideJ = code & 3u; sideJ != 0) {
-        const MeReal *m = mjj + (sideJ - 1) * 6;
-        v += entry(Ji, Ji + 3, m, m + 3);
+// The place of each body's row pairs in A: for body b, whose rows are
+// R = bodyRows[bodyRowStart[b] ..] (ascending), pairEntry[pairStart[b] +
+// p (p + 1) / 2 + q] is the index of (R[p], R[q]), q <= p. R[0..p] are all
+// columns of row R[p] (they share b), so one walk of its lower columns finds
+// them.
+void layoutBodyPairs(int bodyCount, std::span<const int> bodyRowStart, std::span<const int> bodyRows,
+                     std::span<const int> rowStart, std::span<const int> col, std::vector<int> &pairStart,
+                     std::vector<int> &pairEntry) {
+  pairStart.resize((size_t)bodyCount + 1);
+  pairStart[0] = 0;
+  for (int b = 0; b < bodyCount; ++b) {
+    const int r = bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b];
+    pairStart[(size_t)b + 1] = pairStart[(size_t)b] + r * (r + 1) / 2;
+  }
+  pairEntry.resize((size_t)pairStart[(size_t)bodyCount]);
+  for (int b = 0; b < bodyCount; ++b) {
+    const int *R = &bodyRows[(size_t)bodyRowStart[(size_t)b]];
+    const int r = bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b];
+    int *out = &pairEntry[(size_t)pairStart[(size_t)b]];
+    for (int p = 0; p < r; ++p) {
+      int k = rowStart[(size_t)R[p]];
+      for (int q = 0; q <= p; ++q) {
+        while (col[(size_t)k] != R[q]) ++k;
+        *out++ = k++;
       }
-      if (const unsigned sideJ = code >> 2; sideJ != 0) {
-        const MeReal *m = mjj + (sideJ - 1) * 6;
-        v += entry(Ji + 6, Ji + 9, m, m + 3);
-      }
-      a.val[(size_t)k] = v;
-      a.val[(size_t)mirror[(size_t)k]] = v;
     }
-    a.val[(size_t)diagonal[(size_t)i]] += p.softness[(size_t)i];
   }
 }
 
 // What the solver keeps of one partition from step to step: the Kea
-// workspace (with its factorisation) and A's sparsity, which depends only
-// on which bodies the rows act on (body0, body1: kept to check it).
+// workspace (with its factorisation) and A's layout, which depends only on
+// which bodies the rows act on (body0, body1: kept to check it).
 struct PartitionMemory {
   std::uintptr_t identity = 0;
   std::uint64_t lastUse = 0;
   kea::KeaWorkspace *workspace = nullptr;
-  std::vector<int> body0, body1, rowStart, col, diagonal, mirror;
-  std::vector<unsigned char> share;
+  std::vector<int> body0, body1;
+  std::vector<int> rowStart, col, diagonal, mirror;  // A's CSR layout
+  std::vector<int> bodyRowStart, bodyRows;           // the rows on each body (rowsByBody)
+  std::vector<int> pairStart, pairEntry;             // layoutBodyPairs
+  int widestBody = 0;                                // the most rows on one body
 
   bool sameBodies(const BodySpaceProblem &p) const {
     return body0.size() == p.body0.size() && std::equal(body0.begin(), body0.end(), p.body0.begin()) &&
@@ -170,9 +150,9 @@ struct PartitionMemory {
   }
 };
 
-// A's sparsity in `memory`, computed when the rows act on other bodies than
-// last step's (layoutColumns), else kept.
-void updateSparsity(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory) {
+// A's layout in `memory`, computed when the rows act on other bodies than
+// last step's, else kept.
+void updateLayout(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory) {
   if (memory.sameBodies(p)) return;
   const int m = p.rowCount;
   std::span<int> bodyRowStart, bodyRows;
@@ -190,19 +170,71 @@ void updateSparsity(const BodySpaceProblem &p, StepArena &arena, PartitionMemory
   layoutColumns(p, bodyRowStart, bodyRows, a, memory.diagonal);
   const size_t nnz = (size_t)memory.rowStart[(size_t)m];
   memory.col.resize(nnz);
-  memory.share.resize(nnz);
   memory.mirror.resize(nnz);
-  layoutShares(p, memory.rowStart, memory.col, memory.diagonal, arena.take<int>((size_t)m), memory.share,
-               memory.mirror);
+  layoutMirror(m, memory.rowStart, memory.diagonal, memory.col, arena.take<int>((size_t)m), memory.mirror);
+  memory.bodyRowStart.assign(bodyRowStart.begin(), bodyRowStart.end());
+  memory.bodyRows.assign(bodyRows.begin(), bodyRows.end());
+  layoutBodyPairs(p.bodyCount, bodyRowStart, bodyRows, memory.rowStart, memory.col, memory.pairStart,
+                  memory.pairEntry);
+  memory.widestBody = 0;
+  for (int b = 0; b < p.bodyCount; ++b)
+    memory.widestBody = std::max(memory.widestBody, bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b]);
   memory.body0.assign(p.body0.begin(), p.body0.end());
   memory.body1.assign(p.body1.begin(), p.body1.end());
 }
 
-template <class Entry>
-Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory, Entry entry) {
-  updateSparsity(p, arena, memory);
-  Csr a{memory.rowStart, memory.col, arena.take<MeReal>(memory.col.size())};
-  fillValues(p, minvJt(p, arena), memory.diagonal, memory.share, memory.mirror, a, entry);
+// Body b's rows' M_b^-1 J^T, one row of `mj` per component (lin xyz, ang
+// xyz) and one column per row of b: mj[c * stride + q].
+void bodyMinvJt(const BodySpaceProblem &p, int b, std::span<const int> rows, MeReal *mj, int stride) {
+  const auto *inertia = reinterpret_cast<const MeReal(*)[3]>(&p.invInertia[(size_t)b * 9]);
+  for (size_t q = 0; q < rows.size(); ++q) {
+    const int row = rows[q];
+    const MeReal *J = &p.J[(size_t)row * 12 + (p.body0[(size_t)row] == b ? 0 : 6)];
+    MeReal lin[3], ang[3];
+    platform::reference::BodyMinvJt(p.invMass[(size_t)b], inertia, J, J + 3, lin, ang);
+    for (int c = 0; c < 3; ++c) {
+      mj[(size_t)c * (size_t)stride + q] = lin[c];
+      mj[(size_t)(c + 3) * (size_t)stride + q] = ang[c];
+    }
+  }
+}
+
+// Adds body b's shares to the lower triangle of `val`: for row R[p] and
+// each q <= p, J_R[p],b . (M_b^-1 J_R[q],b^T), summed in RowPairEntry's
+// order. `share` is scratch of `stride` values.
+void addBodyShares(const BodySpaceProblem &p, int b, std::span<const int> rows, const MeReal *mj, int stride,
+                   const int *pairEntry, MeReal *share, std::span<MeReal> val) {
+  const MeReal *m0 = mj, *m1 = mj + stride, *m2 = mj + 2 * stride;
+  const MeReal *m3 = mj + 3 * stride, *m4 = mj + 4 * stride, *m5 = mj + 5 * stride;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const int row = rows[i];
+    const MeReal *J = &p.J[(size_t)row * 12 + (p.body0[(size_t)row] == b ? 0 : 6)];
+    const MeReal j0 = J[0], j1 = J[1], j2 = J[2], j3 = J[3], j4 = J[4], j5 = J[5];
+    for (size_t q = 0; q <= i; ++q)
+      share[q] = (j0 * m0[q] + j1 * m1[q] + j2 * m2[q]) + (j3 * m3[q] + j4 * m4[q] + j5 * m5[q]);
+    for (size_t q = 0; q <= i; ++q) val[(size_t)pairEntry[q]] += share[q];
+    pairEntry += i + 1;
+  }
+}
+
+Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory) {
+  updateLayout(p, arena, memory);
+  Csr a{memory.rowStart, memory.col, arena.filled<MeReal>(memory.col.size(), 0)};
+  const int stride = memory.widestBody;
+  MeReal *mj = arena.take<MeReal>((size_t)stride * 6).data();
+  MeReal *share = arena.take<MeReal>((size_t)stride).data();
+  for (int b = 0; b < p.bodyCount; ++b) {
+    const std::span<const int> rows(&memory.bodyRows[(size_t)memory.bodyRowStart[(size_t)b]],
+                                    (size_t)(memory.bodyRowStart[(size_t)b + 1] - memory.bodyRowStart[(size_t)b]));
+    if (rows.empty()) continue;
+    bodyMinvJt(p, b, rows, mj, stride);
+    addBodyShares(p, b, rows, mj, stride, &memory.pairEntry[(size_t)memory.pairStart[(size_t)b]], share, a.val);
+  }
+  for (int i = 0; i < p.rowCount; ++i) {
+    a.val[(size_t)memory.diagonal[(size_t)i]] += p.softness[(size_t)i];
+    for (int k = a.rowStart[(size_t)i]; k < memory.diagonal[(size_t)i]; ++k)
+      a.val[(size_t)memory.mirror[(size_t)k]] = a.val[(size_t)k];
+  }
   return a;
 }
 
@@ -268,10 +300,7 @@ class KeaSolver final : public PartitionSolver {
     std::fill(lambda.begin(), lambda.end(), MeReal(0));
     if (p.rowCount == 0) return report;
     PartitionMemory &memory = memories_.take(p.identity);
-    const Csr a =
-        assemble(p, arena, memory, [](const MeReal *jl, const MeReal *ja, const MeReal *ml, const MeReal *ma) {
-          return platform::reference::RowPairEntry(jl, ja, ml, ma);
-        });
+    const Csr a = assemble(p, arena, memory);
     kea::SparseLcpProblem prob;
     prob.n = p.rowCount;
     prob.rowStart = a.rowStart;
