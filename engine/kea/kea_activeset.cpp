@@ -12,7 +12,11 @@
  * falling for a few steps, one row at a time changes set (Murty's rule, the
  * highest-index infeasible row), which terminates for a positive definite
  * matrix. During single pivoting the sets already tried are remembered; a
- * repeat is a cycle (rounding, or eps = 0 on a singular matrix).
+ * repeat is a cycle (rounding, or eps = 0 on a singular matrix). The memory
+ * starts again at each new fewest count of infeasible rows: what follows a
+ * set depends on that count too (a new low gives block steps again), so a
+ * set tried before the low may lead elsewhere after it, and the lows can
+ * only fall n times, so the method still ends.
  *
  * Friction rows: their bounds depend on the normal lambdas. The inner
  * pivoting solves the LCP with the bounds frozen at the current lambda; then

@@ -220,6 +220,7 @@ class ActiveSetRun {
         if (infeasible < fewestInfeasible) {
           fewestInfeasible = infeasible;
           blockTries = kBlockTries;
+          s_.tried.clear(); /* a new low: the sets tried before it may lead elsewhere now */
         } else {
           --blockTries;
         }

@@ -75,7 +75,9 @@
  *
  * Cycles. The active-set method can revisit an active set it has already
  * tried (only possible through rounding or a matrix that is not positive
- * definite, e.g. eps = 0 with redundant rows). It detects the repeat, stops,
+ * definite, e.g. eps = 0 with redundant rows). It detects the repeat (of a
+ * set tried since the count of infeasible rows last reached a new low; see
+ * kea_activeset.cpp), stops,
  * returns the best iterate with status CycleDetected and (if warnings are
  * on) the MeWarning "Kea: cycle has been detected ...".
  *
