@@ -304,7 +304,10 @@ class ActiveSetRun {
    * cap: 40000 solves seen in pile1000). From then on the update is relaxed
    * by half: lo <- lo + (F(lambda)_lo - lo) / 2 (same for hi), which damps
    * the flip. The stopping test is unchanged (F(lambda) against the bounds
-   * used), so a fixed point is still one.
+   * used), so a fixed point is still one. Infinite bounds (rows without
+   * friction, whose bounds never move) are kept: inf + (inf - inf) / 2
+   * would be NaN, and a normal row whose upper bound is NaN can never leave
+   * its lower bound (lo < hi is false).
    *
    * A friction row clamped only because its normal impulse was zero (lo =
    * hi = 0) says nothing about the row: now that its box has opened, it
@@ -312,8 +315,8 @@ class ActiveSetRun {
   void plainUpdate(int outer) {
     if (outer > kPlainOuter) {
       for (std::size_t i = 0; i < n_; ++i) {
-        s_.newLo[i] = s_.lo[i] + (s_.newLo[i] - s_.lo[i]) / 2;
-        s_.newHi[i] = s_.hi[i] + (s_.newHi[i] - s_.hi[i]) / 2;
+        if (std::isfinite(s_.lo[i])) s_.newLo[i] = s_.lo[i] + (s_.newLo[i] - s_.lo[i]) / 2;
+        if (std::isfinite(s_.hi[i])) s_.newHi[i] = s_.hi[i] + (s_.newHi[i] - s_.hi[i]) / 2;
       }
     }
     for (std::size_t i = 0; i < n_; ++i)
