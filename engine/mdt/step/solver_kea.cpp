@@ -89,16 +89,18 @@ void layoutColumns(const BodySpaceProblem &p, std::span<const int> bodyRowStart,
   }
 }
 
-// mirror[k], for each lower-triangle entry k = (i, j), j <= i: the index of
-// (j, i). Rows are visited in ascending order, so the entries above row j's
-// diagonal are reached in ascending column order: next[j] walks them.
+// mirror[k], for each entry k = (i, j): the index of (j, i). Rows are
+// visited in ascending order, so the entries above row j's diagonal are
+// reached in ascending column order: next[j] walks them.
 void layoutMirror(int rowCount, std::span<const int> rowStart, std::span<const int> diagonal,
                   std::span<const int> col, std::span<int> next, std::span<int> mirror) {
   for (int i = 0; i < rowCount; ++i) next[(size_t)i] = diagonal[(size_t)i] + 1;
   for (int i = 0; i < rowCount; ++i)
     for (int k = rowStart[(size_t)i]; k <= diagonal[(size_t)i]; ++k) {
       const int j = col[(size_t)k];
-      mirror[(size_t)k] = j == i ? k : next[(size_t)j]++;
+      const int upper = j == i ? k : next[(size_t)j]++;
+      mirror[(size_t)k] = upper;
+      mirror[(size_t)upper] = k;
     }
 }
 
@@ -230,11 +232,10 @@ Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memor
     bodyMinvJt(p, b, rows, mj, stride);
     addBodyShares(p, b, rows, mj, stride, &memory.pairEntry[(size_t)memory.pairStart[(size_t)b]], share, a.val);
   }
-  for (int i = 0; i < p.rowCount; ++i) {
-    a.val[(size_t)memory.diagonal[(size_t)i]] += p.softness[(size_t)i];
-    for (int k = a.rowStart[(size_t)i]; k < memory.diagonal[(size_t)i]; ++k)
-      a.val[(size_t)memory.mirror[(size_t)k]] = a.val[(size_t)k];
-  }
+  for (int i = 0; i < p.rowCount; ++i) a.val[(size_t)memory.diagonal[(size_t)i]] += p.softness[(size_t)i];
+  for (int i = 0; i < p.rowCount; ++i)
+    for (int k = memory.diagonal[(size_t)i] + 1; k < a.rowStart[(size_t)i + 1]; ++k)
+      a.val[(size_t)k] = a.val[(size_t)memory.mirror[(size_t)k]];
   return a;
 }
 
