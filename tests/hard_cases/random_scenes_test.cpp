@@ -12,6 +12,9 @@
 // KARMA_RANDOM_SEEDS sets the seed count (default 200, about 20 s in CI);
 // a longer run is one command:
 //   KARMA_RANDOM_SEEDS=5000 build/release/tests/hard_cases/hard_cases_random_test
+// and KARMA_RANDOM_SEED_FIRST (default 1) where the seeds start, so that
+// one failing seed reruns alone:
+//   KARMA_RANDOM_SEED_FIRST=586 KARMA_RANDOM_SEEDS=1 build/release/tests/hard_cases/hard_cases_random_test
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -172,19 +175,35 @@ SeedResult runSeed(uint64_t seed) {
   return res;
 }
 
+bool Bounded(const SeedResult &r) { return r.finite && r.lowest > -0.05 && r.energyGrowth < 0.1; }
+
 }  // namespace
 
+// Seeds beyond the default 200 whose scenes ran away (energy growth from
+// 0.11 to 7e24, bodies thrown kilometres) while the geometric stiffness was
+// unbounded. Joints take part in each (277, 586 and 1138 stay bounded with
+// their joints left out); in 586 a ball joint ties a light hull to a capsule
+// with two bodies stacked between them. The bound in integrate.cpp (kMaxGeometricStiffness)
+// holds them; 1138 and 4606 run away again under a bound of 100.
+TEST(HardCases, RandomScenesThatRanAwayStayBounded) {
+  for (uint64_t seed : {277, 586, 1138, 1535, 2454, 2553, 3196, 4606}) {
+    const SeedResult r = runSeed(seed);
+    EXPECT_TRUE(Bounded(r)) << "seed " << seed << ": finite " << r.finite << ", lowest centre " << r.lowest
+                            << " m, energy growth " << r.energyGrowth << r.scene;
+  }
+}
+
 TEST(HardCases, RandomScenesStayBounded) {
-  int seeds = 200;
+  int seeds = 200, first = 1;
   if (const char *s = std::getenv("KARMA_RANDOM_SEEDS")) seeds = std::max(1, std::atoi(s));
+  if (const char *s = std::getenv("KARMA_RANDOM_SEED_FIRST")) first = std::max(1, std::atoi(s));
   int failures = 0;
   double worstLow = 1e9, worstGrowth = 0;
-  for (int seed = 1; seed <= seeds; ++seed) {
+  for (int seed = first; seed < first + seeds; ++seed) {
     const SeedResult r = runSeed((uint64_t)seed);
     worstLow = std::min(worstLow, r.lowest);
     worstGrowth = std::max(worstGrowth, r.energyGrowth);
-    const bool ok = r.finite && r.lowest > -0.05 && r.energyGrowth < 0.1;
-    if (!ok && ++failures <= 10)
+    if (!Bounded(r) && ++failures <= 10)
       ADD_FAILURE() << "seed " << seed << ": finite " << r.finite << ", lowest centre " << r.lowest
                     << " m, energy growth " << r.energyGrowth << r.scene;
   }
