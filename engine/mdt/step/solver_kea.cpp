@@ -10,7 +10,7 @@
 // inline.h's BodyMinvJt) are laid out side by side, and every pair of its
 // rows (j <= i) gets its share as one small block product, added at the
 // entry's place, which the layout keeps. Only the lower triangle is summed;
-// it is mirrored, so A is exactly symmetric.
+// the upper one is gathered from it, so A is exactly symmetric.
 //
 // Bits. An entry has at most two shares (two rows share at most two
 // bodies); each is the six products summed as RowPairEntry sums them, and
