@@ -35,16 +35,16 @@ struct Csr {
   std::span<MeReal> val;
 };
 
-// bodyRowStart/bodyRows: for each body, the rows that act on it.
-void rowsByBody(const BodySpaceProblem &p, StepArena &arena, std::span<int> &start, std::span<int> &rows) {
+// start/rows: for each body, the rows that act on it, ascending.
+void rowsByBody(const BodySpaceProblem &p, StepArena &arena, std::vector<int> &start, std::vector<int> &rows) {
   const int m = p.rowCount;
-  start = arena.filled<int>((size_t)p.bodyCount + 1, 0);
+  start.assign((size_t)p.bodyCount + 1, 0);
   for (int k = 0; k < m; ++k) {
     if (p.body0[(size_t)k] >= 0) ++start[(size_t)p.body0[(size_t)k] + 1];
     if (p.body1[(size_t)k] >= 0) ++start[(size_t)p.body1[(size_t)k] + 1];
   }
   for (int i = 0; i < p.bodyCount; ++i) start[(size_t)i + 1] += start[(size_t)i];
-  rows = arena.take<int>((size_t)start[(size_t)p.bodyCount]);
+  rows.resize((size_t)start[(size_t)p.bodyCount]);
   std::span<int> fill = arena.take<int>((size_t)p.bodyCount);
   std::copy(start.begin(), start.end() - 1, fill.begin());
   for (int k = 0; k < m; ++k) {
@@ -146,8 +146,9 @@ struct PartitionMemory {
   std::vector<int> pairStart, pairEntry;             // layoutBodyPairs
   int widestBody = 0;                                // the most rows on one body
 
+  // The layout is indexed by body as well as by row: the body count counts.
   bool sameBodies(const BodySpaceProblem &p) const {
-    return body0.size() == p.body0.size() && std::equal(body0.begin(), body0.end(), p.body0.begin()) &&
+    return bodyRowStart.size() == (size_t)p.bodyCount + 1 && body0.size() == p.body0.size() && std::equal(body0.begin(), body0.end(), p.body0.begin()) &&
            std::equal(body1.begin(), body1.end(), p.body1.begin());
   }
 };
@@ -157,8 +158,8 @@ struct PartitionMemory {
 void updateLayout(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory) {
   if (memory.sameBodies(p)) return;
   const int m = p.rowCount;
-  std::span<int> bodyRowStart, bodyRows;
-  rowsByBody(p, arena, bodyRowStart, bodyRows);
+  rowsByBody(p, arena, memory.bodyRowStart, memory.bodyRows);
+  const std::span<const int> bodyRowStart = memory.bodyRowStart, bodyRows = memory.bodyRows;
   // Entries of row i: at most the rows of its two bodies.
   size_t bound = 0;
   for (int i = 0; i < m; ++i)
@@ -174,8 +175,6 @@ void updateLayout(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &
   memory.col.resize(nnz);
   memory.mirror.resize(nnz);
   layoutMirror(m, memory.rowStart, memory.diagonal, memory.col, arena.take<int>((size_t)m), memory.mirror);
-  memory.bodyRowStart.assign(bodyRowStart.begin(), bodyRowStart.end());
-  memory.bodyRows.assign(bodyRows.begin(), bodyRows.end());
   layoutBodyPairs(p.bodyCount, bodyRowStart, bodyRows, memory.rowStart, memory.col, memory.pairStart,
                   memory.pairEntry);
   memory.widestBody = 0;
