@@ -119,6 +119,7 @@
 #include "MePrecision.h"
 #include "kernels.h"
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -230,6 +231,12 @@ struct SparseLcpProblem {
   std::span<const MeReal> b, lo, hi;
   std::span<const int> findex;
   std::span<const MeReal> mu;
+  /* The caller's name for the sparsity (n, rowStart, col), or 0 for none.
+   * Two problems with the same nonzero stamp must have the same sparsity:
+   * a solve that finds the stamp of the problem its workspace last kept a
+   * factor or an ordering for takes the sparsity as known without
+   * comparing the arrays. Unnamed problems are compared entry by entry. */
+  std::uint64_t sparsityStamp = 0;
 };
 
 /* Solves a sparse problem with the same contract and options as KeaSolve

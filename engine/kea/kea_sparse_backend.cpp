@@ -71,18 +71,37 @@ bool SparseBackend::sameSparsity(const SparseLcpProblem &p, MeReal eps, int enve
   return eps == eps_ && envelopeRows == envelopeRows_ && keptStructure(p);
 }
 
-bool SparseBackend::keptStructure(const SparseLcpProblem &p) const {
+bool SparseBackend::keptStructure(const SparseLcpProblem &p) const { return keptSparsity_.matches(p); }
+
+bool SparsityRecord::matches(const SparseLcpProblem &p) const {
+  if (!recorded_) return false;
+  if (stamp_ != 0) return p.sparsityStamp == stamp_;
   const auto n = static_cast<std::size_t>(std::max(p.n, 0));
-  return !keptRowStart_.empty() && keptRowStart_.size() == n + 1 && p.rowStart.size() == n + 1 &&
-         std::equal(keptRowStart_.begin(), keptRowStart_.end(), p.rowStart.begin()) &&
-         keptCol_.size() == p.col.size() && p.val.size() == p.col.size() &&
-         std::equal(keptCol_.begin(), keptCol_.end(), p.col.begin());
+  return rowStart_.size() == n + 1 && p.rowStart.size() == n + 1 &&
+         std::equal(rowStart_.begin(), rowStart_.end(), p.rowStart.begin()) && col_.size() == p.col.size() &&
+         p.val.size() == p.col.size() && std::equal(col_.begin(), col_.end(), p.col.begin());
 }
 
-void SparseBackend::keepSparsity(const SparseLcpProblem &p) {
+/* `p` must be valid (rowStart[n] entries in col). */
+void SparsityRecord::record(const SparseLcpProblem &p) {
+  recorded_ = true;
+  stamp_ = p.sparsityStamp;
+  if (stamp_ != 0) return;
   const auto n = static_cast<std::size_t>(p.n);
-  keptRowStart_.assign(p.rowStart.begin(), p.rowStart.begin() + static_cast<std::ptrdiff_t>(n + 1));
-  keptCol_.assign(p.col.begin(), p.col.begin() + p.rowStart[n]);
+  rowStart_.assign(p.rowStart.begin(), p.rowStart.begin() + static_cast<std::ptrdiff_t>(n + 1));
+  col_.assign(p.col.begin(), p.col.begin() + p.rowStart[n]);
+}
+
+/* The orderings of the previous problem stay when `p` has its sparsity
+ * (they depend on nothing else); otherwise they are made again when first
+ * needed. */
+void SparseBackend::keepOrderings(const SparseLcpProblem &p) {
+  upperFresh_ = false; /* upVal_ holds the previous problem's values */
+  if (orderSparsity_.matches(p)) return;
+  orderSparsity_.record(p);
+  order_.clear();
+  bandOrder_.clear();
+  orderChosen_ = useBandOrder_ = false;
 }
 
 void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory,
@@ -100,7 +119,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   }
   stale_ = false;
   memory_ = memory;
-  keptRowStart_.clear(); /* filled when a factor worth keeping is made */
+  keptSparsity_.clear(); /* recorded when a factor worth keeping is made */
   p_ = &p;
   eps_ = eps;
   const auto n = static_cast<std::size_t>(p.n);
@@ -108,7 +127,6 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   naturalRows_.reserve(n);
   denseRows_.reserve(n);
   degreeOrder_.reserve(n);
-  denseRowStart_.reserve(n + 1);
   denseMapRows_.reserve(n);
   denseCandidateRows_.reserve(n);
   /* Reverse Cuthill-McKee scratch (computeBandOrder). */
@@ -133,9 +151,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   const std::size_t denseRowsMax = std::min(n, kDenseRows);
   denseFill_.reserve(std::min(U(p.rowStart[n]), denseRowsMax * (denseRowsMax + 1) / 2));
   envelopeRows_ = envelopeRows;
-  order_.clear();
-  bandOrder_.clear();
-  orderChosen_ = useBandOrder_ = false;
+  keepOrderings(p);
   bandRows_.reserve(n);
   bandOrder_.reserve(n);
   factor_ = Factor::None;
@@ -415,7 +431,7 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
 /* The sparsity of the problem a factor worth keeping was made for (once
  * per problem). */
 void SparseBackend::rememberSparsity() {
-  if (memory_ != KeaFactorMemory::Off && staleWorthIt_ && keptRowStart_.empty()) keepSparsity(*p_);
+  if (memory_ != KeaFactorMemory::Off && staleWorthIt_ && keptSparsity_.empty()) keptSparsity_.record(*p_);
 }
 
 /* The order of the envelope path, once per problem. Any order's envelope
@@ -553,10 +569,8 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   const SparseLcpProblem &p = *p_;
   /* The order and the map depend on the sparsity only (and the map on the
    * free rows): a problem of another sparsity makes both again. */
-  if (!std::equal(p.rowStart.begin(), p.rowStart.end(), denseRowStart_.begin(), denseRowStart_.end()) ||
-      !std::equal(p.col.begin(), p.col.end(), denseCol_.begin(), denseCol_.end())) {
-    denseRowStart_.assign(p.rowStart.begin(), p.rowStart.end());
-    denseCol_.assign(p.col.begin(), p.col.end());
+  if (!denseSparsity_.matches(p)) {
+    denseSparsity_.record(p);
     computeDegreeOrder();
     denseMapRows_.clear();
     denseCandidateRows_.clear();

@@ -63,6 +63,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
@@ -73,6 +74,23 @@ namespace karma::kea::detail {
  * overlapping lambda); returns the contract's residual of lambda. */
 MeReal SparseMultiplyResidual(const platform::Kernels &kernels, const SparseLcpProblem &p, MeReal eps,
                               std::span<const MeReal> lambda, std::span<MeReal> w);
+
+/* What a backend remembers of a sparsity (n, rowStart, col) to know it
+ * again: the problem's stamp when it has one (SparseLcpProblem::
+ * sparsityStamp; nothing is copied or compared), else a copy of the
+ * arrays, compared entry by entry. */
+class SparsityRecord {
+ public:
+  bool matches(const SparseLcpProblem &p) const;
+  void record(const SparseLcpProblem &p);
+  void clear() { recorded_ = false; }
+  bool empty() const { return !recorded_; }
+
+ private:
+  bool recorded_ = false;
+  std::uint64_t stamp_ = 0;
+  std::vector<int> rowStart_, col_; /* only for a problem without a stamp */
+};
 
 class SparseBackend {
  public:
@@ -126,8 +144,8 @@ class SparseBackend {
   void solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x);
   void column(int row, std::span<const int> position, std::span<MeReal> out) const;
 
-  /* Whether p's rowStart and col are those of the problem the kept factor
-   * was made for (only a problem that passed validation is kept). */
+  /* Whether p's sparsity is that of the problem the kept factor was made
+   * for (only a problem that passed validation is kept). */
   bool keptStructure(const SparseLcpProblem &p) const;
 
   /* Factorisations since reset(). */
@@ -141,7 +159,7 @@ class SparseBackend {
 
   void buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set, const std::vector<MeReal> &lambda);
   bool sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const;
-  void keepSparsity(const SparseLcpProblem &p);
+  void keepOrderings(const SparseLcpProblem &p);
   void rememberSparsity();
   const std::vector<int> &factorOrder() const;
   void multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y);
@@ -189,16 +207,20 @@ class SparseBackend {
   /* The free rows ascending (naturalRows_), in elimination order
    * (orderedRows_, sparse path), and the free rows of the kept factor. */
   std::vector<int> naturalRows_, orderedRows_, factoredSet_;
-  /* The dense path's sparsity (rowStart, col), all rows fewest nonzeros
-   * first, the free rows in that order (the dense factor's), and where the
-   * free block's upper-triangle entries go in the dense block, with the
-   * free rows that map was made for (mapDense). */
-  std::vector<int> denseRowStart_, denseCol_, degreeOrder_, denseRows_;
+  /* The sparsity the dense path's order and map were made for, all rows
+   * fewest nonzeros first, the free rows in that order (the dense
+   * factor's), and where the free block's upper-triangle entries go in the
+   * dense block, with the free rows that map was made for (mapDense). */
+  SparsityRecord denseSparsity_;
+  std::vector<int> degreeOrder_, denseRows_;
   std::vector<std::pair<int, int>> denseFill_;
   std::vector<int> denseMapRows_;
   /* The free rows of the last dense factorisation made without the map:
    * the map is made when they come back. */
   std::vector<int> denseCandidateRows_;
+  /* The sparsity the orderings below (bandOrder_, order_) were made for:
+   * they are kept while problems of that sparsity follow. */
+  SparsityRecord orderSparsity_;
   /* The whole matrix's rows in reverse Cuthill-McKee order, and the free
    * rows in that order (envelope path when the natural order is wide). */
   std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
@@ -222,7 +244,7 @@ class SparseBackend {
   /* Factor memory: the sparsity the factor was made for, whether it is
    * stale (made for an earlier problem), whether upVal_ holds this
    * problem's values, the target residual, the CG vectors and counts. */
-  std::vector<int> keptRowStart_, keptCol_;
+  SparsityRecord keptSparsity_;
   bool stale_ = false, upperFresh_ = false;
   /* Whether the kept factor is worth keeping (StaleSolveWorthIt). */
   bool staleWorthIt_ = false;

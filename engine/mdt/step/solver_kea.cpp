@@ -145,6 +145,10 @@ struct PartitionMemory {
   std::vector<int> bodyRowStart, bodyRows;           // the rows on each body (rowsByBody)
   std::vector<int> pairStart, pairEntry;             // layoutBodyPairs
   int widestBody = 0;                                // the most rows on one body
+  // Numbers the layouts this memory has held (1, 2, ...): Kea's name for
+  // A's sparsity (SparseLcpProblem::sparsityStamp). The workspace is this
+  // memory's alone, so the number needs to be unique only here.
+  std::uint64_t layoutStamp = 0;
 
   // The layout is indexed by body as well as by row: the body count counts.
   bool sameBodies(const BodySpaceProblem &p) const {
@@ -182,6 +186,7 @@ void updateLayout(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &
     memory.widestBody = std::max(memory.widestBody, bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b]);
   memory.body0.assign(p.body0.begin(), p.body0.end());
   memory.body1.assign(p.body1.begin(), p.body1.end());
+  ++memory.layoutStamp;
 }
 
 // Body b's rows' M_b^-1 J^T, one row of `mj` per component (lin xyz, ang
@@ -309,6 +314,7 @@ class KeaSolver final : public PartitionSolver {
     prob.b = p.rhs;
     prob.lo = p.lo;
     prob.hi = p.hi;
+    prob.sparsityStamp = memory.layoutStamp;
     if (p.anyFriction) {
       prob.findex = p.friction;
       prob.mu = p.mu;
