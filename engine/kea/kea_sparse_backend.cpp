@@ -525,15 +525,29 @@ void SparseBackend::forEachFreeEntry(const std::vector<int> &rows, Visit visit, 
  * before it keep what they hold: see reusableEnvelopeRows). */
 void SparseBackend::fillEnvelope(const std::vector<int> &rows, std::size_t from) {
   const SparseLcpProblem &p = *p_;
+  const std::size_t m = rows.size();
   envelope_.layout(static_cast<int>(from));
-  forEachFreeEntry(
-      rows,
-      [&](std::size_t a, std::size_t c, int k) {
-        if (c <= a) envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(c))] = p.val[U(k)];
-      },
-      from);
-  for (std::size_t a = from; a < rows.size(); ++a)
-    envelope_.value[envelope_.at(static_cast<int>(a), static_cast<int>(a))] += eps_;
+  /* Rows in ascending order (the natural order) meet their columns in
+   * ascending positions, so a row's lower entries end at its diagonal. */
+  const bool ascending = &rows == &naturalRows_;
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = static_cast<int>(a);
+  for (std::size_t a = from; a < m; ++a) {
+    const auto i = U(rows[a]);
+    /* row[c - first] = entry (a, c): envelopeFirsts made first the
+     * leftmost free column. */
+    const int first = envelope_.first[a];
+    MeReal *row = envelope_.value.data() + envelope_.at(static_cast<int>(a), first);
+    const int end = p.rowStart[i + 1];
+    if (ascending) {
+      for (int k = p.rowStart[i]; k < end && U(p.col[U(k)]) <= i; ++k)
+        if (const int c = position_[U(p.col[U(k)])]; c >= 0) row[c - first] = p.val[U(k)];
+    } else {
+      for (int k = p.rowStart[i]; k < end; ++k)
+        if (const int c = position_[U(p.col[U(k)])]; c >= 0 && U(c) <= a) row[c - first] = p.val[U(k)];
+    }
+    row[a - U(first)] += eps_;
+  }
+  for (std::size_t a = 0; a < m; ++a) position_[U(rows[a])] = -1;
 }
 
 /* The upper-triangle entries of the free block (A + eps I)_FF with the

@@ -8,15 +8,19 @@
 // bodies and stored in ascending order, diagonal always present. The values
 // are summed body by body: for each body, its rows' M^-1 J^T (reference_
 // inline.h's BodyMinvJt) are laid out side by side, and every pair of its
-// rows (j <= i) gets its share as one small block product, added at the
-// entry's place, which the layout keeps. Only the lower triangle is summed;
-// the upper one is gathered from it, so A is exactly symmetric.
+// rows (j <= i) gets its share S_ij = J_i,b . (M_b^-1 J_j,b^T) as one small
+// block product. Each share is added at (i, j) and, off the diagonal, at
+// (j, i), so A is exactly symmetric. The places are kept with the layout as
+// runs: S's row i lands in consecutive entries of A's row i wherever b's
+// rows are consecutive columns there (a contact group's rows always are),
+// and S's column j in consecutive entries of A's row j; a run is one
+// vector add.
 //
 // Bits. An entry has at most two shares (two rows share at most two
 // bodies); each is the six products summed as RowPairEntry sums them, and
 // the entry is 0 + one share + the other, then + softness on the diagonal.
 // Floating-point addition is commutative, so the order in which the bodies
-// are visited does not change a bit.
+// are visited does not change a bit, and (i, j) and (j, i) are equal.
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -89,48 +93,64 @@ void layoutColumns(const BodySpaceProblem &p, std::span<const int> bodyRowStart,
   }
 }
 
-// mirror[k], for each entry k = (i, j): the index of (j, i). Rows are
-// visited in ascending order, so the entries above row j's diagonal are
-// reached in ascending column order: next[j] walks them.
-void layoutMirror(int rowCount, std::span<const int> rowStart, std::span<const int> diagonal,
-                  std::span<const int> col, std::span<int> next, std::span<int> mirror) {
-  for (int i = 0; i < rowCount; ++i) next[(size_t)i] = diagonal[(size_t)i] + 1;
-  for (int i = 0; i < rowCount; ++i)
-    for (int k = rowStart[(size_t)i]; k <= diagonal[(size_t)i]; ++k) {
-      const int j = col[(size_t)k];
-      const int upper = j == i ? k : next[(size_t)j]++;
-      mirror[(size_t)k] = upper;
-      mirror[(size_t)upper] = k;
+// A run of shares added to consecutive entries of A: val[dst + t] +=
+// S[src + t * step], t < length, where S is one body's share block
+// (row-major, stride = the most rows on one body). Lower runs read a row of
+// S (step 1), upper runs a column (step = stride).
+struct ShareRun {
+  int dst, src, length;
+};
+
+// Appends to `runs` the runs of the places `place[0..count)` (entries of
+// A) of the shares at S[src0 + t * step]: a run ends where the next place
+// is not the next entry.
+void appendRuns(const int *place, int count, int src0, int step, std::vector<ShareRun> &runs) {
+  for (int t = 0; t < count; ++t) {
+    if (t > 0 && place[t] == place[t - 1] + 1) {
+      ++runs.back().length;
+      continue;
     }
+    runs.push_back({place[t], src0 + t * step, 1});
+  }
 }
 
-// The place of each body's row pairs in A: for body b, whose rows are
-// R = bodyRows[bodyRowStart[b] ..] (ascending), pairEntry[pairStart[b] +
-// p (p + 1) / 2 + q] is the index of (R[p], R[q]), q <= p. R[0..p] are all
-// columns of row R[p] (they share b), so one walk of its lower columns finds
-// them.
-void layoutBodyPairs(int bodyCount, std::span<const int> bodyRowStart, std::span<const int> bodyRows,
-                     std::span<const int> rowStart, std::span<const int> col, std::vector<int> &pairStart,
-                     std::vector<int> &pairEntry) {
-  pairStart.resize((size_t)bodyCount + 1);
-  pairStart[0] = 0;
+// The share runs of every body: for body b, whose rows are R =
+// bodyRows[bodyRowStart[b] ..] (ascending, r of them), its lower runs
+// (shares (R[p], R[q]), q <= p, into row R[p]) then its upper runs (shares
+// (R[p], R[q]), p > q, into row R[q] at column R[p]) are runs[runStart[b]
+// ..runStart[b + 1]), upper ones from upperStart[b]. R[0..p] are all
+// columns of row R[p] (they share b), so one walk of its columns up to the
+// diagonal finds the lower places and one walk on from the diagonal the
+// upper ones.
+void layoutShareRuns(int bodyCount, std::span<const int> bodyRowStart, std::span<const int> bodyRows,
+                     std::span<const int> rowStart, std::span<const int> col, int stride, std::span<int> place,
+                     std::vector<int> &runStart, std::vector<int> &upperStart, std::vector<ShareRun> &runs) {
+  runStart.resize((size_t)bodyCount + 1);
+  upperStart.resize((size_t)bodyCount);
+  runs.clear();
   for (int b = 0; b < bodyCount; ++b) {
-    const int r = bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b];
-    pairStart[(size_t)b + 1] = pairStart[(size_t)b] + r * (r + 1) / 2;
-  }
-  pairEntry.resize((size_t)pairStart[(size_t)bodyCount]);
-  for (int b = 0; b < bodyCount; ++b) {
+    runStart[(size_t)b] = (int)runs.size();
     const int *R = &bodyRows[(size_t)bodyRowStart[(size_t)b]];
     const int r = bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b];
-    int *out = &pairEntry[(size_t)pairStart[(size_t)b]];
     for (int p = 0; p < r; ++p) {
       int k = rowStart[(size_t)R[p]];
       for (int q = 0; q <= p; ++q) {
         while (col[(size_t)k] != R[q]) ++k;
-        *out++ = k++;
+        place[(size_t)q] = k++;
       }
+      appendRuns(place.data(), p + 1, p * stride, 1, runs);
+    }
+    upperStart[(size_t)b] = (int)runs.size();
+    for (int q = 0; q + 1 < r; ++q) {
+      int k = rowStart[(size_t)R[q]];
+      for (int p = q + 1; p < r; ++p) {
+        while (col[(size_t)k] != R[p]) ++k;
+        place[(size_t)(p - q - 1)] = k++;
+      }
+      appendRuns(place.data(), r - q - 1, (q + 1) * stride + q, stride, runs);
     }
   }
+  runStart[(size_t)bodyCount] = (int)runs.size();
 }
 
 // What the solver keeps of one partition from step to step: the Kea
@@ -141,10 +161,11 @@ struct PartitionMemory {
   std::uint64_t lastUse = 0;
   kea::KeaWorkspace *workspace = nullptr;
   std::vector<int> body0, body1;
-  std::vector<int> rowStart, col, diagonal, mirror;  // A's CSR layout
-  std::vector<int> bodyRowStart, bodyRows;           // the rows on each body (rowsByBody)
-  std::vector<int> pairStart, pairEntry;             // layoutBodyPairs
-  int widestBody = 0;                                // the most rows on one body
+  std::vector<int> rowStart, col, diagonal;      // A's CSR layout
+  std::vector<int> bodyRowStart, bodyRows;       // the rows on each body (rowsByBody)
+  std::vector<int> runStart, upperStart;         // layoutShareRuns
+  std::vector<ShareRun> runs;                    // layoutShareRuns
+  int widestBody = 0;                            // the most rows on one body
   // Numbers the layouts this memory has held (1, 2, ...): Kea's name for
   // A's sparsity (SparseLcpProblem::sparsityStamp). The workspace is this
   // memory's alone, so the number needs to be unique only here.
@@ -175,15 +196,12 @@ void updateLayout(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &
   memory.diagonal.resize((size_t)m);
   Csr a{memory.rowStart, memory.col, {}};
   layoutColumns(p, bodyRowStart, bodyRows, a, memory.diagonal);
-  const size_t nnz = (size_t)memory.rowStart[(size_t)m];
-  memory.col.resize(nnz);
-  memory.mirror.resize(nnz);
-  layoutMirror(m, memory.rowStart, memory.diagonal, memory.col, arena.take<int>((size_t)m), memory.mirror);
-  layoutBodyPairs(p.bodyCount, bodyRowStart, bodyRows, memory.rowStart, memory.col, memory.pairStart,
-                  memory.pairEntry);
+  memory.col.resize((size_t)memory.rowStart[(size_t)m]);
   memory.widestBody = 0;
   for (int b = 0; b < p.bodyCount; ++b)
     memory.widestBody = std::max(memory.widestBody, bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b]);
+  layoutShareRuns(p.bodyCount, bodyRowStart, bodyRows, memory.rowStart, memory.col, memory.widestBody,
+                  arena.take<int>((size_t)memory.widestBody), memory.runStart, memory.upperStart, memory.runs);
   memory.body0.assign(p.body0.begin(), p.body0.end());
   memory.body1.assign(p.body1.begin(), p.body1.end());
   ++memory.layoutStamp;
@@ -205,21 +223,39 @@ void bodyMinvJt(const BodySpaceProblem &p, int b, std::span<const int> rows, MeR
   }
 }
 
-// Adds body b's shares to the lower triangle of `val`: for row R[p] and
-// each q <= p, J_R[p],b . (M_b^-1 J_R[q],b^T), summed in RowPairEntry's
-// order. `share` is scratch of `stride` values.
-void addBodyShares(const BodySpaceProblem &p, int b, std::span<const int> rows, const MeReal *mj, int stride,
-                   const int *pairEntry, MeReal *share, std::span<MeReal> val) {
+// Body b's shares into `share` (row-major, `stride` per row): for its rows
+// R and each q <= p, share[p * stride + q] = J_R[p],b . (M_b^-1 J_R[q],b^T),
+// summed in RowPairEntry's order.
+void bodyShares(const BodySpaceProblem &p, int b, std::span<const int> rows, const MeReal *mj, int stride,
+                MeReal *share) {
   const MeReal *m0 = mj, *m1 = mj + stride, *m2 = mj + 2 * stride;
   const MeReal *m3 = mj + 3 * stride, *m4 = mj + 4 * stride, *m5 = mj + 5 * stride;
   for (size_t i = 0; i < rows.size(); ++i) {
     const int row = rows[i];
     const MeReal *J = &p.J[(size_t)row * 12 + (p.body0[(size_t)row] == b ? 0 : 6)];
     const MeReal j0 = J[0], j1 = J[1], j2 = J[2], j3 = J[3], j4 = J[4], j5 = J[5];
+    MeReal *out = share + i * (size_t)stride;
     for (size_t q = 0; q <= i; ++q)
-      share[q] = (j0 * m0[q] + j1 * m1[q] + j2 * m2[q]) + (j3 * m3[q] + j4 * m4[q] + j5 * m5[q]);
-    for (size_t q = 0; q <= i; ++q) val[(size_t)pairEntry[q]] += share[q];
-    pairEntry += i + 1;
+      out[q] = (j0 * m0[q] + j1 * m1[q] + j2 * m2[q]) + (j3 * m3[q] + j4 * m4[q] + j5 * m5[q]);
+  }
+}
+
+// Adds the shares along lower runs (each a row of `share`).
+void addLowerRuns(std::span<const ShareRun> runs, const MeReal *share, MeReal *__restrict val) {
+  for (const ShareRun &run : runs) {
+    MeReal *to = val + run.dst;
+    const MeReal *from = share + run.src;
+    for (int t = 0; t < run.length; ++t) to[t] += from[t];
+  }
+}
+
+// Adds the shares along upper runs (each a column of `share`, `stride`
+// apart).
+void addUpperRuns(std::span<const ShareRun> runs, int stride, const MeReal *share, MeReal *__restrict val) {
+  for (const ShareRun &run : runs) {
+    MeReal *to = val + run.dst;
+    const MeReal *from = share + run.src;
+    for (int t = 0; t < run.length; ++t) to[t] += from[(size_t)t * (size_t)stride];
   }
 }
 
@@ -228,18 +264,20 @@ Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memor
   Csr a{memory.rowStart, memory.col, arena.filled<MeReal>(memory.col.size(), 0)};
   const int stride = memory.widestBody;
   MeReal *mj = arena.take<MeReal>((size_t)stride * 6).data();
-  MeReal *share = arena.take<MeReal>((size_t)stride).data();
+  MeReal *share = arena.take<MeReal>((size_t)stride * (size_t)stride).data();
+  const std::span<const ShareRun> runs = memory.runs;
   for (int b = 0; b < p.bodyCount; ++b) {
     const std::span<const int> rows(&memory.bodyRows[(size_t)memory.bodyRowStart[(size_t)b]],
                                     (size_t)(memory.bodyRowStart[(size_t)b + 1] - memory.bodyRowStart[(size_t)b]));
     if (rows.empty()) continue;
     bodyMinvJt(p, b, rows, mj, stride);
-    addBodyShares(p, b, rows, mj, stride, &memory.pairEntry[(size_t)memory.pairStart[(size_t)b]], share, a.val);
+    bodyShares(p, b, rows, mj, stride, share);
+    const size_t lower = (size_t)memory.runStart[(size_t)b], upper = (size_t)memory.upperStart[(size_t)b];
+    const size_t end = (size_t)memory.runStart[(size_t)b + 1];
+    addLowerRuns(runs.subspan(lower, upper - lower), share, a.val.data());
+    addUpperRuns(runs.subspan(upper, end - upper), stride, share, a.val.data());
   }
   for (int i = 0; i < p.rowCount; ++i) a.val[(size_t)memory.diagonal[(size_t)i]] += p.softness[(size_t)i];
-  for (int i = 0; i < p.rowCount; ++i)
-    for (int k = memory.diagonal[(size_t)i] + 1; k < a.rowStart[(size_t)i + 1]; ++k)
-      a.val[(size_t)k] = a.val[(size_t)memory.mirror[(size_t)k]];
   return a;
 }
 
