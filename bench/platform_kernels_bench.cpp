@@ -1,12 +1,15 @@
 // The platform kernels (engine/platform/kernels.h) on every backend this CPU
 // supports: dot, gatherDot and sparseRowsTimes at n = 8, 32, 128 and 1024
-// (for sparseRowsTimes n entries in CSR rows of up to 16, as Kea's rows
-// are), nanoseconds per call; the binary ends with a Markdown table of each
+// (for sparseRowsTimes n entries in CSR rows of up to 16 random columns;
+// for contactRowsTimes, the same kernel on rows as a stack's contact rows
+// are: up to 36 columns, in runs of 12 consecutive ones, ascending),
+// nanoseconds per call; the binary ends with a Markdown table of each
 // backend's speed-up over the reference (reference time / backend time, the
 // medians when run with --benchmark_repetitions). Run e.g.
 //   build/bench/bench/platform_kernels_bench --benchmark_repetitions=5
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <random>
@@ -22,7 +25,8 @@ using platform::Kernels;
 
 constexpr int kSizes[] = {8, 32, 128, 1024};
 constexpr int kRowLength = 16;
-constexpr const char *kKernelNames[] = {"dot", "gatherDot", "sparseRowsTimes"};
+constexpr int kContactRowLength = 36, kContactRun = 12;
+constexpr const char *kKernelNames[] = {"dot", "gatherDot", "sparseRowsTimes", "contactRowsTimes"};
 
 // Random operands of one size: x is indexed by index (a permutation-free
 // random pick, as a sparse row gathers from a dense vector).
@@ -42,19 +46,39 @@ struct Operands {
     for (int k = 0; k < n; k += kRowLength) rowStart.push_back(k);
     rowStart.push_back(n);
   }
+  // CSR rows of up to kContactRowLength columns in runs of kContactRun
+  // consecutive ones (x of 4n values).
+  static Operands ContactRows(int n) {
+    Operands o(n);
+    o.x.resize(4 * (size_t)n, MeReal(0.5));
+    o.rowStart.clear();
+    std::mt19937 rng(static_cast<unsigned>(n) + 1);
+    std::uniform_int_distribution<int> gap(0, kContactRun);
+    for (int k = 0; k < n; k += kContactRowLength) {
+      o.rowStart.push_back(k);
+      int column = gap(rng);
+      for (int e = k; e < std::min(n, k + kContactRowLength); ++e) {
+        if (e > k && (e - k) % kContactRun == 0) column += gap(rng);
+        o.index[(size_t)e] = column++;
+      }
+    }
+    o.rowStart.push_back(n);
+    return o;
+  }
   int rows() const { return static_cast<int>(rowStart.size()) - 1; }
 };
 
 void Run(benchmark::State &state, const Kernels *k, int kernel) {
   const int n = static_cast<int>(state.range(0));
-  Operands o(n);
+  const Operands o = kernel == 3 ? Operands::ContactRows(n) : Operands(n);
+  std::vector<MeReal> y = o.y;
   for (auto _ : state) {
     if (kernel == 0) {
       benchmark::DoNotOptimize(k->dot(o.a.data(), o.x.data(), n));
     } else if (kernel == 1) {
       benchmark::DoNotOptimize(k->gatherDot(o.a.data(), o.index.data(), o.x.data(), n));
     } else {
-      k->sparseRowsTimes(o.rowStart.data(), o.index.data(), o.a.data(), nullptr, o.rows(), o.x.data(), o.y.data());
+      k->sparseRowsTimes(o.rowStart.data(), o.index.data(), o.a.data(), nullptr, o.rows(), o.x.data(), y.data());
       benchmark::ClobberMemory();
     }
   }
@@ -113,7 +137,7 @@ int main(int argc, char **argv) {
       backends.push_back(k);
     else
       std::printf("platform_kernels_bench: this CPU lacks %s: skipped\n", k->name);
-  for (int kernel = 0; kernel < 3; ++kernel)
+  for (int kernel = 0; kernel < 4; ++kernel)
     for (const Kernels *k : backends) {
       benchmark::internal::Benchmark *b =
           benchmark::RegisterBenchmark((std::string(kKernelNames[kernel]) + "/" + k->name).c_str(),

@@ -27,6 +27,23 @@
 
 namespace karma::platform::avx2 {
 
+/* Index runs: a sparse row's columns come in runs of consecutive indices
+ * (a contact group's rows are numbered together), where the x values a
+ * gather needs lie side by side and one vector load fetches them. */
+/* Whether at[0..7] are at[0], at[0] + 1, .., at[0] + 7. */
+KARMA_AVX2_INLINE bool Consecutive8(const int *at) {
+  const __m256i want = _mm256_add_epi32(_mm256_set1_epi32(at[0]), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+  const __m256i got = _mm256_loadu_si256(reinterpret_cast<const __m256i *>(at));
+  return _mm256_movemask_epi8(_mm256_cmpeq_epi32(want, got)) == -1;
+}
+
+/* Whether at[0..3] are at[0], at[0] + 1, .., at[0] + 3. */
+KARMA_AVX2_INLINE bool Consecutive4(const int *at) {
+  const __m128i want = _mm_add_epi32(_mm_set1_epi32(at[0]), _mm_setr_epi32(0, 1, 2, 3));
+  const __m128i got = _mm_loadu_si128(reinterpret_cast<const __m128i *>(at));
+  return _mm_movemask_epi8(_mm_cmpeq_epi32(want, got)) == 0xffff;
+}
+
 #if !KARMA_DOUBLE
 /* Lanes l < count set (all ones), the rest clear. */
 KARMA_AVX2_INLINE __m256i FirstLanes(int count) {
@@ -43,6 +60,13 @@ KARMA_AVX2_INLINE float LaneSum(__m256 s) {
  * the hardware gather was slower than separate loads. */
 KARMA_AVX2_INLINE __m256 Gather(const float *x, const int *at) {
   return _mm256_set_ps(x[at[7]], x[at[6]], x[at[5]], x[at[4]], x[at[3]], x[at[2]], x[at[1]], x[at[0]]);
+}
+
+/* x[at[0..7]], as one load where the indices are consecutive (a run of
+ * columns, as a sparse row's contact group is: SparseRowsTimes), else lane
+ * by lane. The same values in the same lanes either way. */
+KARMA_AVX2_INLINE __m256 GatherRun(const float *x, const int *at) {
+  return Consecutive8(at) ? _mm256_loadu_ps(x + at[0]) : Gather(x, at);
 }
 
 KARMA_AVX2_INLINE float Dot(const float *a, const float *b, int n) {
@@ -83,7 +107,7 @@ KARMA_AVX2_INLINE float GatherDot(const float *value, const int *index, const fl
   __m256 acc = _mm256_setzero_ps();
   int k = 0;
   for (; k + kLanes <= n; k += kLanes)
-    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(value + k), Gather(x, index + k)));
+    acc = _mm256_add_ps(acc, _mm256_mul_ps(_mm256_loadu_ps(value + k), GatherRun(x, index + k)));
   if (k < n)
     acc = _mm256_add_ps(
         acc, _mm256_mul_ps(_mm256_maskload_ps(value + k, FirstLanes(n - k)), GatherFirst(x, index + k, n - k)));
@@ -105,6 +129,12 @@ KARMA_AVX2_INLINE double LaneSum(__m256d lo, __m256d hi) {
 
 KARMA_AVX2_INLINE __m256d Gather(const double *x, const int *at) {
   return _mm256_set_pd(x[at[3]], x[at[2]], x[at[1]], x[at[0]]);
+}
+
+/* x[at[0..3]], as one load where the indices are consecutive (see the
+ * float GatherRun), else lane by lane. */
+KARMA_AVX2_INLINE __m256d GatherRun(const double *x, const int *at) {
+  return Consecutive4(at) ? _mm256_loadu_pd(x + at[0]) : Gather(x, at);
 }
 
 /* Lanes 0-3 in lo, 4-7 in hi. */
@@ -134,8 +164,8 @@ KARMA_AVX2_INLINE double GatherDot(const double *value, const int *index, const 
   __m256d acc0 = _mm256_setzero_pd(), acc1 = _mm256_setzero_pd();
   int k = 0;
   for (; k + kLanes <= n; k += kLanes) {
-    acc0 = _mm256_add_pd(acc0, _mm256_mul_pd(_mm256_loadu_pd(value + k), Gather(x, index + k)));
-    acc1 = _mm256_add_pd(acc1, _mm256_mul_pd(_mm256_loadu_pd(value + k + 4), Gather(x, index + k + 4)));
+    acc0 = _mm256_add_pd(acc0, _mm256_mul_pd(_mm256_loadu_pd(value + k), GatherRun(x, index + k)));
+    acc1 = _mm256_add_pd(acc1, _mm256_mul_pd(_mm256_loadu_pd(value + k + 4), GatherRun(x, index + k + 4)));
   }
   if (k < n) {
     const __m256i m0 = FirstLanes(n - k), m1 = FirstLanes(n - k - 4);

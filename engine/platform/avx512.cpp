@@ -37,15 +37,17 @@ KARMA_AVX512_INLINE double Dot512(const double *a, const double *b, int n) {
   return LaneSum(acc);
 }
 
-/* x[index[k]] lane by lane, as in avx2_inline.h; the tail is one masked
+/* x[index[k]] lane by lane, or one load for a run of consecutive indices,
+ * as in avx2_inline.h; the tail is one masked
  * hardware gather (the masked-off lanes read nothing). */
 KARMA_AVX512_INLINE double GatherDot512(const double *value, const int *index, const double *x, int n) {
   const int *i = index;
   __m512d acc = _mm512_setzero_pd();
   int k = 0;
   for (; k + kLanes <= n; k += kLanes) {
-    const __m512d xk = _mm512_set_pd(x[i[k + 7]], x[i[k + 6]], x[i[k + 5]], x[i[k + 4]], x[i[k + 3]], x[i[k + 2]],
-                                     x[i[k + 1]], x[i[k]]);
+    const __m512d xk = avx2::Consecutive8(i + k) ? _mm512_loadu_pd(x + i[k])
+                                                 : _mm512_set_pd(x[i[k + 7]], x[i[k + 6]], x[i[k + 5]], x[i[k + 4]],
+                                                                 x[i[k + 3]], x[i[k + 2]], x[i[k + 1]], x[i[k]]);
     acc = _mm512_add_pd(acc, _mm512_mul_pd(_mm512_loadu_pd(value + k), xk));
   }
   if (k < n) {
