@@ -43,10 +43,9 @@ void ClearContacts(MdtContactGroupID g) {
 MeReal TurnReach(McdModelID m) {
   McdGeometryID g = McdModelGetGeometry(m);
   if (McdGeometryGetType(g) == kMcdGeometryTypeSphere) return 0;
-  MeMatrix4 identity;
-  MeMatrix4TMMakeIdentity(identity);
+  static const MeMatrix4 kIdentity = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
   MeVector3 lo, hi, d;
-  McdGeometryGetAABB(g, identity, lo, hi);
+  McdGeometryGetAABB(g, kIdentity, lo, hi);
   MeVector3Subtract(d, hi, lo);
   const MeReal smallest = d[0] < d[1] ? (d[0] < d[2] ? d[0] : d[2]) : (d[1] < d[2] ? d[1] : d[2]);
   const MeReal r = (MeReal)0.5 * (MeVector3Magnitude(d) - smallest);

@@ -7,41 +7,46 @@ namespace {
 
 constexpr int kNone = -1;
 
-// The group's contacts, in order, at most kContactBuffer of them.
-int CollectOld(MdtContactGroupID g, MdtContactID *old) {
+// The group's contacts, in order, at most kContactBuffer of them, and their
+// features (oldFeature[j] is old[j]'s; the matching does not change them).
+int CollectOld(MdtContactGroupID g, MdtContactID *old, MeU32 *oldFeature) {
   int n = 0;
-  for (MdtContactID c = MdtContactGroupGetFirstContact(g); c && n < kContactBuffer;
-       c = MdtContactGroupGetNextContact(g, c))
+  for (MdtContactID c = MdtContactGroupGetFirstContact(g); c && n < kContactBuffer; c = MdtContactGetNext(c)) {
+    oldFeature[n] = MdtContactGetFeature(c);
     old[n++] = c;
+  }
   return n;
 }
 
-// Pass 1 of the rule: equal nonzero features.
-void MatchByFeature(const McdContact *cc, int n, MdtContactID *old, int oldCount, int *match, bool *taken) {
+// Pass 1 of the rule: equal nonzero features. Returns how many matched.
+int MatchByFeature(const McdContact *cc, int n, const MeU32 *oldFeature, int oldCount, int *match, bool *taken) {
+  int matched = 0;
   for (int i = 0; i < n; ++i) {
     if (cc[i].feature == 0) continue;
     for (int j = 0; j < oldCount; ++j) {
-      if (!taken[j] && MdtContactGetFeature(old[j]) == cc[i].feature) {
+      if (!taken[j] && oldFeature[j] == cc[i].feature) {
         match[i] = j;
         taken[j] = true;
+        ++matched;
         break;
       }
     }
   }
+  return matched;
 }
 
 // Passes 2 and 3 of the rule: the nearest old contact within reach, where
 // one of the two has no identity (pass 2) or whatever their identities
 // (pass 3, `renamed`).
-void MatchByPosition(const McdContact *cc, int n, MdtContactID *old, int oldCount, MeReal sign, MeReal reach,
-                     bool renamed, int *match, bool *taken) {
+void MatchByPosition(const McdContact *cc, int n, MdtContactID *old, const MeU32 *oldFeature, int oldCount,
+                     MeReal sign, MeReal reach, bool renamed, int *match, bool *taken) {
   for (int i = 0; i < n; ++i) {
     if (match[i] != kNone) continue;
     int best = kNone;
     MeReal bestD2 = reach * reach;
     for (int j = 0; j < oldCount; ++j) {
       if (taken[j]) continue;
-      if (!renamed && cc[i].feature != 0 && MdtContactGetFeature(old[j]) != 0) continue;
+      if (!renamed && cc[i].feature != 0 && oldFeature[j] != 0) continue;
       MeVector3 p, nrm, d;
       MdtContactGetPosition(old[j], p);
       MdtContactGetNormal(old[j], nrm);
@@ -60,13 +65,14 @@ void MatchByPosition(const McdContact *cc, int n, MdtContactID *old, int oldCoun
   }
 }
 
-// Writes collision contact cc into dynamics contact c.
-void Assign(MdtContactID c, const McdContact &cc, MeReal sign, const MdtContactParams &params) {
+// Writes collision contact cc into dynamics contact c, whose feature is
+// `feature` already.
+void Assign(MdtContactID c, MeU32 feature, const McdContact &cc, MeReal sign, const MdtContactParams &params) {
   MdtContactSetPosition(c, cc.position[0], cc.position[1], cc.position[2]);
   MdtContactSetNormal(c, sign * cc.normal[0], sign * cc.normal[1], sign * cc.normal[2]);
   MdtContactSetPenetration(c, -cc.separation);
   MdtContactSetParams(c, const_cast<MdtContactParams *>(&params));
-  MdtContactSetFeature(c, cc.feature);
+  if (feature != cc.feature) MdtContactSetFeature(c, cc.feature);
 }
 
 }  // namespace
@@ -77,11 +83,12 @@ MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeRe
                           MeReal matchDistance, MstPerContactCBPtr perContact, McdIntersectResult *result) {
   MatchCounts counts;
   MdtContactID old[kContactBuffer];
+  MeU32 oldFeature[kContactBuffer];
   bool taken[kContactBuffer] = {};
   int match[kContactBuffer];
   if (n > kContactBuffer) n = kContactBuffer;
   for (int i = 0; i < n; ++i) match[i] = kNone;
-  const int oldCount = g ? CollectOld(g, old) : 0;
+  const int oldCount = g ? CollectOld(g, old, oldFeature) : 0;
   // Contacts beyond the buffer (a group filled by hand) are not this
   // step's contacts either.
   if (oldCount == kContactBuffer) {
@@ -90,9 +97,12 @@ MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeRe
       ++counts.removed;
     }
   }
-  MatchByFeature(cc, n, old, oldCount, match, taken);
-  MatchByPosition(cc, n, old, oldCount, sign, matchDistance, false, match, taken);
-  MatchByPosition(cc, n, old, oldCount, sign, matchDistance * kRenameFraction, true, match, taken);
+  const int byFeature = MatchByFeature(cc, n, oldFeature, oldCount, match, taken);
+  // Passes 2 and 3 match nothing once every new or every old contact is matched.
+  if (byFeature < n && byFeature < oldCount) {
+    MatchByPosition(cc, n, old, oldFeature, oldCount, sign, matchDistance, false, match, taken);
+    MatchByPosition(cc, n, old, oldFeature, oldCount, sign, matchDistance * kRenameFraction, true, match, taken);
+  }
 
   // Unmatched old contacts go first, so the group holds only the kept ones
   // (in their old order) before the new ones are appended.
@@ -103,15 +113,18 @@ MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeRe
   }
   for (int i = 0; i < n; ++i) {
     MdtContactID c = nullptr;
+    MeU32 feature = 0;
     if (match[i] != kNone) {
       c = old[match[i]];
+      feature = oldFeature[match[i]];
       ++counts.kept;
     } else {
       c = MdtContactGroupCreateContact(g);
       if (!c) break;  // the constraint pool is full (it warned)
+      feature = MdtContactGetFeature(c);
       ++counts.created;
     }
-    Assign(c, cc[i], sign, params);
+    Assign(c, feature, cc[i], sign, params);
     if (perContact && !perContact(result, &result->contacts[i], c)) {
       MdtContactGroupDestroyContact(g, c);
       if (match[i] != kNone) {

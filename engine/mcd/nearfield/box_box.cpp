@@ -82,13 +82,20 @@ struct Pt {
   int key;   // in-line * 8 + out-line
 };
 
+// The polygons being clipped have at most this many vertices (4 at the
+// start, at most one more per clipping plane).
+constexpr int kMaxClipVerts = 16;
+
 // Keeps the part of the polygon (n vertices) with p.axis <= lim; the new
 // edge along the plane gets line id `line`. Returns the count.
 int ClipPlane(const Vert *in, int n, V3 axis, MeReal lim, int line, Vert *out) {
+  MeReal dist[kMaxClipVerts];  // dist[i] = in[i].p . axis - lim
+  for (int i = 0; i < n; ++i) dist[i] = Dot(in[i].p, axis) - lim;
   int m = 0;
   for (int i = 0; i < n; ++i) {
-    const Vert &a = in[i], &b = in[(i + 1) % n];
-    const MeReal da = Dot(a.p, axis) - lim, db = Dot(b.p, axis) - lim;
+    const int next = i + 1 < n ? i + 1 : 0;
+    const Vert &a = in[i], &b = in[next];
+    const MeReal da = dist[i], db = dist[next];
     if (da <= 0) out[m++] = a;
     if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
       const MeReal t = da / (da - db);
@@ -107,20 +114,21 @@ int FaceIndex(const Box &b, int k, V3 m) { return 2 * k + (Dot(b.f.axis[k], m) <
 // 8) and the incident face index; returns the count.
 int FaceContacts(const Box &ref, int k, V3 m, const Box &inc, MeReal tol, Pt *out, int *incFace) {
   int ii = 0;
-  MeReal best = -1;
+  MeReal best = -1, facing[3];  // facing[i] = inc axis i . m
   for (int i = 0; i < 3; ++i) {
-    const MeReal d = std::fabs(Dot(inc.f.axis[i], m));
+    facing[i] = Dot(inc.f.axis[i], m);
+    const MeReal d = std::fabs(facing[i]);
     if (d > best) {
       best = d;
       ii = i;
     }
   }
   const int i1 = (ii + 1) % 3, i2 = (ii + 2) % 3;
-  const MeReal sign = Dot(inc.f.axis[ii], m) > 0 ? -1 : 1;
+  const MeReal sign = facing[ii] > 0 ? -1 : 1;
   *incFace = 2 * ii + (sign < 0 ? 1 : 0);
   const V3 fc = inc.f.o + sign * inc.h[ii] * inc.f.axis[ii] - ref.f.o;
   const V3 e1 = inc.h[i1] * inc.f.axis[i1], e2 = inc.h[i2] * inc.f.axis[i2];
-  Vert a[16], b[16];
+  Vert a[kMaxClipVerts], b[kMaxClipVerts];
   a[0] = {fc + e1 + e2, 0};
   a[1] = {fc - e1 + e2, 1};
   a[2] = {fc - e1 - e2, 2};
@@ -135,7 +143,7 @@ int FaceContacts(const Box &ref, int k, V3 m, const Box &inc, MeReal tol, Pt *ou
   for (int i = 0; i < n && count < 8; ++i) {
     const MeReal d = Dot(a[i].p, m) - ref.h[k];
     if (d > tol) continue;
-    const int in = a[(i + n - 1) % n].out;
+    const int in = a[i > 0 ? i - 1 : n - 1].out;
     const int dims = (in >= 4) + (a[i].out >= 4);  // corner, edge point, reference corner
     out[count++] = {ref.f.o + a[i].p - (MeReal)0.5 * d * m, d, dims, in * 8 + a[i].out};
   }
@@ -204,21 +212,33 @@ int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
   MeReal best[3] = {-MEINFINITY, -MEINFINITY, -MEINFINITY};  // box 1 faces, box 2 faces, edges
   int axis[3] = {0, 0, -1};
   V3 bestL[3];
-  auto test = [&](V3 L, int id, int cls) {
-    const MeReal s = std::fabs(Dot(T, L)) - b1.Radius(L) - b2.Radius(L);
+  // Records separation s along axis L; false when it separates the boxes.
+  auto record = [&](MeReal s, V3 L, int id, int cls) {
     if (s > best[cls]) best[cls] = s, axis[cls] = id, bestL[cls] = L;
     return s <= tol;
   };
-  for (int i = 0; i < 3; ++i)
-    if (!test(b1.f.axis[i], i, 0)) return 0;
-  for (int j = 0; j < 3; ++j)
-    if (!test(b2.f.axis[j], j, 1)) return 0;
+  // The face axes need the nine |A_i . B_j| in both boxes' radii (B_j . A_i
+  // is A_i . B_j bit for bit: the products commute and the sum keeps its
+  // order); row i is computed with axis A_i.
+  MeReal absDot[3][3];
+  for (int i = 0; i < 3; ++i) {
+    const V3 L = b1.f.axis[i];
+    for (int j = 0; j < 3; ++j) absDot[i][j] = std::fabs(Dot(L, b2.f.axis[j]));
+    const MeReal r2 = b2.h[0] * absDot[i][0] + b2.h[1] * absDot[i][1] + b2.h[2] * absDot[i][2];
+    if (!record(std::fabs(Dot(T, L)) - b1.Radius(L) - r2, L, i, 0)) return 0;
+  }
+  for (int j = 0; j < 3; ++j) {
+    const V3 L = b2.f.axis[j];
+    const MeReal r1 = b1.h[0] * absDot[0][j] + b1.h[1] * absDot[1][j] + b1.h[2] * absDot[2][j];
+    if (!record(std::fabs(Dot(T, L)) - r1 - b2.Radius(L), L, j, 1)) return 0;
+  }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
-      const V3 L = Cross(b1.f.axis[i], b2.f.axis[j]);
-      const MeReal len = Norm(L);
+      const V3 C = Cross(b1.f.axis[i], b2.f.axis[j]);
+      const MeReal len = Norm(C);
       if (len < (MeReal)1e-4) continue;
-      if (!test((1 / len) * L, 3 * i + j, 2)) return 0;
+      const V3 L = (1 / len) * C;
+      if (!record(std::fabs(Dot(T, L)) - b1.Radius(L) - b2.Radius(L), L, 3 * i + j, 2)) return 0;
     }
   const MeReal hmin =
       std::fmin(std::fmin(std::fmin(b1.h[0], b1.h[1]), b1.h[2]), std::fmin(std::fmin(b2.h[0], b2.h[1]), b2.h[2]));

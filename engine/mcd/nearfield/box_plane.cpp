@@ -13,8 +13,8 @@
 #include "contact_reduce.h"
 #include "feature_id.h"
 #include "nearfield.h"
+#include "stable_order.h"
 
-#include <algorithm>
 #include <cmath>
 
 using namespace karma::mcd;
@@ -55,7 +55,7 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     for (int j = 0; j < count; ++j) touching[j] = touching[keep[j]];
   }
   // Deepest first; ties keep corner order, so the result is deterministic.
-  std::stable_sort(touching, touching + count, [&](int a, int b) { return height[a] < height[b]; });
+  StableOrderByKey(touching, count, height);
   for (int j = 0; j < count; ++j) {
     const int k = touching[j];
     MeVector3 pos;

@@ -16,8 +16,7 @@
 // tilted 1 or 2 (more when deep). The deepest are kept when the buffer is
 // short. Feature id: (cap, rim sample index).
 #include "prim_math.h"
-
-#include <algorithm>
+#include "stable_order.h"
 
 using namespace karma::mcd;
 using namespace karma::mcd::prim;
@@ -50,7 +49,7 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
       if (h[i] <= tol) order[count++] = i;
     }
   }
-  std::stable_sort(order, order + count, [&](int x, int y) { return h[x] < h[y]; });
+  StableOrderByKey(order, count, h);
   for (int j = 0; j < count; ++j) {
     const int i = order[j];
     const MeU32 id = feature::Pack(feature::kCylinderPlane, (MeU32)(i / kRimPoints), (MeU32)(i % kRimPoints));
