@@ -4,15 +4,28 @@
 //   build/bench/bench/anchor_scene_trace stack21 [FIRST [LAST]]
 // prints steps FIRST..LAST-1 (default: the whole run), after a comment line
 // naming the platform backend the scene's world steps on (KARMA_PLATFORM
-// chooses it).
+// chooses it). `--iterative-rows N` (anywhere after the scene) sets the
+// world's MdtWorldSetKeaIterativeRows (1: every partition iterative); the
+// solves column then counts the iterative solver's sweeps too.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include "anchor_scene.h"
 
 int main(int argc, char **argv) {
   using namespace karma::scenes;
+  std::vector<char *> args;
+  int iterativeRows = -1;
+  for (int i = 0; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--iterative-rows") && i + 1 < argc)
+      iterativeRows = std::atoi(argv[++i]);
+    else
+      args.push_back(argv[i]);
+  }
+  argc = (int)args.size();
+  argv = args.data();
   const char *name = argc > 1 ? argv[1] : "";
   std::unique_ptr<AnchorScene> scene = !std::strcmp(name, "car")        ? MakeCar()
                                        : !std::strcmp(name, "topple")   ? MakeTopple()
@@ -21,9 +34,11 @@ int main(int argc, char **argv) {
                                        : !std::strcmp(name, "pile1000") ? MakePile1000()
                                                                         : nullptr;
   if (!scene) {
-    std::fprintf(stderr, "usage: %s car|topple|stack21|ragdoll|pile1000 [FIRST [LAST]]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s car|topple|stack21|ragdoll|pile1000 [FIRST [LAST]] [--iterative-rows N]\n",
+                 argv[0]);
     return 2;
   }
+  if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene->world(), iterativeRows);
   const int first = argc > 2 ? std::atoi(argv[2]) : 0;
   const int last = argc > 3 ? std::atoi(argv[3]) : scene->steps();
   std::printf("# platform backend: %s\n", MdtWorldGetPlatformName(scene->world()));
