@@ -6,7 +6,8 @@
 // the next of a resting scene) is solved without a factorisation and agrees
 // with a fresh solve to the tolerance; a changed matrix far from the kept
 // factor falls back to a factorisation and still agrees; another sparsity
-// or another epsilon never uses the kept factor; without a factor memory
+// or another epsilon (or another sparsity stamp) never uses the kept factor;
+// a stamped sparsity gives the unstamped answers; without a factor memory
 // nothing is kept; WhenCheaper keeps a factor while its stale solves pay.
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
@@ -14,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
@@ -166,6 +168,40 @@ TEST(KeaFactorMemory, AnotherSparsityOrEpsilonNeverUsesTheKeptFactor) {
   EXPECT_EQ(r.status, KeaStatus::Solved);
   EXPECT_EQ(r.staleSolves, 0);
   EXPECT_GE(r.factorizations, 1);
+}
+
+// A caller that names its sparsity (SparseLcpProblem::sparsityStamp) gets
+// the same answers as one that does not; the stamp, not the arrays, then
+// says whether the kept factor fits: a new stamp on the same arrays is
+// another sparsity.
+TEST(KeaFactorMemory, AStampedSparsityIsKnownByItsStamp) {
+  const ContactProblem stack = kea_test::Stack(6, 1);
+  const ContactProblem next = Perturbed(stack, 1e-5, 7);
+  auto solveBoth = [&](std::uint64_t firstStamp, std::uint64_t nextStamp, KeaResult &r1, KeaResult &r2) {
+    Workspace workspace(KeaWorkspaceCreate());
+    KeaOptions o;
+    o.factorMemory = KeaFactorMemory::Always;
+    SparseLcpProblem a = stack.sparse(), b = next.sparse();
+    a.sparsityStamp = firstStamp;
+    b.sparsityStamp = nextStamp;
+    KeaSolveSparse(a, o, *workspace, r1);
+    o.warmStart = r1.lambda;
+    KeaSolveSparse(b, o, *workspace, r2);
+  };
+  KeaResult plain1, plain2, named1, named2, renamed1, renamed2;
+  solveBoth(0, 0, plain1, plain2);
+  solveBoth(5, 5, named1, named2);
+  solveBoth(5, 6, renamed1, renamed2);
+  ASSERT_EQ(plain2.status, KeaStatus::Solved);
+  ASSERT_GE(plain2.staleSolves, 1);  // the unstamped arrays are recognised
+  EXPECT_EQ(named2.status, KeaStatus::Solved);
+  EXPECT_EQ(named2.staleSolves, plain2.staleSolves);
+  EXPECT_EQ(named2.factorizations, plain2.factorizations);
+  ASSERT_EQ(named2.lambda.size(), plain2.lambda.size());
+  for (std::size_t i = 0; i < plain2.lambda.size(); ++i) EXPECT_EQ(named2.lambda[i], plain2.lambda[i]) << "row " << i;
+  EXPECT_EQ(renamed2.status, KeaStatus::Solved);
+  EXPECT_EQ(renamed2.staleSolves, 0);
+  EXPECT_GE(renamed2.factorizations, 1);
 }
 
 TEST(KeaFactorMemory, WithoutReuseNothingIsKept) {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -56,6 +57,30 @@ Inputs StructuredInputs(std::mt19937 &rng, int n) {
   return in;
 }
 
+/* Indices in runs of consecutive values (as a sparse row's columns come,
+ * which a backend may load as one vector), of random lengths, starts and
+ * alignments; every third run is a block of eight whose first and last are
+ * seven apart but whose order is shuffled, which must not pass as a run. */
+Inputs RunInputs(std::mt19937 &rng, int n) {
+  Inputs in = RandomInputs(rng, n, 10);
+  const int xs = static_cast<int>(in.b.size());
+  std::uniform_int_distribution<int> length(1, 17), start(0, xs > 17 ? xs - 17 : 0);
+  in.index.clear();
+  for (int run = 0; static_cast<int>(in.index.size()) < n; ++run) {
+    const int first = start(rng);
+    if (run % 3 == 2 && first + 8 <= xs) {
+      int block[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+      std::shuffle(block + 1, block + 7, rng);
+      for (int v : block) in.index.push_back(first + v);
+      continue;
+    }
+    const int len = std::min(length(rng), xs - first);
+    for (int v = 0; v < len; ++v) in.index.push_back(first + v);
+  }
+  in.index.resize(static_cast<std::size_t>(n));
+  return in;
+}
+
 void ExpectSameAsReference(const Kernels &k, const Inputs &in, const std::string &what) {
   const int n = static_cast<int>(in.a.size());
   const Kernels &r = Reference();
@@ -98,6 +123,7 @@ TEST_P(Backend, EveryKernelGivesTheReferenceBits) {
     ExpectSameAsReference(k, RandomInputs(rng, n, 10), "random");
     ExpectSameAsReference(k, RandomInputs(rng, n, 1e-30), "random tiny");
     ExpectSameAsReference(k, StructuredInputs(rng, n), "structured");
+    ExpectSameAsReference(k, RunInputs(rng, n), "runs of indices");
   }
   for (int n : {255, 256, 1000, 4099}) ExpectSameAsReference(k, RandomInputs(rng, n, 1), "long");
 }
