@@ -225,7 +225,8 @@ void bodyMinvJt(const BodySpaceProblem &p, int b, std::span<const int> rows, MeR
 
 // Body b's shares into `share` (row-major, `stride` per row): for its rows
 // R and each q <= p, share[p * stride + q] = J_R[p],b . (M_b^-1 J_R[q],b^T),
-// summed in RowPairEntry's order.
+// summed in RowPairEntry's order. The block is stride^2 values of step
+// scratch: quadratic in the rows on the widest body, as its pairs are.
 void bodyShares(const BodySpaceProblem &p, int b, std::span<const int> rows, const MeReal *mj, int stride,
                 MeReal *share) {
   const MeReal *m0 = mj, *m1 = mj + stride, *m2 = mj + 2 * stride;
