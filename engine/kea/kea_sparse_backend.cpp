@@ -71,7 +71,7 @@ bool SparseBackend::sameSparsity(const SparseLcpProblem &p, MeReal eps, int enve
   return eps == eps_ && envelopeRows == envelopeRows_ && keptStructure(p);
 }
 
-bool SparseBackend::keptStructure(const SparseLcpProblem &p) const { return keptSparsity_.matches(p); }
+bool SparseBackend::keptStructure(const SparseLcpProblem &p) const { return factorKept_ && sparsity_.matches(p); }
 
 bool SparsityRecord::matches(const SparseLcpProblem &p) const {
   if (!recorded_) return false;
@@ -92,16 +92,19 @@ void SparsityRecord::record(const SparseLcpProblem &p) {
   col_.assign(p.col.begin(), p.col.begin() + p.rowStart[n]);
 }
 
-/* The orderings of the previous problem stay when `p` has its sparsity
- * (they depend on nothing else); otherwise they are made again when first
- * needed. */
+/* The orderings of the previous problem (and the dense path's map) stay
+ * when `p` has its sparsity (they depend on nothing else); otherwise they
+ * are made again when first needed, and sparsity_ becomes p's. */
 void SparseBackend::keepOrderings(const SparseLcpProblem &p) {
   upperFresh_ = false; /* upVal_ holds the previous problem's values */
-  if (orderSparsity_.matches(p)) return;
-  orderSparsity_.record(p);
+  if (sparsity_.matches(p)) return;
+  sparsity_.record(p);
   order_.clear();
   bandOrder_.clear();
   orderChosen_ = useBandOrder_ = false;
+  degreeOrder_.clear();
+  denseMapRows_.clear();
+  denseCandidateRows_.clear();
 }
 
 void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory,
@@ -119,7 +122,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   }
   stale_ = false;
   memory_ = memory;
-  keptSparsity_.clear(); /* recorded when a factor worth keeping is made */
+  factorKept_ = false; /* set when a factor worth keeping is made */
   p_ = &p;
   eps_ = eps;
   const auto n = static_cast<std::size_t>(p.n);
@@ -392,7 +395,7 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
   envelopeFresh_ = false;
   if (envelopeRows_ == 0 && DenseFits(m, U(p_->n), U(p_->rowStart[U(p_->n)])) && factoriseDense(set)) {
     staleWorthIt_ = memory_ == KeaFactorMemory::Always;
-    rememberSparsity();
+    rememberFactor();
     return;
   }
   if (envelopeRows_ >= 0) {
@@ -419,19 +422,19 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
        * the prior so that the factor is tried again. */
       if (!staleWorthIt_)
         staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
-      rememberSparsity();
+      rememberFactor();
       return;
     }
   }
   factoriseSparse(set);
   staleWorthIt_ = true;
-  rememberSparsity();
+  rememberFactor();
 }
 
-/* The sparsity of the problem a factor worth keeping was made for (once
- * per problem). */
-void SparseBackend::rememberSparsity() {
-  if (memory_ != KeaFactorMemory::Off && staleWorthIt_ && keptSparsity_.empty()) keptSparsity_.record(*p_);
+/* Marks the factor as kept for this problem's sparsity when it is worth
+ * keeping. */
+void SparseBackend::rememberFactor() {
+  if (memory_ != KeaFactorMemory::Off && staleWorthIt_) factorKept_ = true;
 }
 
 /* The order of the envelope path, once per problem. Any order's envelope
@@ -582,13 +585,8 @@ void SparseBackend::computeDegreeOrder() {
 bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   const SparseLcpProblem &p = *p_;
   /* The order and the map depend on the sparsity only (and the map on the
-   * free rows): a problem of another sparsity makes both again. */
-  if (!denseSparsity_.matches(p)) {
-    denseSparsity_.record(p);
-    computeDegreeOrder();
-    denseMapRows_.clear();
-    denseCandidateRows_.clear();
-  }
+   * free rows): keepOrderings drops both for a problem of another one. */
+  if (degreeOrder_.empty()) computeDegreeOrder();
   std::vector<int> &rows = denseRows_;
   rows.clear();
   for (int i : degreeOrder_)

@@ -160,7 +160,7 @@ class SparseBackend {
   void buildRhs(const std::vector<int> &rows, const std::vector<unsigned char> &set, const std::vector<MeReal> &lambda);
   bool sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const;
   void keepOrderings(const SparseLcpProblem &p);
-  void rememberSparsity();
+  void rememberFactor();
   const std::vector<int> &factorOrder() const;
   void multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y);
   MeReal productScale(const std::vector<int> &rows, std::span<const MeReal> x) const;
@@ -207,20 +207,20 @@ class SparseBackend {
   /* The free rows ascending (naturalRows_), in elimination order
    * (orderedRows_, sparse path), and the free rows of the kept factor. */
   std::vector<int> naturalRows_, orderedRows_, factoredSet_;
-  /* The sparsity the dense path's order and map were made for, all rows
-   * fewest nonzeros first, the free rows in that order (the dense
-   * factor's), and where the free block's upper-triangle entries go in the
-   * dense block, with the free rows that map was made for (mapDense). */
-  SparsityRecord denseSparsity_;
+  /* The sparsity of the current problem, which every ordering and map
+   * below was made for (keepOrderings): they are kept while problems of
+   * that sparsity follow, and the kept factor is for it too. */
+  SparsityRecord sparsity_;
+  /* The dense path: all rows fewest nonzeros first (empty until needed),
+   * the free rows in that order (the dense factor's), and where the free
+   * block's upper-triangle entries go in the dense block, with the free
+   * rows that map was made for (mapDense). */
   std::vector<int> degreeOrder_, denseRows_;
   std::vector<std::pair<int, int>> denseFill_;
   std::vector<int> denseMapRows_;
   /* The free rows of the last dense factorisation made without the map:
    * the map is made when they come back. */
   std::vector<int> denseCandidateRows_;
-  /* The sparsity the orderings below (bandOrder_, order_) were made for:
-   * they are kept while problems of that sparsity follow. */
-  SparsityRecord orderSparsity_;
   /* The whole matrix's rows in reverse Cuthill-McKee order, and the free
    * rows in that order (envelope path when the natural order is wide). */
   std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
@@ -241,10 +241,11 @@ class SparseBackend {
   Factor factor_ = Factor::None;
   bool ldltOk_ = false;
   int factorizations_ = 0;
-  /* Factor memory: the sparsity the factor was made for, whether it is
-   * stale (made for an earlier problem), whether upVal_ holds this
-   * problem's values, the target residual, the CG vectors and counts. */
-  SparsityRecord keptSparsity_;
+  /* Factor memory: whether a factor worth keeping was made for
+   * sparsity_, whether it is stale (made for an earlier problem), whether
+   * upVal_ holds this problem's values, the target residual, the CG
+   * vectors and counts. */
+  bool factorKept_ = false;
   bool stale_ = false, upperFresh_ = false;
   /* Whether the kept factor is worth keeping (StaleSolveWorthIt). */
   bool staleWorthIt_ = false;

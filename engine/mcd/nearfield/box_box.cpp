@@ -61,9 +61,11 @@ struct Box {
   MeVector3 h;
   explicit Box(const McdModel *m) : f(m) { McdBoxGetRadii(m->instance.geometry, h); }
   MeReal FaceArea(int k) const { return h[(k + 1) % 3] * h[(k + 2) % 3]; }  // a quarter of it
+  // The half extent along a unit axis L, from absDot[k] = |axis_k . L|.
+  MeReal Radius(const MeReal absDot[3]) const { return h[0] * absDot[0] + h[1] * absDot[1] + h[2] * absDot[2]; }
   MeReal Radius(V3 L) const {
-    return h[0] * std::fabs(Dot(f.axis[0], L)) + h[1] * std::fabs(Dot(f.axis[1], L)) +
-           h[2] * std::fabs(Dot(f.axis[2], L));
+    const MeReal absDot[3] = {std::fabs(Dot(f.axis[0], L)), std::fabs(Dot(f.axis[1], L)), std::fabs(Dot(f.axis[2], L))};
+    return Radius(absDot);
   }
 };
 
@@ -224,13 +226,12 @@ int Test(const McdModel *m1, const McdModel *m2, McdIntersectResult *r) {
   for (int i = 0; i < 3; ++i) {
     const V3 L = b1.f.axis[i];
     for (int j = 0; j < 3; ++j) absDot[i][j] = std::fabs(Dot(L, b2.f.axis[j]));
-    const MeReal r2 = b2.h[0] * absDot[i][0] + b2.h[1] * absDot[i][1] + b2.h[2] * absDot[i][2];
-    if (!record(std::fabs(Dot(T, L)) - b1.Radius(L) - r2, L, i, 0)) return 0;
+    if (!record(std::fabs(Dot(T, L)) - b1.Radius(L) - b2.Radius(absDot[i]), L, i, 0)) return 0;
   }
   for (int j = 0; j < 3; ++j) {
     const V3 L = b2.f.axis[j];
-    const MeReal r1 = b1.h[0] * absDot[0][j] + b1.h[1] * absDot[1][j] + b1.h[2] * absDot[2][j];
-    if (!record(std::fabs(Dot(T, L)) - r1 - b2.Radius(L), L, j, 1)) return 0;
+    const MeReal column[3] = {absDot[0][j], absDot[1][j], absDot[2][j]};
+    if (!record(std::fabs(Dot(T, L)) - b1.Radius(column) - b2.Radius(L), L, j, 1)) return 0;
   }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
