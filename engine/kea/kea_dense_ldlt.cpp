@@ -68,8 +68,15 @@ void DenseLdlt::reserve(std::size_t rows) {
 void DenseLdlt::begin(int rows) {
   m = rows;
   stride = static_cast<int>(Padded(static_cast<std::size_t>(rows)));
-  upper.resize(static_cast<std::size_t>(m) * static_cast<std::size_t>(stride));
-  std::fill(upper.begin(), upper.end(), MeReal(0));
+  const auto s = static_cast<std::size_t>(stride);
+  const auto lanes = static_cast<std::size_t>(kLanes);
+  upper.resize(static_cast<std::size_t>(m) * s);
+  /* Only what factor() and solve() read: row j from column j rounded down
+   * to kLanes (the columns before it are never read, and may hold an
+   * earlier block's values). */
+  for (std::size_t j = 0; j < static_cast<std::size_t>(m); ++j)
+    std::fill(upper.begin() + static_cast<std::ptrdiff_t>(j * s + j / lanes * lanes),
+              upper.begin() + static_cast<std::ptrdiff_t>((j + 1) * s), MeReal(0));
 }
 
 bool DenseLdlt::factor() {

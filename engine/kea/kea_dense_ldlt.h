@@ -68,7 +68,8 @@ struct DenseLdlt {
 
   /* Room for blocks of up to `rows` rows. */
   void reserve(std::size_t rows);
-  /* A new m x m block, all zero. */
+  /* A new m x m block, zero wherever factor() and solve() read: row j from
+   * column j rounded down to kLanes (which covers the upper triangle). */
   void begin(int rows);
   /* Entry (i, j) of the upper triangle, j >= i. */
   MeReal &at(int i, int j) {

@@ -148,6 +148,39 @@ TEST(DenseLdlt, TheSameBitsOnEveryRun) {
   }
 }
 
+// begin() zeroes only what factor() and solve() read, and the caller
+// writes only the nonzeros (as Kea's sparse backend does), so a factor
+// reused for a smaller block still holds the larger block's values in
+// places: none of them may reach the answer.
+TEST(DenseLdlt, AReusedFactorGivesAFreshOnesBits) {
+  auto fillNonzeros = [](DenseLdlt &d, const std::vector<double> &a, int m) {
+    d.begin(m);
+    for (int i = 0; i < m; ++i)
+      for (int j = i; j < m; ++j)
+        if (a[(size_t)i * m + j] != 0) d.at(i, j) = (MeReal)a[(size_t)i * m + j];
+  };
+  DenseLdlt reused;
+  reused.reserve(DenseLdlt::kMaxRows);
+  std::vector<MeReal> fresh, again;
+  for (int m : {DenseLdlt::kMaxRows, 41, 17, 8, 33, 1, 64}) {
+    Fill(reused, Spd(DenseLdlt::kMaxRows, 7), DenseLdlt::kMaxRows);  // every entry written
+    ASSERT_TRUE(reused.factor());
+    const std::vector<double> a = Spd(m, (std::uint32_t)(100 + m), 3);
+    std::vector<MeReal> b((size_t)m);
+    for (int i = 0; i < m; ++i) b[(size_t)i] = (MeReal)Unit(5, (std::uint32_t)i);
+    fresh.assign((size_t)m, 0);
+    again.assign((size_t)m, 0);
+    DenseLdlt d;
+    fillNonzeros(d, a, m);
+    ASSERT_TRUE(d.factor());
+    d.solve(b, fresh);
+    fillNonzeros(reused, a, m);
+    ASSERT_TRUE(reused.factor());
+    reused.solve(b, again);
+    EXPECT_TRUE(again == fresh) << "m = " << m;
+  }
+}
+
 namespace {
 
 using Bits = std::conditional_t<sizeof(MeReal) == 4, std::uint32_t, std::uint64_t>;
