@@ -104,6 +104,21 @@ struct JointBlock {
   MeReal tolerance = 0;     // the solve's: slacks all within it need no update
 };
 
+// The two friction rows of one contact (rows `first` and first + 1, the
+// same bodies, both bounded by +-mu times the same normal impulse), updated
+// together: with s their slacks at the current dv and
+//     K = [d_1 k; k d_2],   k = J_1 M^-1 J_2^T,
+// the pair's exact step is x = lambda - K^-1 s. When x lies inside both
+// rows' boxes (static friction, the common case at rest) it is taken: a
+// block Gauss-Seidel step, whose two slacks are computed from the same dv
+// and so run side by side instead of one after the other. Otherwise the
+// two rows are updated one by one, as without the pair, which projects
+// each onto its box. invK holds K^-1 = [k22 -k; -k k11] / det.
+struct FrictionPair {
+  int first;
+  MeReal invK11, invK12, invK22;
+};
+
 struct Workspace {
   std::span<PgsRow> row;                 // per row
   std::span<MeReal> dv;                  // 6 per body: linear, angular
@@ -111,9 +126,11 @@ struct Workspace {
   std::span<MeReal> blockA;              // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
   std::span<SmallLcpFullSet> blockFull;  // per qualifying block: A_bb's elimination with every row free
   JointBlock joints;
-  // The sweeps' visits, forward and backward: a row alone (>= 0) or a
-  // normal block b (encoded -1 - b) at the first of its rows the sweep
-  // meets.
+  std::span<FrictionPair> pairs;         // the friction pairs (see FrictionPair)
+  std::span<int> pair;                   // per row: its friction pair, or -1
+  // The sweeps' visits, forward and backward: a row alone (>= 0), a normal
+  // block b (encoded -1 - b) or friction pair f (encoded -1 - blockCount -
+  // f) at the first of its rows the sweep meets, or the joint block.
   std::span<int> forward, backward;
 };
 
@@ -221,12 +238,40 @@ void prepareJointBlock(const BodySpaceProblem &p, Workspace &w, StepArena &arena
   for (int i : jb.rows) w.block[(size_t)i] = kJointBlockRow;
 }
 
+// The friction pairs (see FrictionPair): two adjacent friction rows of one
+// normal row, on the same bodies, in no block, with K well conditioned
+// (det K above 64 eps d_1 d_2; tangent directions are orthogonal, so K is
+// nearly diagonal).
+void prepareFrictionPairs(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
+  w.pair = arena.filled<int>((size_t)p.rowCount, -1);
+  int count = 0;
+  auto pairs = [&](auto found) {
+    for (int i = 0; i + 1 < p.rowCount; ++i) {
+      const PgsRow &a = w.row[(size_t)i], &c = w.row[(size_t)i + 1];
+      if (a.normal < 0 || c.normal != a.normal || a.dv0 != c.dv0 || a.dv1 != c.dv1) continue;
+      if (w.block[(size_t)i] != -1 || w.block[(size_t)i + 1] != -1 || !(a.diag > 0) || !(c.diag > 0)) continue;
+      const MeReal k = coupling(a, c), det = a.diag * c.diag - k * k;
+      if (!(det > 64 * ME_REAL_EPSILON * a.diag * c.diag)) continue;
+      found(i, k, det);
+      ++i;
+    }
+  };
+  pairs([&](int, MeReal, MeReal) { ++count; });
+  w.pairs = arena.take<FrictionPair>((size_t)count);
+  int f = 0;
+  pairs([&](int i, MeReal k, MeReal det) {
+    w.pairs[(size_t)f] = {i, w.row[(size_t)i + 1].diag / det, -k / det, w.row[(size_t)i].diag / det};
+    w.pair[(size_t)i] = w.pair[(size_t)i + 1] = f++;
+  });
+}
+
 // The visits of one sweep through `rows` rows in the order `rowAt(n)`
 // gives: each row alone, or its normal block, or the joint block, the
 // first time the sweep meets one of the block's rows. Returns the visits
 // written.
 template <class RowAt>
-int schedule(const Workspace &w, int rows, RowAt rowAt, std::span<int> out, std::span<unsigned char> seen) {
+int schedule(const Workspace &w, int rows, int blockCount, RowAt rowAt, std::span<int> out,
+             std::span<unsigned char> seen) {
   std::fill(seen.begin(), seen.end(), (unsigned char)0);
   bool jointsSeen = false;
   int n = 0;
@@ -235,6 +280,9 @@ int schedule(const Workspace &w, int rows, RowAt rowAt, std::span<int> out, std:
     if (b == kJointBlockRow) {
       if (!jointsSeen) out[(size_t)n++] = kJointBlockVisit;
       jointsSeen = true;
+    } else if (w.pair[(size_t)i] >= 0) {
+      const int code = -1 - blockCount - w.pair[(size_t)i];  // its two rows are adjacent in either order
+      if (n == 0 || out[(size_t)n - 1] != code) out[(size_t)n++] = code;
     } else if (b < 0) {
       out[(size_t)n++] = i;
     } else if (!seen[(size_t)b]) {
@@ -251,9 +299,9 @@ void prepareSchedules(const BodySpaceProblem &p, Workspace &w, StepArena &arena)
   w.forward = arena.take<int>((size_t)rows);
   w.backward = arena.take<int>((size_t)rows);
   w.forward = w.forward.first((size_t)schedule(
-      w, rows, [](int k) { return k; }, w.forward, seen));
+      w, rows, p.blockCount, [](int k) { return k; }, w.forward, seen));
   w.backward = w.backward.first((size_t)schedule(
-      w, rows, [&](int k) { return rows - 1 - k; }, w.backward, seen));
+      w, rows, p.blockCount, [&](int k) { return rows - 1 - k; }, w.backward, seen));
 }
 
 PgsRow gatherRow(const BodySpaceProblem &p, int i) {
@@ -287,6 +335,7 @@ Workspace prepare(const BodySpaceProblem &p, StepArena &arena) {
   for (int i = 0; i < p.rowCount; ++i) w.row[(size_t)i] = gatherRow(p, i);
   prepareBlocks(p, w, arena);
   prepareJointBlock(p, w, arena);
+  prepareFrictionPairs(p, w, arena);
   prepareSchedules(p, w, arena);
   return w;
 }
@@ -303,7 +352,7 @@ void bounds(const PgsRow &r, std::span<const MeReal> lambda, MeReal &lo, MeReal 
 }
 
 // J_i dv.
-MeReal rowVelocity(const PgsRow &r, const MeReal *dv) {
+[[gnu::always_inline]] inline MeReal rowVelocity(const PgsRow &r, const MeReal *dv) {
   MeReal v = 0;
   if (r.dv0 >= 0) v += dot6(r.J, dv + r.dv0);
   if (r.dv1 >= 0) v += dot6(r.J + 6, dv + r.dv1);
@@ -393,11 +442,35 @@ MeReal updateJointBlock(Workspace &w, std::span<MeReal> lambda) {
   return biggest;
 }
 
+// One visit of friction pair f (see FrictionPair). Returns the largest
+// velocity change.
+MeReal updatePair(Workspace &w, std::span<MeReal> lambda, int f) {
+  const FrictionPair &pair = w.pairs[(size_t)f];
+  const int i = pair.first;
+  const PgsRow &a = w.row[(size_t)i], &c = w.row[(size_t)i + 1];
+  MeReal *dv = w.dv.data();
+  const MeReal la = lambda[(size_t)i], lc = lambda[(size_t)i + 1];
+  const MeReal sa = rowSlack(a, dv, la), sc = rowSlack(c, dv, lc);
+  const MeReal xa = la - (pair.invK11 * sa + pair.invK12 * sc);
+  const MeReal xc = lc - (pair.invK12 * sa + pair.invK22 * sc);
+  const MeReal normal = std::max(lambda[(size_t)a.normal], MeReal(0));
+  const MeReal ha = a.mu * normal, hc = c.mu * normal;
+  if (!(std::fabs(xa) <= ha && std::fabs(xc) <= hc))
+    return std::max(update(w, lambda, i), update(w, lambda, i + 1));  // a box binds: row by row
+  lambda[(size_t)i] = xa;
+  lambda[(size_t)i + 1] = xc;
+  push(a, dv, xa - la);
+  push(c, dv, xc - lc);
+  return std::max(std::fabs(xa - la) * a.diag, std::fabs(xc - lc) * c.diag);
+}
+
 // One visit of a sweep's schedule: row i alone (i >= 0), the joint block
-// (kJointBlockVisit) or normal block -1 - i.
+// (kJointBlockVisit), normal block -1 - i or friction pair -1 - i -
+// blockCount.
 MeReal visit(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int i) {
   if (i >= 0) return update(w, lambda, i);
   if (i == kJointBlockVisit) return updateJointBlock(w, lambda);
+  if (-1 - i >= p.blockCount) return updatePair(w, lambda, -1 - i - p.blockCount);
   const int b = -1 - i;
   const MeReal change = updateBlock(p, w, lambda, b);
   if (change >= 0) return change;

@@ -117,3 +117,58 @@ TEST(Pgs, RedundantRigidJointsStayFiniteAndHold) {
     EXPECT_LT(pgs.force, 100) << "epsilon " << epsilon;
   }
 }
+
+namespace {
+
+// Pushes a 100 kg cube on the ground sideways with force F = push * m g
+// for one second, with normal-force friction mu = 0.5 in both directions
+// (each friction row within +-mu times its normal impulse: a box cone);
+// returns the distance it moved along x.
+MeReal Pushed(MdtKeaMethod method, MeReal push) {
+  Scene s;
+  MdtWorldSetKeaMethod(s.u->world, method);
+  MdtWorldSetEpsilon(s.u->world, (MeReal)1e-5);  // the default's give lets a held cube creep 13 mm/s
+  MstBridgeID bridge = s.u->bridge;
+  const MstMaterialID mat = MstBridgeGetNewMaterial(bridge);
+  McdModelSetMaterial(s.ground, mat);
+  MdtContactParamsID cp = MstBridgeGetContactParams(bridge, mat, mat);
+  MdtContactParamsSetType(cp, MdtContactTypeFriction2D);
+  MdtContactParamsSetPrimaryFrictionModel(cp, MdtFrictionModelNormalForce);
+  MdtContactParamsSetSecondaryFrictionModel(cp, MdtFrictionModelNormalForce);
+  MdtContactParamsSetFrictionCoefficient(cp, (MeReal)0.5);
+  McdModelID b = s.box(1, 1, 1, 0, (MeReal)0.5, 0, 100);
+  McdModelSetMaterial(b, mat);
+  s.step(30);  // settle
+  MeVector3 p0, p1;
+  Scene::position(b, p0);
+  for (int i = 0; i < 60; ++i) {
+    MdtBodyAddForce(McdModelGetBody(b), push * 100 * kG, 0, 0);
+    s.step();
+  }
+  Scene::position(b, p1);
+  return p1[0] - p0[0];
+}
+
+}  // namespace
+
+TEST(Pgs, FrictionHoldsBelowItsBoundAndSlidesAboveIt) {
+  // A contact's two friction rows are updated together while their step
+  // stays inside both boxes (static friction) and row by row when a box
+  // binds (sliding): both branches, against the exact solver and the
+  // closed form. Below mu m g the cube stays. Above it the friction force
+  // lies between mu m g (a tangent along the push) and sqrt(2) mu m g (the
+  // box cone's corner); from rest, 60 steps of constant acceleration a
+  // move the cube a h^2 (1 + ... + 60) = a (61 / 120) s^2.
+  const MeReal held = Pushed(MdtKeaMethodPGS, (MeReal)0.3);
+  const MeReal slid = Pushed(MdtKeaMethodPGS, (MeReal)0.9);
+  const MeReal heldExact = Pushed(MdtKeaMethodActiveSet, (MeReal)0.3);
+  const MeReal slidExact = Pushed(MdtKeaMethodActiveSet, (MeReal)0.9);
+  std::printf("held %.3g m (exact %.3g), slid %.5f m (exact %.5f)\n", (double)held, (double)heldExact,
+              (double)slid, (double)slidExact);
+  EXPECT_LT(std::fabs(held), 1e-4);
+  EXPECT_LT(std::fabs(held - heldExact), 1e-4);
+  const double most = (0.9 - 0.5) * kG * 61 / 120, least = (0.9 - std::sqrt(2.0) * 0.5) * kG * 61 / 120;
+  EXPECT_GT(slid, least * 0.999);
+  EXPECT_LT(slid, most * 1.001);
+  EXPECT_NEAR(slid, slidExact, 1e-3 * slid);
+}
