@@ -96,6 +96,17 @@ void EliminateSmallLcpFullSet(const MeReal *A, int k, SmallLcpFullSet &full) {
       full.m[r][a] = f;
     }
   }
+  for (int c = 0; c < k; ++c) {
+    MeReal y[kSmallLcpMax] = {};
+    y[c] = 1;
+    for (int a = 0; a < k; ++a)
+      for (int r = a + 1; r < k; ++r) y[r] -= full.m[r][a] * y[a];
+    for (int a = k - 1; a >= 0; --a) {
+      MeReal v = y[a];
+      for (int b = a + 1; b < k; ++b) v -= full.m[a][b] * full.inverse[b][c];
+      full.inverse[a][c] = v / full.m[a][a];
+    }
+  }
 }
 
 bool SolveSmallLcp(const MeReal *A, const SmallLcpFullSet &full, const MeReal *q, const MeReal *lo, int k, MeReal *x) {

@@ -25,8 +25,9 @@ bool SolveSmallLcp(const MeReal *A, const MeReal *q, const MeReal *lo, int k, Me
 // row free (a face at rest) only the right-hand side's work. The arithmetic
 // and its order are SolveSmallLcp's, so the answers are bit-identical.
 struct SmallLcpFullSet {
-  bool ok = false;                            // every pivot positive
-  MeReal m[kSmallLcpMax][kSmallLcpMax] = {};  // pivots and U above, multipliers below
+  bool ok = false;                                  // every pivot positive
+  MeReal m[kSmallLcpMax][kSmallLcpMax] = {};        // pivots and U above, multipliers below
+  MeReal inverse[kSmallLcpMax][kSmallLcpMax] = {};  // A^-1 (when ok), column c from the elimination of e_c
 };
 void EliminateSmallLcpFullSet(const MeReal *A, int k, SmallLcpFullSet &full);
 // SolveSmallLcp with the full set's elimination made by

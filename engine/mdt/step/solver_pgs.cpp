@@ -360,7 +360,7 @@ void bounds(const PgsRow &r, std::span<const MeReal> lambda, MeReal &lo, MeReal 
 }
 
 // w_i = J_i dv + (softness_i lambda_i - rhs_i).
-MeReal rowSlack(const PgsRow &r, const MeReal *dv, MeReal lambda) {
+[[gnu::always_inline]] inline MeReal rowSlack(const PgsRow &r, const MeReal *dv, MeReal lambda) {
   return rowVelocity(r, dv) + (r.softness * lambda - r.rhs);
 }
 
@@ -390,7 +390,8 @@ MeReal update(Workspace &w, std::span<MeReal> lambda, int i) {
 
 // One exact update of normal block b: the k rows' impulses x together
 // solve the small LCP  w' = w + A_bb (x - lambda_b) = A_bb x - q >= 0,
-// x >= lo, complementary (small_lcp.h). Returns the largest velocity
+// x >= lo, complementary: x = lambda - A_bb^-1 w when that is above lo
+// (every row free), else by small_lcp.h. Returns the largest velocity
 // change, or -1 when no set fits (rounding): the caller then updates row by
 // row.
 MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int b) {
@@ -403,14 +404,26 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
     lam[i] = lambda[(size_t)rows[i]];
     lo[i] = p.lo[(size_t)rows[i]];
   }
+  MeReal slack[kMaxBlock] = {}, x[kMaxBlock] = {};
+  for (int i = 0; i < k; ++i) slack[i] = rowSlack(w.row[(size_t)rows[i]], w.dv.data(), lam[i]);
+  // Every row free (a face at rest): x = lambda - A_bb^-1 w, the slacks
+  // multiplied by the kept inverse side by side, no chain of divisions.
+  const SmallLcpFullSet &full = w.blockFull[(size_t)b];
   for (int i = 0; i < k; ++i) {
-    const MeReal slack = rowSlack(w.row[(size_t)rows[i]], w.dv.data(), lam[i]);
-    // w' = A x - q with q = A lambda - w.
-    q[i] = -slack;
-    for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
+    MeReal step = 0;
+    for (int j = 0; j < k; ++j) step += full.inverse[i][j] * slack[j];
+    x[i] = lam[i] - step;
   }
-  MeReal x[kMaxBlock] = {};
-  if (!SolveSmallLcp(A, w.blockFull[(size_t)b], q, lo, k, x)) return -1;
+  bool fits = full.ok;
+  for (int i = 0; i < k; ++i) fits = fits && x[i] >= lo[i];
+  if (!fits) {
+    // w' = A x - q with q = A lambda - w.
+    for (int i = 0; i < k; ++i) {
+      q[i] = -slack[i];
+      for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
+    }
+    if (!SolveSmallLcp(A, full, q, lo, k, x)) return -1;
+  }
   MeReal biggest = 0;
   for (int i = 0; i < k; ++i) {
     lambda[(size_t)rows[i]] = x[i];

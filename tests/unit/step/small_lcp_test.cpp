@@ -72,6 +72,31 @@ TEST(SmallLcp, AnswersMeetTheConditionsAndThePreEliminatedSolveGivesTheSameBits)
   EXPECT_GT(allFree, 200);
 }
 
+TEST(SmallLcp, TheKeptInverseIsTheInverse) {
+  // A^-1 A = I to a few hundred units of rounding (A = B B^T + 0.1 I:
+  // the largest entry of the difference seen is 1.4e-6 in single and
+  // 3.6e-15 in double precision).
+  std::mt19937 rng(11);
+  const double tol = sizeof(MeReal) == 4 ? 2e-5 : 5e-14;
+  double worst = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int k = 1 + trial % kSmallLcpMax;
+    MeReal A[kSmallLcpMax * kSmallLcpMax] = {};
+    RandomSpd(rng, k, A);
+    SmallLcpFullSet full;
+    EliminateSmallLcpFullSet(A, k, full);
+    ASSERT_TRUE(full.ok);
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j) {
+        double e = 0;
+        for (int l = 0; l < k; ++l) e += (double)full.inverse[i][l] * (double)A[l * kStride + j];
+        EXPECT_NEAR(e, i == j ? 1.0 : 0.0, tol) << "trial " << trial << " (" << i << ", " << j << ")";
+        worst = std::max(worst, std::fabs(e - (i == j ? 1.0 : 0.0)));
+      }
+  }
+  std::printf("largest |A^-1 A - I| entry: %.3g\n", worst);
+}
+
 TEST(SmallLcp, AMatrixWithANonPositivePivotIsNotPreEliminated) {
   const MeReal A[kSmallLcpMax * kSmallLcpMax] = {1, 2, 0, 0, 2, 1};  // 2 x 2, indefinite
   SmallLcpFullSet full;
