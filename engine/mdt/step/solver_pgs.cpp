@@ -52,10 +52,15 @@
 //
 // Arithmetic for speed: a sweep is one chain of dependent updates (each
 // row reads the dv the previous one wrote), so its time is the latency of
-// one update, not its flops. The update multiplies by 1 / d_i, kept per
-// row, instead of dividing; six-term dots add in pairs, a tree three
-// additions deep; the part of the slack that does not depend on dv
-// (softness_i lambda_i - rhs_i) is added to J_i dv last.
+// one update and the instructions it issues. Each side of a row and each
+// body's dv is a lin, ang pair of four-lane vectors ({x, y, z, 0}), so J_i dv
+// is four lane products, two lane sums and one sum of four lanes, and a
+// push four lane multiply-adds; a static side reads and writes a zero slot
+// instead of being tested for. The update multiplies by 1 / d_i, kept per
+// row, instead of dividing; the part of the slack that does not depend on
+// dv (softness_i lambda_i - rhs_i) is added to J_i dv last. A contact's two
+// friction rows and a face's normal rows compute their slacks from the
+// same dv, side by side (FrictionPair, updateBlock).
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -85,16 +90,32 @@ constexpr int kMaxEnvelopePerRow = 8;
 constexpr int kJointBlockRow = -2;
 constexpr int kJointBlockVisit = INT_MIN;
 
+// Four lanes: one side's linear or angular part of a row, or one body's
+// dv, as {x, y, z, 0}. A row's J dv and its push run in lanes; the lanes
+// of a sum are added as (l0 + l2) + (l1 + l3) (sum4), the same bits on
+// every machine (element-wise operations, no contraction).
+using Lane4 = MeReal __attribute__((vector_size(4 * sizeof(MeReal))));
+
+MeReal sum4(Lane4 v) { return (v[0] + v[2]) + (v[1] + v[3]); }
+
 // What one row's update reads, in one record (the problem's arrays are
-// one per field): its Jacobian and M^-1 J^T per side (lin, ang), the offsets
-// of its bodies' dv (-1: static), d_i, and its bounds or its normal row.
+// one per field): its Jacobian and M^-1 J^T per side (lin, ang: J[2 s],
+// J[2 s + 1]), where its bodies' dv are (dv0, dv1: Lane4 offsets in
+// Workspace::dv; a static side has the zero slot, and zero M^-1 J^T, so
+// that the update needs no test), the bodies themselves (-1: static), d_i,
+// and its bounds or its normal row.
 struct PgsRow {
-  MeReal J[12];
-  MeReal mj[12];
+  Lane4 J[4];
+  Lane4 mj[4];
   int dv0, dv1;
+  int body0, body1;
   MeReal diag, invDiag, softness, rhs, lo, hi, mu;  // invDiag = 1 / diag, 0 for a null row
   int normal;                                       // a friction row's normal row, else -1
 };
+
+// J_side . (M^-1 J^T)_side of two rows' sides (a and m point at a lin, ang
+// pair).
+MeReal sideDot(const Lane4 *a, const Lane4 *m) { return sum4(a[0] * m[0] + a[1] * m[1]); }
 
 // The equality rows and their factorised K (see the top).
 struct JointBlock {
@@ -121,7 +142,7 @@ struct FrictionPair {
 
 struct Workspace {
   std::span<PgsRow> row;                 // per row
-  std::span<MeReal> dv;                  // 6 per body: linear, angular
+  std::span<Lane4> dv;                   // 2 per body (linear, angular), then the zero slot
   std::span<int> block;                  // per row: its normal block, kJointBlockRow, or -1
   std::span<MeReal> blockA;              // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
   std::span<SmallLcpFullSet> blockFull;  // per qualifying block: A_bb's elimination with every row free
@@ -166,12 +187,8 @@ void prepareBlocks(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
       w.block[(size_t)ri] = b;
       for (int j = 0; j < k; ++j) {
         const int rj = p.normalRows[(size_t)(first + j)];
-        const MeReal *J = &p.J[(size_t)ri * 12];
-        const MeReal *mj = w.row[(size_t)rj].mj;
-        MeReal a = i == j ? p.softness[(size_t)ri] : 0;
-        if (p.body0[(size_t)ri] >= 0) a += dot6(J, mj);
-        if (p.body1[(size_t)ri] >= 0) a += dot6(J + 6, mj + 6);
-        A[i * kMaxBlock + j] = a;
+        const PgsRow &a = w.row[(size_t)ri], &c = w.row[(size_t)rj];
+        A[i * kMaxBlock + j] = (i == j ? a.softness : 0) + sideDot(a.J, c.mj) + sideDot(a.J + 2, c.mj + 2);
       }
     }
     EliminateSmallLcpFullSet(A, k, w.blockFull[(size_t)b]);
@@ -182,11 +199,11 @@ bool isEquality(const PgsRow &r) { return r.normal < 0 && r.lo <= -MEINFINITY &&
 
 // K_ac for rows a and c: J_a M^-1 J_c^T over the bodies they share.
 MeReal coupling(const PgsRow &a, const PgsRow &c) {
-  const int aBody[2] = {a.dv0, a.dv1}, cBody[2] = {c.dv0, c.dv1};
+  const int aBody[2] = {a.body0, a.body1}, cBody[2] = {c.body0, c.body1};
   MeReal k = 0;
   for (int s = 0; s < 2; ++s)
     for (int t = 0; t < 2; ++t)
-      if (aBody[s] >= 0 && aBody[s] == cBody[t]) k += dot6(a.J + 6 * s, c.mj + 6 * t);
+      if (aBody[s] >= 0 && aBody[s] == cBody[t]) k += sideDot(a.J + 2 * s, c.mj + 2 * t);
   return k;
 }
 
@@ -203,9 +220,9 @@ bool layOutJointBlock(const BodySpaceProblem &p, Workspace &w, StepArena &arena)
   for (int e = 0; e < m; ++e) {
     const PgsRow &r = w.row[(size_t)jb.rows[(size_t)e]];
     int first = e;
-    for (int dv : {r.dv0, r.dv1}) {
-      if (dv < 0) continue;
-      int &f = bodyFirst[(size_t)(dv / 6)];
+    for (int body : {r.body0, r.body1}) {
+      if (body < 0) continue;
+      int &f = bodyFirst[(size_t)body];
       if (f < 0) f = e;
       first = std::min(first, f);
     }
@@ -304,18 +321,30 @@ void prepareSchedules(const BodySpaceProblem &p, Workspace &w, StepArena &arena)
       w, rows, p.blockCount, [&](int k) { return rows - 1 - k; }, w.backward, seen));
 }
 
+// Six values as a lin, ang pair of lanes.
+void toLanes(const MeReal *six, Lane4 *out) {
+  out[0] = Lane4{six[0], six[1], six[2], 0};
+  out[1] = Lane4{six[3], six[4], six[5], 0};
+}
+
 PgsRow gatherRow(const BodySpaceProblem &p, int i) {
   PgsRow r{};
   const size_t k = (size_t)i;
-  std::copy_n(&p.J[k * 12], 12, r.J);
-  r.dv0 = p.body0[k] >= 0 ? p.body0[k] * 6 : -1;
-  r.dv1 = p.body1[k] >= 0 ? p.body1[k] * 6 : -1;
+  r.body0 = p.body0[k];
+  r.body1 = p.body1[k];
+  const int zeroSlot = 2 * p.bodyCount;
+  r.dv0 = r.body0 >= 0 ? 2 * r.body0 : zeroSlot;
+  r.dv1 = r.body1 >= 0 ? 2 * r.body1 : zeroSlot;
   MeReal d = p.softness[k];
-  const int bodies[2] = {p.body0[k], p.body1[k]};
+  const int bodies[2] = {r.body0, r.body1};
   for (int side = 0; side < 2; ++side) {
-    if (bodies[side] < 0) continue;
-    sideMinvJt(p, i, side, r.mj + side * 6);
-    d += dot6(r.J + side * 6, r.mj + side * 6);
+    const MeReal *J = &p.J[k * 12 + (size_t)side * 6];
+    toLanes(J, r.J + 2 * side);
+    if (bodies[side] < 0) continue;  // mj stays zero
+    MeReal mj[6];
+    sideMinvJt(p, i, side, mj);
+    toLanes(mj, r.mj + 2 * side);
+    d += dot6(J, mj);
   }
   r.diag = d;
   r.invDiag = d > 0 ? 1 / d : 0;
@@ -331,7 +360,7 @@ PgsRow gatherRow(const BodySpaceProblem &p, int i) {
 Workspace prepare(const BodySpaceProblem &p, StepArena &arena) {
   Workspace w;
   w.row = arena.take<PgsRow>((size_t)p.rowCount);
-  w.dv = arena.filled<MeReal>((size_t)p.bodyCount * 6, 0);
+  w.dv = arena.filled<Lane4>((size_t)p.bodyCount * 2 + 2, Lane4{0, 0, 0, 0});
   for (int i = 0; i < p.rowCount; ++i) w.row[(size_t)i] = gatherRow(p, i);
   prepareBlocks(p, w, arena);
   prepareJointBlock(p, w, arena);
@@ -352,24 +381,23 @@ void bounds(const PgsRow &r, std::span<const MeReal> lambda, MeReal &lo, MeReal 
 }
 
 // J_i dv.
-[[gnu::always_inline]] inline MeReal rowVelocity(const PgsRow &r, const MeReal *dv) {
-  MeReal v = 0;
-  if (r.dv0 >= 0) v += dot6(r.J, dv + r.dv0);
-  if (r.dv1 >= 0) v += dot6(r.J + 6, dv + r.dv1);
-  return v;
+[[gnu::always_inline]] inline MeReal rowVelocity(const PgsRow &r, const Lane4 *dv) {
+  const Lane4 *a = dv + r.dv0, *b = dv + r.dv1;
+  return sum4((r.J[0] * a[0] + r.J[1] * a[1]) + (r.J[2] * b[0] + r.J[3] * b[1]));
 }
 
 // w_i = J_i dv + (softness_i lambda_i - rhs_i).
-[[gnu::always_inline]] inline MeReal rowSlack(const PgsRow &r, const MeReal *dv, MeReal lambda) {
+[[gnu::always_inline]] inline MeReal rowSlack(const PgsRow &r, const Lane4 *dv, MeReal lambda) {
   return rowVelocity(r, dv) + (r.softness * lambda - r.rhs);
 }
 
-// dv += M^-1 J_i^T * delta.
-void push(const PgsRow &r, MeReal *dv, MeReal delta) {
-  if (r.dv0 >= 0)
-    for (int k = 0; k < 6; ++k) dv[r.dv0 + k] += r.mj[k] * delta;
-  if (r.dv1 >= 0)
-    for (int k = 0; k < 6; ++k) dv[r.dv1 + k] += r.mj[6 + k] * delta;
+// dv += M^-1 J_i^T * delta (a static side adds zeros to the zero slot).
+void push(const PgsRow &r, Lane4 *dv, MeReal delta) {
+  Lane4 *a = dv + r.dv0, *b = dv + r.dv1;
+  a[0] += r.mj[0] * delta;
+  a[1] += r.mj[1] * delta;
+  b[0] += r.mj[2] * delta;
+  b[1] += r.mj[3] * delta;
 }
 
 // One Gauss-Seidel update of row i; returns the velocity change it made.
@@ -377,7 +405,7 @@ MeReal update(Workspace &w, std::span<MeReal> lambda, int i) {
   const PgsRow &r = w.row[(size_t)i];
   const MeReal d = r.diag;
   if (!(d > 0)) return 0;  // a null row: nothing to gain from it
-  MeReal *dv = w.dv.data();
+  Lane4 *dv = w.dv.data();
   const MeReal slack = rowSlack(r, dv, lambda[(size_t)i]);
   MeReal lo, hi;
   bounds(r, lambda, lo, hi);
@@ -461,7 +489,7 @@ MeReal updatePair(Workspace &w, std::span<MeReal> lambda, int f) {
   const FrictionPair &pair = w.pairs[(size_t)f];
   const int i = pair.first;
   const PgsRow &a = w.row[(size_t)i], &c = w.row[(size_t)i + 1];
-  MeReal *dv = w.dv.data();
+  Lane4 *dv = w.dv.data();
   const MeReal la = lambda[(size_t)i], lc = lambda[(size_t)i + 1];
   const MeReal sa = rowSlack(a, dv, la), sc = rowSlack(c, dv, lc);
   const MeReal xa = la - (pair.invK11 * sa + pair.invK12 * sc);

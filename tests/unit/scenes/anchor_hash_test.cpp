@@ -37,7 +37,7 @@ constexpr PinnedHash kPinned[] = {
     {"topple",   600,  "0xd2fc6524fafb8323", "0x615bbc80a9473ef3"},
     {"ragdoll",  600,  "0x3a8a2ed4376e4cf9", "0xaf732a033cbb167a"},
     {"stack21",  1200, "0xe715c5150750f0f6", "0x45e6f28055330b5b"},
-    {"pile1000", 60,   "0x64daa4539f5272dc", "0x9039aa5eb063c6ed"},
+    {"pile1000", 60,   "0xe5561d020da08840", "0x84979a1f964ad252"},
 };
 // clang-format on
 
