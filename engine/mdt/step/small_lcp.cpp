@@ -33,8 +33,9 @@ bool solveSubset(const MeReal *A, int k, unsigned mask, MeReal *y) {
   return true;
 }
 
-// x for free set `mask` (clamped rows at lo); true if it fits the LCP.
-bool trySet(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned mask, MeReal *x) {
+// x for free set `mask` (clamped rows at lo); false when the elimination
+// breaks down.
+bool solveSet(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned mask, MeReal *x) {
   for (int i = 0; i < k; ++i) {
     x[i] = q[i];
     if (!(mask & (1u << i))) continue;
@@ -43,29 +44,47 @@ bool trySet(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned 
   }
   for (int i = 0; i < k; ++i)
     if (!(mask & (1u << i))) x[i] = lo[i];
-  if (!solveSubset(A, k, mask, x)) return false;
+  return solveSubset(A, k, mask, x);
+}
+
+// The set each row of solveSet's x wants: a free row stays free while
+// x_i >= lo_i, a clamped row stays clamped while w_i >= 0. x fits the LCP
+// when this is `mask` itself.
+unsigned wantedSet(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned mask, const MeReal *x) {
+  unsigned wanted = 0;
   for (int i = 0; i < k; ++i) {
+    bool free;
     if (mask & (1u << i)) {
-      if (!(x[i] >= lo[i])) return false;
+      free = x[i] >= lo[i];
     } else {
       MeReal wi = -q[i];
       for (int j = 0; j < k; ++j) wi += A[i * kStride + j] * x[j];
-      if (!(wi >= 0)) return false;
+      free = !(wi >= 0);
     }
+    wanted |= free ? 1u << i : 0u;
   }
-  return true;
+  return wanted;
+}
+
+// x for free set `mask`; true if it fits the LCP.
+bool trySet(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned mask, MeReal *x) {
+  return solveSet(A, q, lo, k, mask, x) && wantedSet(A, q, lo, k, mask, x) == mask;
 }
 
 }  // namespace
 
 namespace {
 
+// The free rows of each set of at most kSmallLcpMax rows.
+constexpr unsigned char kFreeRows[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+static_assert(kSmallLcpMax <= 4);
+
 // The sets after the full one, in SolveSmallLcp's order.
 bool tryPartialSets(const MeReal *A, const MeReal *q, const MeReal *lo, int k, MeReal *x) {
   const unsigned all = (1u << k) - 1;
   for (int freeCount = k - 1; freeCount >= 0; --freeCount) {
     for (unsigned mask = all;; --mask) {
-      if (__builtin_popcount(mask) == freeCount && trySet(A, q, lo, k, mask, x)) return true;
+      if (kFreeRows[mask] == freeCount && trySet(A, q, lo, k, mask, x)) return true;
       if (mask == 0) break;
     }
   }
@@ -107,6 +126,22 @@ void EliminateSmallLcpFullSet(const MeReal *A, int k, SmallLcpFullSet &full) {
       full.inverse[a][c] = v / full.m[a][a];
     }
   }
+}
+
+bool SolveSmallLcpAfterFull(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned guess, MeReal *x) {
+  const unsigned all = (1u << k) - 1;
+  guess &= all;
+  // Block pivots from the guess (each row moves to the set it wants), a
+  // few at most: for a face that lifts or lands they find the set in one
+  // or two solves where the fixed order tries up to 2^k.
+  unsigned mask = guess;
+  for (int round = 0; round < kSmallLcpMax && mask != all; ++round) {
+    if (!solveSet(A, q, lo, k, mask, x)) break;
+    const unsigned wanted = wantedSet(A, q, lo, k, mask, x);
+    if (wanted == mask) return true;
+    mask = wanted;
+  }
+  return tryPartialSets(A, q, lo, k, x);
 }
 
 bool SolveSmallLcp(const MeReal *A, const SmallLcpFullSet &full, const MeReal *q, const MeReal *lo, int k, MeReal *x) {

@@ -33,5 +33,11 @@ void EliminateSmallLcpFullSet(const MeReal *A, int k, SmallLcpFullSet &full);
 // SolveSmallLcp with the full set's elimination made by
 // EliminateSmallLcpFullSet on the same A.
 bool SolveSmallLcp(const MeReal *A, const SmallLcpFullSet &full, const MeReal *q, const MeReal *lo, int k, MeReal *x);
+// SolveSmallLcp for a caller that has found the set with every row free
+// not to fit: from the free set `guess` (a bit per row), a few block
+// pivots (every row moved to the set its answer wants) before the fixed
+// order. The answer being unique, the guess changes only how many sets are
+// tried (a good one: the rows the all-free answer left above their bound).
+bool SolveSmallLcpAfterFull(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned guess, MeReal *x);
 
 }  // namespace karma::mdt

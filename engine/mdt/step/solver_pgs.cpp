@@ -445,12 +445,15 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
   bool fits = full.ok;
   for (int i = 0; i < k; ++i) fits = fits && x[i] >= lo[i];
   if (!fits) {
-    // w' = A x - q with q = A lambda - w.
+    // w' = A x - q with q = A lambda - w; the rows the all-free step left
+    // above their bound are the first guess of the free set.
+    unsigned guess = 0;
+    for (int i = 0; i < k; ++i) guess |= full.ok && x[i] > lo[i] ? 1u << i : 0u;
     for (int i = 0; i < k; ++i) {
       q[i] = -slack[i];
       for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
     }
-    if (!SolveSmallLcp(A, full, q, lo, k, x)) return -1;
+    if (!(full.ok ? SolveSmallLcpAfterFull(A, q, lo, k, guess, x) : SolveSmallLcp(A, full, q, lo, k, x))) return -1;
   }
   MeReal biggest = 0;
   for (int i = 0; i < k; ++i) {

@@ -15,6 +15,7 @@ using karma::mdt::EliminateSmallLcpFullSet;
 using karma::mdt::kSmallLcpMax;
 using karma::mdt::SmallLcpFullSet;
 using karma::mdt::SolveSmallLcp;
+using karma::mdt::SolveSmallLcpAfterFull;
 
 constexpr int kStride = kSmallLcpMax;
 
@@ -95,6 +96,33 @@ TEST(SmallLcp, TheKeptInverseIsTheInverse) {
       }
   }
   std::printf("largest |A^-1 A - I| entry: %.3g\n", worst);
+}
+
+TEST(SmallLcp, AGuessedFreeSetChangesNoBitOfTheAnswer) {
+  // The answer is unique, so whichever set is tried first, the one that
+  // fits is the same and gives the same bits; every guess is tried on
+  // problems whose answer clamps some row (the all-free set does not fit).
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const int k = 1 + trial % kSmallLcpMax;
+    MeReal A[kSmallLcpMax * kSmallLcpMax] = {}, q[kSmallLcpMax] = {}, lo[kSmallLcpMax] = {};
+    RandomSpd(rng, k, A);
+    for (int i = 0; i < k; ++i) q[i] = (MeReal)u(rng);
+    MeReal x[kSmallLcpMax] = {};
+    ASSERT_TRUE(SolveSmallLcp(A, q, lo, k, x));
+    bool clamped = false;
+    for (int i = 0; i < k; ++i) clamped = clamped || x[i] == lo[i];
+    if (!clamped) continue;
+    ++checked;
+    for (unsigned guess = 0; guess < (1u << k); ++guess) {
+      MeReal y[kSmallLcpMax] = {};
+      ASSERT_TRUE(SolveSmallLcpAfterFull(A, q, lo, k, guess, y));
+      for (int i = 0; i < k; ++i) EXPECT_EQ(y[i], x[i]) << "trial " << trial << " guess " << guess << " row " << i;
+    }
+  }
+  EXPECT_GT(checked, 300);
 }
 
 TEST(SmallLcp, AMatrixWithANonPositivePivotIsNotPreEliminated) {
