@@ -1,7 +1,7 @@
 // anchor_scene_trace.cpp: what the solver did at each step of an anchor
 // scene (MdtWorldGetStepStats), one line per step, for reading a scene's
 // cost rather than timing it:
-//   build/bench/bench/anchor_scene_trace stack21 [FIRST [LAST]]
+//   build/bench/bench/anchor_scene_trace stack21 [FIRST [LAST]]   (also pile10k, not an anchor scene)
 // prints steps FIRST..LAST-1 (default: the whole run), after a comment line
 // naming the platform backend the scene's world steps on (KARMA_PLATFORM
 // chooses it). `--iterative-rows N` (anywhere after the scene) sets the
@@ -32,9 +32,10 @@ int main(int argc, char **argv) {
                                        : !std::strcmp(name, "stack21")  ? MakeStack21()
                                        : !std::strcmp(name, "ragdoll")  ? MakeRagdoll()
                                        : !std::strcmp(name, "pile1000") ? MakePile1000()
+                                       : !std::strcmp(name, "pile10k")  ? MakePile10k()
                                                                         : nullptr;
   if (!scene) {
-    std::fprintf(stderr, "usage: %s car|topple|stack21|ragdoll|pile1000 [FIRST [LAST]] [--iterative-rows N]\n",
+    std::fprintf(stderr, "usage: %s car|topple|stack21|ragdoll|pile1000|pile10k [FIRST [LAST]] [--iterative-rows N]\n",
                  argv[0]);
     return 2;
   }

@@ -229,5 +229,6 @@ std::unique_ptr<AnchorScene> MakeTopple() { return std::make_unique<AnchorScene>
 std::unique_ptr<AnchorScene> MakeStack21() { return std::make_unique<AnchorScene>(Stack21Spec()); }
 std::unique_ptr<AnchorScene> MakeRagdoll() { return std::make_unique<AnchorScene>(RagdollSpec()); }
 std::unique_ptr<AnchorScene> MakePile1000() { return std::make_unique<AnchorScene>(Pile1000Spec()); }
+std::unique_ptr<AnchorScene> MakePile10k() { return std::make_unique<AnchorScene>(Pile10kSpec()); }
 
 }  // namespace karma::scenes

@@ -79,6 +79,7 @@ std::unique_ptr<AnchorScene> MakeTopple();
 std::unique_ptr<AnchorScene> MakeStack21();
 std::unique_ptr<AnchorScene> MakeRagdoll();
 std::unique_ptr<AnchorScene> MakePile1000();
+std::unique_ptr<AnchorScene> MakePile10k();  // not an anchor scene: issue 14's large pile (scene_spec.h)
 
 // Deepest penetration over the enabled contacts of the models' bodies.
 double DeepestPenetration(const std::vector<McdModelID> &models);
