@@ -283,9 +283,9 @@ void prepareFrictionPairs(const BodySpaceProblem &p, Workspace &w, StepArena &ar
 }
 
 // The visits of one sweep through `rows` rows in the order `rowAt(n)`
-// gives: each row alone, or its normal block, or the joint block, the
-// first time the sweep meets one of the block's rows. Returns the visits
-// written.
+// gives: each row alone, or its normal block, friction pair or the joint
+// block, the first time the sweep meets one of its rows. Returns the
+// visits written.
 template <class RowAt>
 int schedule(const Workspace &w, int rows, int blockCount, RowAt rowAt, std::span<int> out,
              std::span<unsigned char> seen) {
