@@ -261,25 +261,19 @@ void prepareJointBlock(const BodySpaceProblem &p, Workspace &w, StepArena &arena
 // nearly diagonal).
 void prepareFrictionPairs(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
   w.pair = arena.filled<int>((size_t)p.rowCount, -1);
-  int count = 0;
-  auto pairs = [&](auto found) {
-    for (int i = 0; i + 1 < p.rowCount; ++i) {
-      const PgsRow &a = w.row[(size_t)i], &c = w.row[(size_t)i + 1];
-      if (a.normal < 0 || c.normal != a.normal || a.dv0 != c.dv0 || a.dv1 != c.dv1) continue;
-      if (w.block[(size_t)i] != -1 || w.block[(size_t)i + 1] != -1 || !(a.diag > 0) || !(c.diag > 0)) continue;
-      const MeReal k = coupling(a, c), det = a.diag * c.diag - k * k;
-      if (!(det > 64 * ME_REAL_EPSILON * a.diag * c.diag)) continue;
-      found(i, k, det);
-      ++i;
-    }
-  };
-  pairs([&](int, MeReal, MeReal) { ++count; });
-  w.pairs = arena.take<FrictionPair>((size_t)count);
-  int f = 0;
-  pairs([&](int i, MeReal k, MeReal det) {
-    w.pairs[(size_t)f] = {i, w.row[(size_t)i + 1].diag / det, -k / det, w.row[(size_t)i].diag / det};
-    w.pair[(size_t)i] = w.pair[(size_t)i + 1] = f++;
-  });
+  w.pairs = arena.take<FrictionPair>((size_t)p.rowCount / 2);  // a pair takes two rows
+  size_t count = 0;
+  for (int i = 0; i + 1 < p.rowCount; ++i) {
+    const PgsRow &a = w.row[(size_t)i], &c = w.row[(size_t)i + 1];
+    if (a.normal < 0 || c.normal != a.normal || a.dv0 != c.dv0 || a.dv1 != c.dv1) continue;
+    if (w.block[(size_t)i] != -1 || w.block[(size_t)i + 1] != -1 || !(a.diag > 0) || !(c.diag > 0)) continue;
+    const MeReal k = coupling(a, c), det = a.diag * c.diag - k * k;
+    if (!(det > 64 * ME_REAL_EPSILON * a.diag * c.diag)) continue;
+    w.pairs[count] = {i, c.diag / det, -k / det, a.diag / det};
+    w.pair[(size_t)i] = w.pair[(size_t)i + 1] = (int)count++;
+    ++i;
+  }
+  w.pairs = w.pairs.first(count);
 }
 
 // The visits of one sweep through `rows` rows in the order `rowAt(n)`
