@@ -15,7 +15,7 @@ namespace {
  * moment ago are what the factorisation is made of: a few partial sums
  * keep the chain from that term to the result short (docs/NOTES.md,
  * "Envelope recurrences"). */
-MeReal Dot4(const MeReal *a, const MeReal *b, int count) {
+[[gnu::always_inline]] inline MeReal Dot4(const MeReal *a, const MeReal *b, int count) {
   MeReal s0 = 0, s1 = 0, s2 = 0, s3 = 0;
   int k = 0;
   for (; k + 4 <= count; k += 4) {
@@ -60,13 +60,16 @@ bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> 
 
 void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> start, std::span<const MeReal> value,
                        std::span<MeReal> x) {
-  /* L y = rhs, row by row, each a running difference in ascending k. */
+  /* L y = rhs, row by row: y_i = (rhs_i - sum_{fi <= k < i-1} l_ik y_k) -
+   * l_i,i-1 y_{i-1}, the sum in Dot4's partial sums. Only the last term
+   * waits for the row before, so the chain from y_{i-1} to y_i is one
+   * product and one difference; the rest of the sum runs ahead of it. */
   for (int i = 0; i < m; ++i) {
     const int fi = first[static_cast<std::size_t>(i)];
+    if (fi == i) continue;
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
-    MeReal s = x[static_cast<std::size_t>(i)];
-    for (int k = fi; k < i; ++k) s -= rowI[k - fi] * x[static_cast<std::size_t>(k)];
-    x[static_cast<std::size_t>(i)] = s;
+    const MeReal ahead = x[static_cast<std::size_t>(i)] - Dot4(rowI, x.data() + fi, i - 1 - fi);
+    x[static_cast<std::size_t>(i)] = ahead - rowI[i - 1 - fi] * x[static_cast<std::size_t>(i) - 1];
   }
   /* D z = y */
   for (int i = 0; i < m; ++i)

@@ -22,8 +22,10 @@
  * the caller falls back to a least-squares solve.
  *
  * Order of the sums. Each u_ij is a_ij minus a four-lane dot product (term
- * k of the sum in partial sum k mod 4, the remainder in the first); each
- * unknown of the triangular solves is a running difference in ascending k.
+ * k of the sum in partial sum k mod 4, the remainder in the first). The
+ * forward solve's unknown y_i is rhs_i minus the same four-lane dot over
+ * every term but the last, then minus the last, l_i,i-1 y_{i-1}; the
+ * backward solve subtracts each solved unknown from the rows above it.
  * Both are recurrences: the last term of each sum was computed a moment
  * before, so what bounds their speed is the chain from that term to the
  * result, which these orders keep short; the eight-lane reductions of the

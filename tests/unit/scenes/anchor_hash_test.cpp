@@ -34,10 +34,10 @@ struct PinnedHash {
 // clang-format off
 constexpr PinnedHash kPinned[] = {
     {"car",      300,  "0x06adb4d0f5bd0888", "0xc5f9e6d2d605d049"},
-    {"topple",   600,  "0xd2fc6524fafb8323", "0x615bbc80a9473ef3"},
-    {"ragdoll",  600,  "0x3a8a2ed4376e4cf9", "0xaf732a033cbb167a"},
-    {"stack21",  1200, "0xe715c5150750f0f6", "0x45e6f28055330b5b"},
-    {"pile1000", 60,   "0xe5561d020da08840", "0x84979a1f964ad252"},
+    {"topple",   600,  "0xb234b6828a4d9aba", "0xda7bf17dccf89bda"},
+    {"ragdoll",  600,  "0xb35e2d5d06848ace", "0x16baeefa41e05f75"},
+    {"stack21",  1200, "0x8139d53cd4f0303f", "0xac97e6b52e3dbaa0"},
+    {"pile1000", 60,   "0x5cbc0709a782ce8d", "0x3687a33d95c512d2"},
 };
 // clang-format on
 
