@@ -16,6 +16,18 @@
 // them, sharing their two bodies) are updated together, exactly, as one
 // small LCP, so the corners of a face share the load symmetrically instead
 // of the first corner in the sweep taking it all (which tips a stack).
+// A persistent face's step is over-relaxed (block projected SOR): when
+// every row of the block was warm-started with a nonzero impulse (the face
+// carried load last step), with x the block's exact answer given the
+// current dv,
+//     lambda_b <- max(lo_b, lambda_b + kFaceRelaxation (x - lambda_b)).
+// In a resting stack the load travels one face per sweep, and each face
+// takes only the load it sees so far; stepping past it anticipates the
+// load still coming (for a symmetric positive definite A, projected SOR
+// converges for 0 < omega < 2: Cryer 1971). A new face (an impact) keeps
+// the plain step, as do point contacts, friction and joints: over-relaxing
+// those made the rag doll and the car take more sweeps (docs/NOTES.md,
+// "Over-relaxed faces").
 //
 // Joint block: the equality rows (unbounded, not friction: the rows of
 // joints and other bilateral constraints) are updated together, exactly,
@@ -79,6 +91,14 @@ MeReal defaultTolerance() { return sizeof(MeReal) == 4 ? (MeReal)1e-4 : (MeReal)
 
 // Contact normal blocks of at most this many rows are solved as one unit.
 constexpr int kMaxBlock = kSmallLcpMax;
+
+// The over-relaxation of a persistent face's step (see the top). Mean
+// sweeps per step with the iterative solver forced (anchor_scene_trace
+// --iterative-rows 1, every face over-relaxed): stack21 21.0 at 1.0, 12.4
+// at 1.4, 11.3 at 1.5, 9.8 at 1.6; topple 42.2, 34.0, 34.2, 35.9 (six
+// partitions), and more unconverged steps beyond 1.6. Persistent faces
+// only, at 1.5: stack21 11.1, topple 33.8.
+constexpr MeReal kFaceRelaxation = (MeReal)1.5;
 
 // The joint block's envelope may hold at most this many entries per row
 // on average: a chain of ball joints holds about 5, of hinges about 8; a
@@ -410,12 +430,19 @@ MeReal update(Workspace &w, std::span<MeReal> lambda, int i) {
   return std::fabs(next - old) * d;
 }
 
-// One exact update of normal block b: the k rows' impulses x together
-// solve the small LCP  w' = w + A_bb (x - lambda_b) = A_bb x - q >= 0,
-// x >= lo, complementary: x = lambda - A_bb^-1 w when that is above lo
-// (every row free), else by small_lcp.h. Returns the largest velocity
-// change, or -1 when no set fits (rounding): the caller then updates row by
-// row.
+// Whether every row of a block carried load last step (see the top).
+bool persistentFace(const BodySpaceProblem &p, const int *rows, int k) {
+  for (int i = 0; i < k; ++i)
+    if (p.warm[(size_t)rows[i]] == 0) return false;
+  return true;
+}
+
+// One update of normal block b: the k rows' impulses x together solve the
+// small LCP  w' = w + A_bb (x - lambda_b) = A_bb x - q >= 0, x >= lo,
+// complementary: x = lambda - A_bb^-1 w when that is above lo (every row
+// free), else by small_lcp.h; a persistent face then moves
+// kFaceRelaxation times as far, kept above lo. Returns the largest velocity change, or -1 when
+// no set fits (rounding): the caller then updates row by row.
 MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int b) {
   const int first = p.normalBlock[(size_t)b], k = p.normalBlock[(size_t)b + 1] - first;
   const MeReal *A = &w.blockA[(size_t)b * kMaxBlock * kMaxBlock];
@@ -449,6 +476,8 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
     }
     if (!(full.ok ? SolveSmallLcpAfterFull(A, q, lo, k, guess, x) : SolveSmallLcp(A, full, q, lo, k, x))) return -1;
   }
+  if (persistentFace(p, rows, k))
+    for (int i = 0; i < k; ++i) x[i] = std::max(lo[i], lam[i] + kFaceRelaxation * (x[i] - lam[i]));
   MeReal biggest = 0;
   for (int i = 0; i < k; ++i) {
     lambda[(size_t)rows[i]] = x[i];

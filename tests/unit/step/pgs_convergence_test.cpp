@@ -78,12 +78,13 @@ std::vector<MeReal> Errors(const Builder &build, int settle, const std::vector<i
 }
 
 // The checks: the fewest sweeps are measurably off (above `fewAbove`, so
-// the test can fail); the error never grows by more than 5% (Gauss-Seidel
-// decreases the error in A's energy norm, not in this max norm, so a sweep
-// may raise it a little) plus the floor below which both solvers' stopping
-// tolerances decide; the most sweeps end below `bound` and ten times below
-// the fewest.
-void ExpectConverges(const std::vector<int> &sweeps, const std::vector<MeReal> &errors, MeReal fewAbove, MeReal bound) {
+// the test can fail); from sweeps[monotoneFrom] on, the error never grows
+// by more than 5% (Gauss-Seidel decreases the error in A's energy norm,
+// not in this max norm, so a sweep may raise it a little) plus the floor
+// below which both solvers' stopping tolerances decide; the most sweeps
+// end below `bound` and ten times below the fewest.
+void ExpectConverges(const std::vector<int> &sweeps, const std::vector<MeReal> &errors, MeReal fewAbove, MeReal bound,
+                     size_t monotoneFrom = 1) {
   // PGS stops once a sweep changes no row velocity by more than its
   // tolerance (1e-4 in single precision, 1e-10 in double) relative to the
   // right-hand side, and Kea's tolerance is of the same order: below about
@@ -92,7 +93,7 @@ void ExpectConverges(const std::vector<int> &sweeps, const std::vector<MeReal> &
   const MeReal floor = sizeof(MeReal) == 4 ? (MeReal)1e-3 : (MeReal)1e-7;
   for (size_t i = 0; i < sweeps.size(); ++i) std::printf("%5d sweeps: %.3g g h\n", sweeps[i], (double)errors[i]);
   EXPECT_GT(errors.front(), fewAbove) << sweeps.front() << " sweeps already agree: the test could not fail";
-  for (size_t i = 1; i < errors.size(); ++i)
+  for (size_t i = monotoneFrom; i < errors.size(); ++i)
     EXPECT_LE(errors[i], errors[i - 1] * (MeReal)1.05 + floor) << sweeps[i] << " sweeps";
   EXPECT_LT(errors.back(), bound) << sweeps.back() << " sweeps";
   EXPECT_LT(errors.back(), errors.front() / 10) << sweeps.back() << " sweeps are not ten times better";
@@ -216,8 +217,12 @@ TEST(PgsConvergence, AJointedChainOnTheGroundApproachesTheExactImpulsesAsSweepsG
 
 TEST(PgsConvergence, ASmallPileApproachesTheExactImpulsesAsSweepsGrow) {
   // Step 13 of the drop: the bottom layer has landed and the layers above
-  // strike it, so the impulses differ much from the step before's.
-  ExpectConverges(kSweeps, Errors(Pile, 12, kSweeps), (MeReal)1, (MeReal)0.005);
+  // strike it, so the impulses differ much from the step before's. The
+  // landed layer's faces are persistent and over-relaxed (solver_pgs.cpp)
+  // while the striking ones are new: their second sweep may overshoot what
+  // the first left (single precision: 5.69 then 6.1 g h, where the plain
+  // step gave 5.96), so the error is checked to fall from 5 sweeps on.
+  ExpectConverges(kSweeps, Errors(Pile, 12, kSweeps), (MeReal)1, (MeReal)0.005, 2);
 }
 
 // A heap of 200 cubes of 0.5 m and 5 kg: a 5 x 8 x 5 lattice 0.7 m apart
@@ -302,6 +307,40 @@ TEST(PgsConvergence, ToppleStandsAtOddAndEvenSweepCountsAndDriftsLessWithMore) {
   // the drift is single precision's rounding, amplified by the sweeps'
   // bias; 0.1 mm is below what the comparison can tell apart.)
   EXPECT_LE(drift13, drift9 / 2 + 1e-4);
+}
+
+// stack21 (21 flat boxes, the anchor scene) through its 1200 steps with
+// every partition iterative: the mean sweeps per step, and the scene's
+// figures.
+struct SweepRun {
+  double meanSweeps = 0;
+  karma::scenes::SceneFigures figures;
+};
+SweepRun Stack21Iterative() {
+  auto scene = karma::scenes::MakeStack21();
+  MdtWorldSetKeaIterativeRows(scene->world(), 1);
+  long sweeps = 0;
+  for (int i = 0; i < scene->steps(); ++i) {
+    scene->step();
+    MdtWorldStepStats stats;
+    MdtWorldGetStepStats(scene->world(), &stats);
+    sweeps += stats.keaIterations;
+  }
+  return {(double)sweeps / scene->steps(), scene->finish()};
+}
+
+// The load of twenty boxes reaches the ground one face per sweep; the
+// persistent faces' over-relaxation (solver_pgs.cpp) carries it in about
+// half the sweeps the plain step takes, and the stack still stands within
+// the 5 mm of issue 14. Mean sweeps per step with the plain step and
+// over-relaxed: 21.0 and 11.1 in single precision, 21.1 and 12.1 in double.
+TEST(PgsConvergence, Stack21StandsOnFewerSweepsWithItsFacesOverRelaxed) {
+  const SweepRun run = Stack21Iterative();
+  std::printf("%.2f sweeps a step; %s\n", run.meanSweeps, run.figures.detail.c_str());
+  EXPECT_LT(run.meanSweeps, 15.0);
+  EXPECT_GT(run.meanSweeps, 2.0) << "a stack this tall cannot settle in a sweep or two";
+  EXPECT_TRUE(run.figures.stable()) << run.figures.detail;
+  EXPECT_LT(run.figures.drift, 0.005);
 }
 
 // Hash of the small pile's bodies after a second, with the given method.
