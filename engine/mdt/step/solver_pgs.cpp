@@ -96,7 +96,7 @@ constexpr int kMaxBlock = kSmallLcpMax;
 // sweeps per step with the iterative solver forced (anchor_scene_trace
 // --iterative-rows 1, every face over-relaxed): stack21 21.0 at 1.0, 12.4
 // at 1.4, 11.3 at 1.5, 9.8 at 1.6; topple 42.2, 34.0, 34.2, 35.9 (six
-// partitions), and more unconverged steps beyond 1.6. Persistent faces
+// partitions); beyond 1.6 topple's sweeps grow again. Persistent faces
 // only, at 1.5: stack21 11.1, topple 33.8.
 constexpr MeReal kFaceRelaxation = (MeReal)1.5;
 
