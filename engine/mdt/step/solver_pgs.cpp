@@ -441,8 +441,9 @@ bool persistentFace(const BodySpaceProblem &p, const int *rows, int k) {
 // small LCP  w' = w + A_bb (x - lambda_b) = A_bb x - q >= 0, x >= lo,
 // complementary: x = lambda - A_bb^-1 w when that is above lo (every row
 // free), else by small_lcp.h; a persistent face then moves
-// kFaceRelaxation times as far, kept above lo. Returns the largest velocity change, or -1 when
-// no set fits (rounding): the caller then updates row by row.
+// kFaceRelaxation times as far, kept above lo. Returns the largest
+// velocity change, or -1 when no set fits (rounding): the caller then
+// updates row by row.
 MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, int b) {
   const int first = p.normalBlock[(size_t)b], k = p.normalBlock[(size_t)b + 1] - first;
   const MeReal *A = &w.blockA[(size_t)b * kMaxBlock * kMaxBlock];
