@@ -24,7 +24,9 @@
 // In a resting stack the load travels one face per sweep, and each face
 // takes only the load it sees so far; stepping past it anticipates the
 // load still coming (for a symmetric positive definite A, projected SOR
-// converges for 0 < omega < 2: Cryer 1971). A new face (an impact) keeps
+// converges for 0 < omega < 2 row by row: Cryer 1971; for whole faces,
+// clamped row by row and coupled to friction, omega was chosen by
+// measurement, below). A new face (an impact) keeps
 // the plain step, as do point contacts, friction and joints: over-relaxing
 // those made the rag doll and the car take more sweeps (docs/NOTES.md,
 // "Over-relaxed faces").
@@ -430,7 +432,7 @@ MeReal update(Workspace &w, std::span<MeReal> lambda, int i) {
   return std::fabs(next - old) * d;
 }
 
-// Whether every row of a block carried load last step (see the top).
+// Whether every row of a block carried an impulse last step (see the top).
 bool persistentFace(const BodySpaceProblem &p, const int *rows, int k) {
   for (int i = 0; i < k; ++i)
     if (p.warm[(size_t)rows[i]] == 0) return false;
@@ -548,6 +550,25 @@ MeReal visit(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> lambda, 
   return biggest;
 }
 
+// Brings every friction row inside +-mu times its normal row's final
+// impulse (dv follows). A face's last visit in a sweep can lower its normal
+// impulses after its contacts' friction had their last visit (the schedule
+// meets a face at its first row, in either direction), so without this the
+// returned friction could exceed Coulomb's bound, up to friction at a
+// normal impulse of zero when few sweeps stop far from the answer.
+void projectFriction(Workspace &w, std::span<MeReal> lambda) {
+  for (size_t i = 0; i < w.row.size(); ++i) {
+    const PgsRow &r = w.row[i];
+    if (r.normal < 0) continue;
+    MeReal lo, hi;
+    bounds(r, lambda, lo, hi);
+    const MeReal old = lambda[i], next = std::clamp(old, lo, hi);
+    if (next == old) continue;
+    lambda[i] = next;
+    push(r, w.dv.data(), next - old);
+  }
+}
+
 // The contract's residual max_i |lambda_i - clamp(lambda_i - w_i, lo, hi)|.
 MeReal residual(const BodySpaceProblem &p, const Workspace &w, std::span<const MeReal> lambda) {
   MeReal worst = 0;
@@ -595,6 +616,7 @@ class PgsSolver final : public PartitionSolver {
       ++done;
       converged = biggest <= tol;
     }
+    projectFriction(w, lambda);
     report.iterations = done;
     report.residual = residual(p, w, lambda);
     report.solved = converged;

@@ -37,7 +37,7 @@ constexpr PinnedHash kPinned[] = {
     {"topple",   600,  "0xb234b6828a4d9aba", "0xda7bf17dccf89bda"},
     {"ragdoll",  600,  "0xb35e2d5d06848ace", "0x16baeefa41e05f75"},
     {"stack21",  1200, "0x8139d53cd4f0303f", "0xac97e6b52e3dbaa0"},
-    {"pile1000", 60,   "0x7d561676ae41da4a", "0xbed56e62f67a62e7"},
+    {"pile1000", 60,   "0x26bb6130ff6bce97", "0x8516bb52ec2396c2"},
 };
 // clang-format on
 
