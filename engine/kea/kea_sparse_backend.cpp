@@ -243,12 +243,13 @@ MeReal SparseBackend::productScale(const std::vector<int> &rows, std::span<const
     const auto i = U(rows[a]);
     /* Four partial sums (term k in sum k mod 4): a bound needs no order,
      * and one running sum would be a chain of additions. */
+    auto term = [&](int k) { return std::fabs(p.val[U(k)] * cgFull_[U(p.col[U(k)])]); };
     MeReal s[4] = {std::fabs(eps_ * x[a]), 0, 0, 0};
     const int end = p.rowStart[i + 1];
     int k = p.rowStart[i];
     for (; k + 4 <= end; k += 4)
-      for (int l = 0; l < 4; ++l) s[l] += std::fabs(p.val[U(k + l)] * cgFull_[U(p.col[U(k + l)])]);
-    for (; k < end; ++k) s[0] += std::fabs(p.val[U(k)] * cgFull_[U(p.col[U(k)])]);
+      for (int l = 0; l < 4; ++l) s[l] += term(k + l);
+    for (; k < end; ++k) s[0] += term(k);
     scale = std::max(scale, (s[0] + s[1]) + (s[2] + s[3]));
   }
   return scale;

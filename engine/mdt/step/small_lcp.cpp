@@ -71,10 +71,6 @@ bool trySet(const MeReal *A, const MeReal *q, const MeReal *lo, int k, unsigned 
   return solveSet(A, q, lo, k, mask, x) && wantedSet(A, q, lo, k, mask, x) == mask;
 }
 
-}  // namespace
-
-namespace {
-
 // The free rows of each set of at most kSmallLcpMax rows.
 constexpr unsigned char kFreeRows[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
 static_assert(kSmallLcpMax <= 4);

@@ -163,14 +163,15 @@ struct FrictionPair {
 };
 
 struct Workspace {
-  std::span<PgsRow> row;                 // per row
-  std::span<Lane4> dv;                   // 2 per body (linear, angular), then the zero slot
-  std::span<int> block;                  // per row: its normal block, kJointBlockRow, or -1
-  std::span<MeReal> blockA;              // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
-  std::span<SmallLcpFullSet> blockFull;  // per qualifying block: A_bb's elimination with every row free
+  std::span<PgsRow> row;                  // per row
+  std::span<Lane4> dv;                    // 2 per body (linear, angular), then the zero slot
+  std::span<int> block;                   // per row: its normal block, kJointBlockRow, or -1
+  std::span<MeReal> blockA;               // per block: its kMaxBlock^2 matrix A_bb (row-major, k x k used)
+  std::span<SmallLcpFullSet> blockFull;   // per qualifying block: A_bb's elimination with every row free
+  std::span<unsigned char> blockRelaxed;  // per qualifying block: a persistent face, over-relaxed (see the top)
   JointBlock joints;
-  std::span<FrictionPair> pairs;         // the friction pairs (see FrictionPair)
-  std::span<int> pair;                   // per row: its friction pair, or -1
+  std::span<FrictionPair> pairs;  // the friction pairs (see FrictionPair)
+  std::span<int> pair;            // per row: its friction pair, or -1
   // The sweeps' visits, forward and backward: a row alone (>= 0), a normal
   // block b (encoded -1 - b) or friction pair f (encoded -1 - blockCount -
   // f) at the first of its rows the sweep meets, or the joint block.
@@ -195,13 +196,23 @@ bool blockable(const BodySpaceProblem &p, int b) {
   return true;
 }
 
-// Each qualifying block's matrix A_bb = J_b M^-1 J_b^T + diag(softness).
+// Whether every row of block b carried an impulse last step (see the top).
+bool persistentFace(const BodySpaceProblem &p, int b) {
+  for (int k = p.normalBlock[(size_t)b]; k < p.normalBlock[(size_t)b + 1]; ++k)
+    if (p.warm[(size_t)p.normalRows[(size_t)k]] == 0) return false;
+  return true;
+}
+
+// Each qualifying block's matrix A_bb = J_b M^-1 J_b^T + diag(softness),
+// and whether it is over-relaxed.
 void prepareBlocks(const BodySpaceProblem &p, Workspace &w, StepArena &arena) {
   w.block = arena.filled<int>((size_t)p.rowCount, -1);
   w.blockA = arena.take<MeReal>((size_t)p.blockCount * kMaxBlock * kMaxBlock);
   w.blockFull = arena.take<SmallLcpFullSet>((size_t)p.blockCount);
+  w.blockRelaxed = arena.take<unsigned char>((size_t)p.blockCount);
   for (int b = 0; b < p.blockCount; ++b) {
     if (!blockable(p, b)) continue;
+    w.blockRelaxed[(size_t)b] = persistentFace(p, b);
     const int first = p.normalBlock[(size_t)b], k = p.normalBlock[(size_t)b + 1] - first;
     MeReal *A = &w.blockA[(size_t)b * kMaxBlock * kMaxBlock];
     for (int i = 0; i < k; ++i) {
@@ -432,13 +443,6 @@ MeReal update(Workspace &w, std::span<MeReal> lambda, int i) {
   return std::fabs(next - old) * d;
 }
 
-// Whether every row of a block carried an impulse last step (see the top).
-bool persistentFace(const BodySpaceProblem &p, const int *rows, int k) {
-  for (int i = 0; i < k; ++i)
-    if (p.warm[(size_t)rows[i]] == 0) return false;
-  return true;
-}
-
 // One update of normal block b: the k rows' impulses x together solve the
 // small LCP  w' = w + A_bb (x - lambda_b) = A_bb x - q >= 0, x >= lo,
 // complementary: x = lambda - A_bb^-1 w when that is above lo (every row
@@ -472,14 +476,14 @@ MeReal updateBlock(const BodySpaceProblem &p, Workspace &w, std::span<MeReal> la
     // w' = A x - q with q = A lambda - w; the rows the all-free step left
     // above their bound are the first guess of the free set.
     unsigned guess = 0;
-    for (int i = 0; i < k; ++i) guess |= full.ok && x[i] > lo[i] ? 1u << i : 0u;
+    for (int i = 0; i < k; ++i) guess |= x[i] > lo[i] ? 1u << i : 0u;  // read only when full.ok
     for (int i = 0; i < k; ++i) {
       q[i] = -slack[i];
       for (int j = 0; j < k; ++j) q[i] += A[i * kMaxBlock + j] * lam[j];
     }
     if (!(full.ok ? SolveSmallLcpAfterFull(A, q, lo, k, guess, x) : SolveSmallLcp(A, full, q, lo, k, x))) return -1;
   }
-  if (persistentFace(p, rows, k))
+  if (w.blockRelaxed[(size_t)b])
     for (int i = 0; i < k; ++i) x[i] = std::max(lo[i], lam[i] + kFaceRelaxation * (x[i] - lam[i]));
   MeReal biggest = 0;
   for (int i = 0; i < k; ++i) {
