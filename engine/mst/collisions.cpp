@@ -40,13 +40,24 @@ void ClearContacts(MdtContactGroupID g) {
 // and smallest distances from the origin to the surface. Bounded here from
 // the geometry's own box (half its diagonal, less half its smallest side);
 // a sphere turning about its centre does not move its surface at all.
+// d is the edge lengths of that box. A box geometry's AABB about its own
+// origin is exactly [-half, half] (each bound is one half length plus
+// zeros), so its d = 2 half is read from the radii, bit for bit the
+// AABB's hi - lo.
 MeReal TurnReach(McdModelID m) {
   McdGeometryID g = McdModelGetGeometry(m);
-  if (McdGeometryGetType(g) == kMcdGeometryTypeSphere) return 0;
-  static const MeMatrix4 kIdentity = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-  MeVector3 lo, hi, d;
-  McdGeometryGetAABB(g, kIdentity, lo, hi);
-  MeVector3Subtract(d, hi, lo);
+  const int type = McdGeometryGetType(g);
+  if (type == kMcdGeometryTypeSphere) return 0;
+  MeVector3 d;
+  if (type == kMcdGeometryTypeBox) {
+    McdBoxGetRadii(g, d);
+    MeVector3Scale(d, 2);
+  } else {
+    static const MeMatrix4 kIdentity = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    MeVector3 lo, hi;
+    McdGeometryGetAABB(g, kIdentity, lo, hi);
+    MeVector3Subtract(d, hi, lo);
+  }
   const MeReal smallest = d[0] < d[1] ? (d[0] < d[2] ? d[0] : d[2]) : (d[1] < d[2] ? d[1] : d[2]);
   const MeReal r = (MeReal)0.5 * (MeVector3Magnitude(d) - smallest);
   return std::isfinite(r) && r > 0 ? r : 0;
