@@ -87,4 +87,26 @@ BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakePile1000, 90)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 
+// Walking every body's contacts (MdtBodyGetFirstContact / NextContact, as
+// DeepestPenetration does) after the scene's first Steps steps; the time
+// per contact reached (seconds) is about the same for 25 bodies and 1,000
+// when a walk costs the body's own constraints, not the world's.
+template <std::unique_ptr<AnchorScene> (*Make)(), int Steps>
+void BM_ContactWalk(benchmark::State &state) {
+  std::unique_ptr<AnchorScene> scene = Make();
+  for (int i = 0; i < Steps; ++i) scene->step();
+  long reached = 0;
+  for (McdModelID m : scene->models()) {
+    MdtBodyID b = McdModelGetBody(m);
+    for (MdtContactID c = MdtBodyGetFirstContact(b); c; c = MdtBodyGetNextContact(b, c)) ++reached;
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(karma::scenes::DeepestPenetration(scene->models()));
+  state.counters["contacts"] = static_cast<double>(reached);
+  state.counters["time_per_contact"] = benchmark::Counter(
+      static_cast<double>(reached), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK_TEMPLATE(BM_ContactWalk, karma::scenes::MakeTopple, 60)->Name("contact_walk/topple");
+BENCHMARK_TEMPLATE(BM_ContactWalk, karma::scenes::MakePile1000, 90)->Name("contact_walk/pile1000");
+
 }  // namespace

@@ -35,6 +35,7 @@
 // (warmNormal; friction: warmFriction projected on d1 and d2).
 #include <cmath>
 
+#include "active_sets.h"
 #include "contact_internal.h"
 
 using namespace karma::mdt;
@@ -323,21 +324,33 @@ MeReal MEAPI MdtContactGetNormalForce(const MdtContactID c) {
 
 namespace {
 
-// Contacts touching `body` that are simulated: stand-alone and enabled, or
-// in an enabled group.
-bool touching(const MdtConstraint *con, const MdtBody *body) {
-  if (con->type != &kContactType) return false;
-  const bool live = con->owner ? con->owner->enabled : con->enabled;
-  return live && (con->body[0] == body || con->body[1] == body);
+// A body's contacts are walked along its constraint list (active_sets.h),
+// so a walk costs the body's constraints, not the world's. The contacts
+// reached, in the list's order: each enabled stand-alone contact, and the
+// contacts of each enabled group in the group's order (a group's contacts
+// act between its bodies). An owned contact may still be linked from when
+// it stood alone; it is reached through its group only.
+bool liveAlone(const MdtConstraint *con) { return con->type == &kContactType && !con->owner && con->enabled; }
+
+MdtContact *firstOfLiveGroup(const MdtConstraint *con) {
+  if (con->type != &kContactGroupType || !con->enabled) return nullptr;
+  return static_cast<const MdtContactGroup *>(con)->first;
 }
 
-MdtContactID scanFrom(const MdtBodyID body, void *slot) {
-  MdtWorldPrivate *p = body->world->priv;
-  for (void *s = nextConstraintSlot(p, slot); s; s = nextConstraintSlot(p, s)) {
-    auto *con = static_cast<MdtConstraint *>(s);
-    if (touching(con, body)) return static_cast<MdtContact *>(con);
+// The first contact reached from `con` on, along body's list.
+MdtContactID firstFrom(const MdtBody *body, MdtConstraint *con) {
+  for (; con; con = nextAtBody(con, body)) {
+    if (liveAlone(con)) return static_cast<MdtContact *>(con);
+    if (MdtContact *first = firstOfLiveGroup(con)) return first;
   }
   return nullptr;
+}
+
+// The list entry through which `c` is reached from body: c itself or its
+// group; nullptr when neither is on body's list.
+MdtConstraint *entryOf(const MdtBody *body, MdtContact *c) {
+  MdtConstraint *entry = c->owner ? c->owner : c;
+  return entry->linked[0] == body || entry->linked[1] == body ? entry : nullptr;
 }
 
 }  // namespace
@@ -346,12 +359,17 @@ extern "C" {
 
 MdtContactID MEAPI MdtBodyGetFirstContact(const MdtBodyID body) {
   ME_REQUIRE_ARG_RET(body != nullptr, nullptr, "MdtBodyGetFirstContact", "body is NULL");
-  return scanFrom(body, nullptr);
+  return firstFrom(body, body->firstConstraint);
 }
 
 MdtContactID MEAPI MdtBodyGetNextContact(const MdtBodyID body, const MdtContactID c) {
   ME_REQUIRE_ARG_RET(body != nullptr && c != nullptr, nullptr, "MdtBodyGetNextContact", "NULL argument");
-  return scanFrom(body, static_cast<MdtConstraint *>(c));
+  static const char *fn = "MdtBodyGetNextContact";
+  if (!checkType(c, kContactType, fn)) return nullptr;
+  MdtConstraint *entry = entryOf(body, c);
+  ME_REQUIRE_ARG_RET(entry != nullptr, nullptr, fn, "the contact does not act on this body");
+  if (c->owner && c->next) return c->next;
+  return firstFrom(body, nextAtBody(entry, body));
 }
 
 }  // extern "C"

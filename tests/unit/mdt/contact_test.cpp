@@ -1,5 +1,6 @@
 // Hand-made contacts: support, friction models, restitution, slip, slide.
 #include <cmath>
+#include <set>
 
 #include "mdt_test_support.h"
 
@@ -216,6 +217,57 @@ TEST(ContactGroup, CarriesWeightAndReportsNormalForce) {
   EXPECT_EQ(MdtContactGroupGetCount(grp), 3);
   MdtContactGroupDestroy(grp);
   EXPECT_EQ(MdtWorldGetConstraintCount(w), 0u);
+}
+
+// The walk of a body's contacts reaches exactly the contacts that act on it
+// -- enabled stand-alone contacts and the contacts of enabled groups --
+// each once, whatever else the world holds: disabled contacts and groups,
+// contacts between other bodies, a contact that stood alone (and was
+// linked) before it joined a group, joints.
+TEST(Contact, ABodysWalkReachesEachContactActingOnItOnce) {
+  World w(8, 1, 1, 64);
+  MdtBodyID a = MdtBodyCreate(w), b = MdtBodyCreate(w), c = MdtBodyCreate(w);
+  std::multiset<MdtContactID> expected;
+  auto alone = [&](MdtBodyID x, MdtBodyID y, bool enable) {
+    MdtContactID k = MdtContactCreate(w);
+    MdtContactSetBodies(k, x, y);
+    if (enable) MdtContactEnable(k);
+    return k;
+  };
+  expected.insert(alone(a, b, true));
+  expected.insert(alone(b, a, true));
+  const MdtContactID onGround = alone(a, nullptr, true);
+  expected.insert(onGround);
+  alone(a, b, false);
+  alone(b, c, true);
+  MdtBSJointID joint = MdtBSJointCreate(w);
+  MdtBSJointSetBodies(joint, a, c);
+  MdtBSJointEnable(joint);
+  MdtContactGroupID live = MdtContactGroupCreate(w);
+  MdtContactGroupSetBodies(live, c, a);
+  for (int i = 0; i < 3; ++i) expected.insert(MdtContactGroupCreateContact(live));
+  MdtContactID joined = alone(c, a, true);  // linked while alone
+  MdtContactDisable(joined);
+  MdtContactGroupAppendContact(live, joined);
+  expected.insert(joined);
+  MdtContactGroupEnable(live);
+  MdtContactGroupID off = MdtContactGroupCreate(w);
+  MdtContactGroupSetBodies(off, a, b);
+  MdtContactGroupCreateContact(off);
+  MdtContactGroupID empty = MdtContactGroupCreate(w);
+  MdtContactGroupSetBodies(empty, a, nullptr);
+  MdtContactGroupEnable(empty);
+  std::multiset<MdtContactID> found;
+  for (MdtContactID k = MdtBodyGetFirstContact(a); k; k = MdtBodyGetNextContact(a, k)) found.insert(k);
+  EXPECT_EQ(found, expected);
+  // Body c: the live group's four and the stand-alone one with b.
+  int atC = 0;
+  for (MdtContactID k = MdtBodyGetFirstContact(c); k; k = MdtBodyGetNextContact(c, k)) ++atC;
+  EXPECT_EQ(atC, 5);
+  // A contact asked for from a body it does not act on ends the walk, with a warning.
+  WarningCapture cap;
+  EXPECT_EQ(MdtBodyGetNextContact(c, onGround), nullptr);
+  EXPECT_EQ(cap.count(), 1u);
 }
 
 TEST(Contact, DefaultsAndBadInput) {
