@@ -102,7 +102,7 @@ bool ValidateSparse(const SparseLcpProblem &p, const KeaOptions &o, const char *
       if (k > p.rowStart[i] && c <= p.col[static_cast<std::size_t>(k) - 1])
         return Reject(function, "CSR columns are not strictly ascending within a row");
       if (static_cast<std::size_t>(c) == i) diagonal = true;
-      finite = finite && std::isfinite(p.val[static_cast<std::size_t>(k)]);
+      finite = finite && (p.op || std::isfinite(p.val[static_cast<std::size_t>(k)]));
     }
     if (!diagonal) return Reject(function, "CSR row without its diagonal entry");
   }
@@ -111,7 +111,7 @@ bool ValidateSparse(const SparseLcpProblem &p, const KeaOptions &o, const char *
 }
 
 bool ValidateSparseValues(const SparseLcpProblem &p, const KeaOptions &o, const char *function) {
-  if (!AllFinite(p.val)) return Reject(function, "A contains NaN or infinity");
+  if (!p.op && !AllFinite(p.val)) return Reject(function, "A contains NaN or infinity");
   return ValidateRows(Rows(p), o, function);
 }
 

@@ -220,6 +220,40 @@ struct KeaResult {
   int staleIterations = 0;
 };
 
+/* A held by its caller as a product, e.g. A = J M^-1 J^T + diag(s) (Mdt's
+ * rows), so that a solve can apply it without its entries. KeaSolveSparse
+ * uses the operator when the solve starts on a kept factor (factor memory,
+ * the same sparsity) and bounded() holds: every product with A then goes
+ * through times and absTimesMax, and A's entries are read only after
+ * assemble(), when the solve factorises. Otherwise it calls assemble()
+ * first and solves with the stored values (checked as usual), never
+ * mixing the two in one solve. Contract:
+ *  - times: y[a] = (A x)_i with i = rows[a] (i = a when rows is null) for
+ *    a < count; x holds n values; y does not overlap x. Deterministic: the
+ *    same x gives the same bits. Its rounding may differ from the CSR
+ *    values' row sums.
+ *  - absTimesMax: the largest over those rows of a bound B_i >= sum_j
+ *    |A_ij| |x_j| that also bounds times' rounding, as sum_j |A_ij x_j|
+ *    does for a row sum (for a product J W J^T: (|J| |W| |J^T| |x|)_i).
+ *  - assemble: fills the problem's val with A's entries in the CSR layout
+ *    (exactly symmetric); idempotent. Until it is called val may hold
+ *    anything, and the solve does not read it.
+ *  - bounded: true only when A's entries and every term times sums are
+ *    finite (the solve does not check values it never reads). */
+class SparseLcpOperator {
+ public:
+  virtual void times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const = 0;
+  virtual MeReal absTimesMax(const int *rows, std::size_t count, const MeReal *x) const = 0;
+  virtual void assemble() const = 0;
+  virtual bool bounded() const = 0;
+
+ protected:
+  SparseLcpOperator() = default;
+  SparseLcpOperator(const SparseLcpOperator &) = default;
+  SparseLcpOperator &operator=(const SparseLcpOperator &) = default;
+  ~SparseLcpOperator() = default;
+};
+
 /* The same problem with A in compressed sparse rows: both triangles stored,
  * columns ascending within a row, every diagonal entry present. This is what
  * Mdt hands over: A's sparsity follows which rows share a body. */
@@ -237,6 +271,10 @@ struct SparseLcpProblem {
    * factor or an ordering for takes the sparsity as known without
    * comparing the arrays. Unnamed problems are compared entry by entry. */
   std::uint64_t sparsityStamp = 0;
+  /* When set, A may be applied through it (SparseLcpOperator), and val is
+   * read only after its assemble(); rowStart and col hold A's layout all
+   * the same. */
+  const SparseLcpOperator *op = nullptr;
 };
 
 /* Solves a sparse problem with the same contract and options as KeaSolve

@@ -182,7 +182,18 @@ void BadInput(int n, KeaResult &result) {
 KeaWorkspace *KeaWorkspaceCreate() { return new KeaWorkspace; }
 void KeaWorkspaceDestroy(KeaWorkspace *workspace) { delete workspace; }
 
-void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &workspace, KeaResult &result) {
+namespace {
+
+/* Whether the solve of `p` applies A through its operator: only when it
+ * starts on a kept factor (its stale solves then need no entry of A) and
+ * the operator vouches for A's finiteness. Decided once, before the solve,
+ * so a solve never mixes the operator's products with the stored rows'. */
+bool AppliesOperator(const SparseLcpProblem &p, const KeaOptions &o, const KeaWorkspace &workspace) {
+  return p.op && o.method == KeaMethod::ActiveSet &&
+         workspace.backend.startsStale(p, o.epsilon, o.envelopeRows, o.factorMemory) && p.op->bounded();
+}
+
+void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &workspace, KeaResult &result) {
   static const char *const kName = "KeaSolveSparse";
   /* A problem with the kept factor's structure had it validated before. */
   const bool knownStructure =
@@ -211,6 +222,19 @@ void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace
     RetryCold(p, o, target, workspace, result);
   else if (warm && result.status == KeaStatus::IterationLimit)
     detail::WarnIterationLimit(o, kName, result.iterations, result.residual);
+}
+
+}  // namespace
+
+void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &workspace, KeaResult &result) {
+  if (!p.op || AppliesOperator(p, o, workspace)) {
+    SolveSparse(p, o, workspace, result);
+    return;
+  }
+  p.op->assemble();
+  SparseLcpProblem stored = p;
+  stored.op = nullptr;
+  SolveSparse(stored, o, workspace, result);
 }
 
 KeaResult KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o) {

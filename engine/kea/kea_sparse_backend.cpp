@@ -16,10 +16,15 @@ using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
 
 std::size_t U(int i) { return static_cast<std::size_t>(i); }
 
-/* y[a] = sum_k A_ik x_k over the stored entries of CSR row i = rows[a]
- * (i = a when rows is null), a < count. */
+/* y[a] = (A x)_i for i = rows[a] (i = a when rows is null), a < count:
+ * through the problem's operator when it has one, else the stored entries
+ * of CSR row i. */
 void RowsTimes(const platform::Kernels &kernels, const SparseLcpProblem &p, const int *rows, std::size_t count,
                const MeReal *x, MeReal *y) {
+  if (p.op) {
+    p.op->times(rows, count, x, y);
+    return;
+  }
   kernels.sparseRowsTimes(p.rowStart.data(), p.col.data(), p.val.data(), rows, static_cast<int>(count), x, y);
 }
 
@@ -73,6 +78,11 @@ bool SparseBackend::sameSparsity(const SparseLcpProblem &p, MeReal eps, int enve
 
 bool SparseBackend::keptStructure(const SparseLcpProblem &p) const { return factorKept_ && sparsity_.matches(p); }
 
+bool SparseBackend::startsStale(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory) const {
+  const bool usable = factor_ != Factor::None && (factor_ != Factor::Sparse || ldltOk_) && staleWorthIt_;
+  return memory != KeaFactorMemory::Off && usable && sameSparsity(p, eps, envelopeRows);
+}
+
 bool SparsityRecord::matches(const SparseLcpProblem &p) const {
   if (!recorded_) return false;
   if (stamp_ != 0) return p.sparsityStamp == stamp_;
@@ -112,8 +122,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   factorizations_ = staleSolves_ = staleIterations_ = 0;
   envelopeFresh_ = false;
   target_ = target;
-  const bool usable = factor_ != Factor::None && (factor_ != Factor::Sparse || ldltOk_) && staleWorthIt_;
-  if (memory != KeaFactorMemory::Off && usable && sameSparsity(p, eps, envelopeRows)) {
+  if (startsStale(p, eps, envelopeRows, memory)) {
     /* The orderings depend on the sparsity only: they stay too. */
     p_ = &p;
     stale_ = true;
@@ -214,6 +223,12 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
 }
 
+/* A's entries, assembled first when the problem has an operator. */
+std::span<const MeReal> SparseBackend::values() const {
+  if (p_->op) p_->op->assemble();
+  return p_->val;
+}
+
 /* The free rows in the kept factor's order. */
 const std::vector<int> &SparseBackend::factorOrder() const {
   if (factor_ == Factor::Dense) return denseRows_;
@@ -238,6 +253,11 @@ void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const M
  * of multiplyFree's y), right after multiplyFree(rows, x, ...) scattered x. */
 MeReal SparseBackend::productScale(const std::vector<int> &rows, std::span<const MeReal> x) const {
   const SparseLcpProblem &p = *p_;
+  if (p.op) {
+    MeReal largestX = 0;
+    for (MeReal e : x) largestX = std::max(largestX, std::fabs(e));
+    return p.op->absTimesMax(rows.data(), rows.size(), cgFull_.data()) + std::fabs(eps_) * largestX;
+  }
   MeReal scale = 0;
   for (std::size_t a = 0; a < rows.size(); ++a) {
     const auto i = U(rows[a]);
@@ -361,13 +381,16 @@ void SparseBackend::solveWithFactor(std::span<const MeReal> rhs, std::span<MeRea
 void SparseBackend::column(int row, std::span<const int> position, std::span<MeReal> out) const {
   /* A is symmetric: column `row` is row `row`. */
   const SparseLcpProblem &p = *p_;
+  const std::span<const MeReal> val = values();
   for (int k = p.rowStart[U(row)]; k < p.rowStart[U(row) + 1]; ++k) {
     const int c = position[U(p.col[U(k)])];
-    if (c >= 0) out[U(c)] = p.val[U(k)];
+    if (c >= 0) out[U(c)] = val[U(k)];
   }
 }
 
-/* rhs = b_F - A_FC lambda_C, by the clamped rows: A is symmetric, so
+/* rhs = b_F - A_FC lambda_C. Through the problem's operator, one product
+ * with lambda_C (zero on the free rows), made only when some clamped
+ * lambda is not zero. Otherwise by the clamped rows: A is symmetric, so
  * column j of A_FC is row j's CSR entries, and each clamped row j, in
  * ascending order, subtracts its terms from every row it meets. Each free
  * row thus loses its clamped columns' terms in ascending column order, as
@@ -376,6 +399,19 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
                              const std::vector<MeReal> &lambda) {
   const SparseLcpProblem &p = *p_;
   const auto n = static_cast<std::size_t>(p.n);
+  rhs_.resize(rows.size());
+  if (p.op) {
+    cgFull_.assign(n, MeReal(0));
+    bool any = false;
+    for (std::size_t j = 0; j < n; ++j)
+      if (set[j] != Free && lambda[j] != 0) {
+        cgFull_[j] = lambda[j];
+        any = true;
+      }
+    if (any) p.op->times(rows.data(), rows.size(), cgFull_.data(), rhs_.data());
+    for (std::size_t a = 0; a < rows.size(); ++a) rhs_[a] = any ? p.b[U(rows[a])] - rhs_[a] : p.b[U(rows[a])];
+    return;
+  }
   rhsFull_.assign(p.b.begin(), p.b.begin() + static_cast<std::ptrdiff_t>(n));
   for (std::size_t j = 0; j < n; ++j) {
     if (set[j] == Free || lambda[j] == 0) continue; /* a zero lambda subtracts nothing */
@@ -385,7 +421,6 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
       rhsFull_[i] -= p.val[U(k)] * lj;
     }
   }
-  rhs_.resize(rows.size());
   for (std::size_t a = 0; a < rows.size(); ++a) rhs_[a] = rhsFull_[U(rows[a])];
 }
 
@@ -535,6 +570,7 @@ void SparseBackend::forEachFreeEntry(const std::vector<int> &rows, Visit visit, 
  * before it keep what they hold: see reusableEnvelopeRows). */
 void SparseBackend::fillEnvelope(const std::vector<int> &rows, std::size_t from) {
   const SparseLcpProblem &p = *p_;
+  const std::span<const MeReal> val = values();
   const std::size_t m = rows.size();
   envelope_.layout(static_cast<int>(from));
   /* Rows in ascending order (the natural order) meet their columns in
@@ -550,10 +586,10 @@ void SparseBackend::fillEnvelope(const std::vector<int> &rows, std::size_t from)
     const int end = p.rowStart[i + 1];
     if (ascending) {
       for (int k = p.rowStart[i]; k < end && U(p.col[U(k)]) <= i; ++k)
-        if (const int c = position_[U(p.col[U(k)])]; c >= 0) row[c - first] = p.val[U(k)];
+        if (const int c = position_[U(p.col[U(k)])]; c >= 0) row[c - first] = val[U(k)];
     } else {
       for (int k = p.rowStart[i]; k < end; ++k)
-        if (const int c = position_[U(p.col[U(k)])]; c >= 0 && U(c) <= a) row[c - first] = p.val[U(k)];
+        if (const int c = position_[U(p.col[U(k)])]; c >= 0 && U(c) <= a) row[c - first] = val[U(k)];
     }
     row[a - U(first)] += eps_;
   }
@@ -590,7 +626,7 @@ void SparseBackend::computeDegreeOrder() {
  * kea_dense_ldlt.h). False on breakdown (the envelope path then takes the
  * block, with its least-squares fallback). */
 bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
-  const SparseLcpProblem &p = *p_;
+  const std::span<const MeReal> val = values();
   /* The order and the map depend on the sparsity only (and the map on the
    * free rows): keepOrderings drops both for a problem of another one. */
   if (degreeOrder_.empty()) computeDegreeOrder();
@@ -608,12 +644,12 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   if (rows != denseMapRows_ && rows != denseCandidateRows_) {
     const auto stride = U(dense_.stride);
     forEachFreeEntry(rows, [&](std::size_t a, std::size_t c, int k) {
-      if (c >= a) upper[a * stride + c] = p.val[U(k)];
+      if (c >= a) upper[a * stride + c] = val[U(k)];
     });
     denseCandidateRows_ = rows;
   } else {
     if (rows != denseMapRows_) mapDense();
-    for (const auto &[k, at] : denseFill_) upper[U(at)] = p.val[U(k)];
+    for (const auto &[k, at] : denseFill_) upper[U(at)] = val[U(k)];
   }
   for (std::size_t a = 0; a < m; ++a) upper[a * U(dense_.stride) + a] += eps_;
   if (!dense_.factor()) return false;
@@ -671,7 +707,7 @@ void SparseBackend::computeOrder() {
   const SparseLcpProblem &p = *p_;
   const auto n = static_cast<Eigen::Index>(p.n);
   const auto nnz = static_cast<Eigen::Index>(p.rowStart[U(p.n)]);
-  const Eigen::Map<const SpMat> full(n, n, nnz, p.rowStart.data(), p.col.data(), p.val.data());
+  const Eigen::Map<const SpMat> full(n, n, nnz, p.rowStart.data(), p.col.data(), values().data());
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> pinv;
   Eigen::AMDOrdering<int> amd;
   amd(full.selfadjointView<Eigen::Upper>(), pinv);
@@ -690,6 +726,7 @@ void SparseBackend::computeOrder() {
  * no sorting per pivot step. */
 void SparseBackend::buildOrderedUpper() {
   const SparseLcpProblem &p = *p_;
+  const std::span<const MeReal> val = values();
   const auto n = static_cast<std::size_t>(p.n);
   rank_.resize(n);
   for (std::size_t r = 0; r < n; ++r) rank_[U(order_[r])] = static_cast<int>(r);
@@ -706,7 +743,7 @@ void SparseBackend::buildOrderedUpper() {
     std::sort(entries_.begin(), entries_.end());
     for (const auto &[c, k] : entries_) {
       upRow_.push_back(p.col[U(k)]);
-      upVal_.push_back(p.val[U(k)]);
+      upVal_.push_back(val[U(k)]);
     }
     upStart_[r + 1] = static_cast<int>(upRow_.size());
   }
@@ -788,10 +825,11 @@ void SparseBackend::fallback(const std::vector<unsigned char> &set, std::vector<
   }
   /* A small shift on the diagonal makes a semi-definite block definite. */
   const SparseLcpProblem &p = *p_;
+  const std::span<const MeReal> val = values();
   MeReal diagMax = 0;
   for (int i : naturalRows_)
     for (int k = p.rowStart[U(i)]; k < p.rowStart[U(i) + 1]; ++k)
-      if (p.col[U(k)] == i) diagMax = std::max(diagMax, std::fabs(p.val[U(k)]));
+      if (p.col[U(k)] == i) diagMax = std::max(diagMax, std::fabs(val[U(k)]));
   gatherUpper(m, std::sqrt(ME_REAL_EPSILON) * (1 + diagMax));
   const Ldlt shifted(block_);
   Vec x;

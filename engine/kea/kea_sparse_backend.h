@@ -52,7 +52,15 @@
  * accuracy, only its cost. A factorisation that breaks down (not positive
  * definite, e.g. eps = 0 with redundant rows) falls back to a dense
  * least-squares solve for blocks up to kDenseFallback rows, and to a
- * slightly shifted sparse LDL^T beyond. */
+ * slightly shifted sparse LDL^T beyond.
+ *
+ * A problem with an operator (SparseLcpProblem::op; KeaSolveSparse hands
+ * the backend one only for a solve that starts on a kept factor): every
+ * product with A (residuals, the stale solves' conjugate gradients,
+ * b_F - A_FC lambda_C, the rounding scale) goes through it, and A's
+ * entries are read, after the operator's assemble(), only to fill a
+ * factorisation or a column (values()). A stale solve that succeeds
+ * therefore needs no entry. */
 #ifndef KARMA_KEA_SPARSE_BACKEND_H
 #define KARMA_KEA_SPARSE_BACKEND_H
 
@@ -147,6 +155,9 @@ class SparseBackend {
   /* Whether p's sparsity is that of the problem the kept factor was made
    * for (only a problem that passed validation is kept). */
   bool keptStructure(const SparseLcpProblem &p) const;
+  /* Whether reset() with these arguments keeps the last factor as a stale
+   * one (the solve then starts from it). */
+  bool startsStale(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory) const;
 
   /* Factorisations since reset(). */
   int factorizations() const { return factorizations_; }
@@ -164,6 +175,7 @@ class SparseBackend {
   const std::vector<int> &factorOrder() const;
   void multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y);
   MeReal productScale(const std::vector<int> &rows, std::span<const MeReal> x) const;
+  std::span<const MeReal> values() const;
   bool solveStale(const std::vector<int> &rows);
   bool solveStaleAndLearn(const std::vector<int> &rows);
   void factorise(const std::vector<unsigned char> &set);

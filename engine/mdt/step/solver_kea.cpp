@@ -1,6 +1,11 @@
 // solver_kea.cpp: the exact partition solver, through Kea (kea_lcp.h): it
-// assembles A = J M^-1 J^T + diag(softness) in compressed sparse rows and
-// hands the LCP to KeaSolveSparse's active-set method.
+// hands the LCP with A = J M^-1 J^T + diag(softness) to KeaSolveSparse's
+// active-set method as A's layout in compressed sparse rows and an
+// operator (PartitionMatrix). A solve that starts on the partition's kept
+// factor applies A through the bodies (body_space_operator.h) and has A's
+// values assembled only if it factorises: a partition at rest whose solve
+// ends on the kept factor (a stale solve) is never assembled. Any other
+// solve has A assembled first and works on the stored values (kea_lcp.h).
 //
 // Assembly. Two rows interact when they share a body b, through
 //     A_ij += J_i,b . (M_b^-1 J_j,b^T)
@@ -25,9 +30,10 @@
 #include <cstdint>
 #include <limits>
 
+#include "body_space_operator.h"
 #include "kea_lcp.h"
-#include "reference_inline.h"
 #include "partition_solver.h"
+#include "reference_inline.h"
 
 namespace karma::mdt {
 
@@ -161,11 +167,11 @@ struct PartitionMemory {
   std::uint64_t lastUse = 0;
   kea::KeaWorkspace *workspace = nullptr;
   std::vector<int> body0, body1;
-  std::vector<int> rowStart, col, diagonal;      // A's CSR layout
-  std::vector<int> bodyRowStart, bodyRows;       // the rows on each body (rowsByBody)
-  std::vector<int> runStart, upperStart;         // layoutShareRuns
-  std::vector<ShareRun> runs;                    // layoutShareRuns
-  int widestBody = 0;                            // the most rows on one body
+  std::vector<int> rowStart, col, diagonal;  // A's CSR layout
+  std::vector<int> bodyRowStart, bodyRows;   // the rows on each body (rowsByBody)
+  std::vector<int> runStart, upperStart;     // layoutShareRuns
+  std::vector<ShareRun> runs;                // layoutShareRuns
+  int widestBody = 0;                        // the most rows on one body
   // Numbers the layouts this memory has held (1, 2, ...): Kea's name for
   // A's sparsity (SparseLcpProblem::sparsityStamp). The workspace is this
   // memory's alone, so the number needs to be unique only here.
@@ -173,7 +179,8 @@ struct PartitionMemory {
 
   // The layout is indexed by body as well as by row: the body count counts.
   bool sameBodies(const BodySpaceProblem &p) const {
-    return bodyRowStart.size() == (size_t)p.bodyCount + 1 && body0.size() == p.body0.size() && std::equal(body0.begin(), body0.end(), p.body0.begin()) &&
+    return bodyRowStart.size() == (size_t)p.bodyCount + 1 && body0.size() == p.body0.size() &&
+           std::equal(body0.begin(), body0.end(), p.body0.begin()) &&
            std::equal(body1.begin(), body1.end(), p.body1.begin());
   }
 };
@@ -260,9 +267,9 @@ void addUpperRuns(std::span<const ShareRun> runs, int stride, const MeReal *shar
   }
 }
 
-Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory) {
-  updateLayout(p, arena, memory);
-  Csr a{memory.rowStart, memory.col, arena.filled<MeReal>(memory.col.size(), 0)};
+// A's values into `val` (memory's layout, made by updateLayout).
+void fillValues(const BodySpaceProblem &p, StepArena &arena, const PartitionMemory &memory, std::span<MeReal> val) {
+  std::fill(val.begin(), val.end(), MeReal(0));
   const int stride = memory.widestBody;
   MeReal *mj = arena.take<MeReal>((size_t)stride * 6).data();
   MeReal *share = arena.take<MeReal>((size_t)stride * (size_t)stride).data();
@@ -275,12 +282,41 @@ Csr assemble(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memor
     bodyShares(p, b, rows, mj, stride, share);
     const size_t lower = (size_t)memory.runStart[(size_t)b], upper = (size_t)memory.upperStart[(size_t)b];
     const size_t end = (size_t)memory.runStart[(size_t)b + 1];
-    addLowerRuns(runs.subspan(lower, upper - lower), share, a.val.data());
-    addUpperRuns(runs.subspan(upper, end - upper), stride, share, a.val.data());
+    addLowerRuns(runs.subspan(lower, upper - lower), share, val.data());
+    addUpperRuns(runs.subspan(upper, end - upper), stride, share, val.data());
   }
-  for (int i = 0; i < p.rowCount; ++i) a.val[(size_t)memory.diagonal[(size_t)i]] += p.softness[(size_t)i];
-  return a;
+  for (int i = 0; i < p.rowCount; ++i) val[(size_t)memory.diagonal[(size_t)i]] += p.softness[(size_t)i];
 }
+
+// The partition's A for Kea: applied through the bodies
+// (body_space_operator.h), its values filled only when Kea asks for them
+// (a factorisation), at most once per solve.
+class PartitionMatrix final : public BodySpaceOperator {
+ public:
+  PartitionMatrix(const BodySpaceProblem &p, StepArena &arena, const PartitionMemory &memory)
+      : BodySpaceOperator(p, arena),
+        p_(p),
+        arena_(arena),
+        memory_(memory),
+        val_(arena.take<MeReal>(memory.col.size())) {}
+  ~PartitionMatrix() = default;
+  PartitionMatrix(const PartitionMatrix &) = delete;
+  PartitionMatrix &operator=(const PartitionMatrix &) = delete;
+
+  std::span<const MeReal> values() const { return val_; }
+  void assemble() const override {
+    if (assembled_) return;
+    fillValues(p_, arena_, memory_, val_);
+    assembled_ = true;
+  }
+
+ private:
+  const BodySpaceProblem &p_;
+  StepArena &arena_;
+  const PartitionMemory &memory_;
+  std::span<MeReal> val_;
+  mutable bool assembled_ = false;
+};
 
 // The partitions' memories, found by partition identity (problem.h). A
 // new identity takes the memory used longest ago when that one was not
@@ -344,12 +380,14 @@ class KeaSolver final : public PartitionSolver {
     std::fill(lambda.begin(), lambda.end(), MeReal(0));
     if (p.rowCount == 0) return report;
     PartitionMemory &memory = memories_.take(p.identity);
-    const Csr a = assemble(p, arena, memory);
+    updateLayout(p, arena, memory);
+    const PartitionMatrix a(p, arena, memory);
     kea::SparseLcpProblem prob;
     prob.n = p.rowCount;
-    prob.rowStart = a.rowStart;
-    prob.col = a.col;
-    prob.val = a.val;
+    prob.rowStart = memory.rowStart;
+    prob.col = memory.col;
+    prob.val = a.values();
+    prob.op = &a;
     prob.b = p.rhs;
     prob.lo = p.lo;
     prob.hi = p.hi;

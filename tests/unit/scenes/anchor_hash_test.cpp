@@ -35,9 +35,9 @@ struct PinnedHash {
 constexpr PinnedHash kPinned[] = {
     {"car",      300,  "0x06adb4d0f5bd0888", "0xc5f9e6d2d605d049"},
     {"topple",   600,  "0xb234b6828a4d9aba", "0xda7bf17dccf89bda"},
-    {"ragdoll",  600,  "0xb35e2d5d06848ace", "0x16baeefa41e05f75"},
-    {"stack21",  1200, "0x8139d53cd4f0303f", "0xac97e6b52e3dbaa0"},
-    {"pile1000", 60,   "0x26bb6130ff6bce97", "0x8516bb52ec2396c2"},
+    {"ragdoll",  600,  "0x7c960a64245f9c1e", "0x882126e45f453a49"},
+    {"stack21",  1200, "0x8e76ecf9b2a82504", "0xe3a79de7146be07c"},
+    {"pile1000", 60,   "0x69a10fd0fe3812a9", "0xff35fd934fff2c4e"},
 };
 // clang-format on
 

@@ -1,0 +1,81 @@
+// body_space_operator.h: the body-space problem's matrix (problem.h)
+//     A = J M^-1 J^T + diag(softness)
+// applied to a vector without forming it, as Kea's SparseLcpOperator
+// (kea_lcp.h). Not installed.
+//
+// A product goes through the bodies: each body gathers its rows'
+//     u_b = sum over rows r on b, ascending, of (M_b^-1 J_r,b^T) x_r
+// (six values; M^-1 J^T per row side as sideMinvJt gives it, made once per
+// problem), and each asked-for row reads its bodies back:
+//     y_r = (J_r,b0 . u_b0 + J_r,b1 . u_b1) + softness_r x_r,
+// each six-term dot as (three linear terms) + (three angular terms), a
+// side without a body left out. That is about 24 multiply-adds a row where
+// the assembled matrix's row holds one entry per row sharing a body (36 in
+// a stacked box's contact row), and it needs no entry of A: a solve that
+// ends on a kept factor (Kea's stale solves) never assembles A.
+//
+// absTimesMax is the same computation on absolute values, (|J| |M^-1 J^T|
+// |x|)_r + |softness_r x_r|: it bounds sum_j |A_ij| |x_j| (each |A_ij| is
+// at most the sum over the shared bodies of |J_i,b| |M_b^-1 J_j,b^T|) and
+// the rounding of times, which rounds those same terms.
+//
+// Finite entries (bounded, kea_lcp.h). The problem's values are finite
+// (collect_rows.cpp drops a constraint with a non-finite row; masses and
+// inertias are checked where they are set). Every entry of A and every
+// term of its sums is then finite when
+//     12 max|J| (max|J| max_b w_b) + max softness <= the largest MeReal,
+// with w_b = max(1/m_b, 3 max|I_b^-1|), which bounds each component of
+// M_b^-1 J^T by w_b max|J| (a body flung to the edge of the range breaks
+// it; Kea then assembles A and checks it).
+//
+// Lazy: M^-1 J^T and the bound are made at the first call that needs them,
+// so a solve that assembles A first (no kept factor) pays nothing here.
+//
+// assemble() is the caller's: the operator does not own A's layout.
+#pragma once
+
+#include <span>
+
+#include "arena.h"
+#include "kea_lcp.h"
+#include "problem.h"
+
+namespace karma::mdt {
+
+class BodySpaceOperator : public kea::SparseLcpOperator {
+ public:
+  // p must outlive the operator; its scratch comes from the arena.
+  BodySpaceOperator(const BodySpaceProblem &p, StepArena &arena);
+
+  // Values per row side and per body in the operator's arrays: linear xyz,
+  // angular xyz, two zeros (whole vector lanes).
+  static constexpr std::size_t kSide = 8;
+
+  void times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const override;
+  MeReal absTimesMax(const int *rows, std::size_t count, const MeReal *x) const override;
+  bool bounded() const override;
+
+ protected:
+  BodySpaceOperator(const BodySpaceOperator &) = default;
+  ~BodySpaceOperator() = default;
+
+ private:
+  // minvJt_ and bounded_, once.
+  void prepare() const;
+  // u = the per-body sums of the rows' (|M^-1 J^T|) x, of absolute values
+  // when Absolute.
+  template <bool Absolute>
+  void gather(const MeReal *x) const;
+  // Row r's (|J|) . u over its bodies.
+  template <bool Absolute>
+  MeReal rowDot(int r) const;
+
+  const BodySpaceProblem *p_;
+  StepArena *arena_;
+  mutable std::span<MeReal> minvJt_;  // 2 kSide per row: side 0, side 1 (zeros for no body)
+  mutable std::span<MeReal> J_;       // the rows' J in the same layout
+  mutable std::span<MeReal> u_;       // kSide per body
+  mutable bool prepared_ = false, bounded_ = false;
+};
+
+}  // namespace karma::mdt
