@@ -222,12 +222,13 @@ struct KeaResult {
 
 /* A held by its caller as a product, e.g. A = J M^-1 J^T + diag(s) (Mdt's
  * rows), so that a solve can apply it without its entries. KeaSolveSparse
- * uses the operator when the solve starts on a kept factor (factor memory,
- * the same sparsity) and bounded() holds: every product with A then goes
- * through times and absTimesMax, and A's entries are read only after
- * assemble(), when the solve factorises. Otherwise it calls assemble()
- * first and solves with the stored values (checked as usual), never
- * mixing the two in one solve. Contract:
+ * (active-set method) decides once per call: when the solve starts on a
+ * kept factor (factor memory, the same sparsity) and entriesFinite() holds,
+ * every product with A in that call (a cold retry included) goes through
+ * times and absTimesMax, and A's entries are read only after assemble(),
+ * when the solve factorises. Otherwise it calls assemble() first and solves
+ * with the stored values, checked as usual. One call never mixes the two.
+ * Contract:
  *  - times: y[a] = (A x)_i with i = rows[a] (i = a when rows is null) for
  *    a < count; x holds n values; y does not overlap x. Deterministic: the
  *    same x gives the same bits. Its rounding may differ from the CSR
@@ -238,14 +239,17 @@ struct KeaResult {
  *  - assemble: fills the problem's val with A's entries in the CSR layout
  *    (exactly symmetric); idempotent. Until it is called val may hold
  *    anything, and the solve does not read it.
- *  - bounded: true only when A's entries and every term times sums are
- *    finite (the solve does not check values it never reads). */
+ *  - entriesFinite: true only when A's entries and the operator's own
+ *    factors are finite, with room for their rounding (the solve does not
+ *    check values it never reads; a product with a large x may still
+ *    overflow, as A x may, and a solve treats a non-finite residual as
+ *    unsolved). */
 class SparseLcpOperator {
  public:
   virtual void times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const = 0;
   virtual MeReal absTimesMax(const int *rows, std::size_t count, const MeReal *x) const = 0;
   virtual void assemble() const = 0;
-  virtual bool bounded() const = 0;
+  virtual bool entriesFinite() const = 0;
 
  protected:
   SparseLcpOperator() = default;

@@ -186,11 +186,12 @@ namespace {
 
 /* Whether the solve of `p` applies A through its operator: only when it
  * starts on a kept factor (its stale solves then need no entry of A) and
- * the operator vouches for A's finiteness. Decided once, before the solve,
- * so a solve never mixes the operator's products with the stored rows'. */
+ * the operator vouches for A's finiteness (the values' check is skipped
+ * for it: ValidateSparse, ValidateSparseValues). Decided once per call, so
+ * a solve never mixes the operator's products with the stored rows'. */
 bool AppliesOperator(const SparseLcpProblem &p, const KeaOptions &o, const KeaWorkspace &workspace) {
   return p.op && o.method == KeaMethod::ActiveSet &&
-         workspace.backend.startsStale(p, o.epsilon, o.envelopeRows, o.factorMemory) && p.op->bounded();
+         workspace.backend.startsStale(p, o.epsilon, o.envelopeRows, o.factorMemory) && p.op->entriesFinite();
 }
 
 void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &workspace, KeaResult &result) {

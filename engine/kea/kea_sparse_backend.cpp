@@ -7,6 +7,7 @@
 #include <Eigen/OrderingMethods>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 namespace karma::kea::detail {
@@ -249,8 +250,10 @@ void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const M
   for (std::size_t a = 0; a < m; ++a) y[a] = eps_ * x[a] + y[a];
 }
 
-/* The largest component of (|A + eps I|)_FF |x| (the scale of the rounding
- * of multiplyFree's y), right after multiplyFree(rows, x, ...) scattered x. */
+/* The largest component of (|A + eps I|)_FF |x|, or with an operator an
+ * upper bound of it (absTimesMax, plus |eps| max|x|): the scale of the
+ * rounding of multiplyFree's y. Right after multiplyFree(rows, x, ...),
+ * which scattered x into cgFull_. */
 MeReal SparseBackend::productScale(const std::vector<int> &rows, std::span<const MeReal> x) const {
   const SparseLcpProblem &p = *p_;
   if (p.op) {
@@ -289,9 +292,14 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
   cgZ_.resize(m);
   cgD_.resize(m);
   cgQ_.resize(m);
+  /* The largest |component|, infinite when one is not finite (so that a
+   * non-finite residual is never accepted). */
   auto largest = [](const std::vector<MeReal> &v) {
     MeReal big = 0;
-    for (MeReal e : v) big = std::max(big, std::fabs(e));
+    for (MeReal e : v) {
+      if (!std::isfinite(e)) return std::numeric_limits<MeReal>::infinity();
+      big = std::max(big, std::fabs(e));
+    }
     return big;
   };
   auto dot = [this, m](const std::vector<MeReal> &a, const std::vector<MeReal> &b) {
@@ -401,14 +409,14 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
   const auto n = static_cast<std::size_t>(p.n);
   rhs_.resize(rows.size());
   if (p.op) {
-    cgFull_.assign(n, MeReal(0));
+    rhsFull_.assign(n, MeReal(0)); /* lambda_C, zero on the free rows */
     bool any = false;
     for (std::size_t j = 0; j < n; ++j)
       if (set[j] != Free && lambda[j] != 0) {
-        cgFull_[j] = lambda[j];
+        rhsFull_[j] = lambda[j];
         any = true;
       }
-    if (any) p.op->times(rows.data(), rows.size(), cgFull_.data(), rhs_.data());
+    if (any) p.op->times(rows.data(), rows.size(), rhsFull_.data(), rhs_.data());
     for (std::size_t a = 0; a < rows.size(); ++a) rhs_[a] = any ? p.b[U(rows[a])] - rhs_[a] : p.b[U(rows[a])];
     return;
   }

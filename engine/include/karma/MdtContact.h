@@ -158,8 +158,14 @@ MEPUBLIC MeReal MEAPI MdtContactGetImpulse(const MdtContactID c, MeVector3 frict
 /* Forgets the impulses: the next solve starts this contact from zero. */
 MEPUBLIC void MEAPI MdtContactClearImpulse(const MdtContactID c);
 
-/* Enabled contacts touching a body (stand-alone or in enabled groups), in a
- * fixed order; NULL at the end. */
+/* Enabled contacts touching a body (stand-alone or in enabled groups); NULL
+ * at the end. The order follows the body's constraints, the most recently
+ * enabled first, a group's contacts together in the group's order; enabling
+ * or re-binding a constraint of the body changes it. The walk costs the
+ * body's constraints, not the world's. The contact passed to Next must be
+ * one the walk returned, not removed from its group, regrouped or destroyed
+ * since; a contact that does not act on the body ends the walk with a
+ * warning. */
 MEPUBLIC MdtContactID MEAPI MdtBodyGetFirstContact(const MdtBodyID body);
 MEPUBLIC MdtContactID MEAPI MdtBodyGetNextContact(const MdtBodyID body, const MdtContactID c);
 

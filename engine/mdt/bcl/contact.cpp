@@ -368,7 +368,7 @@ MdtContactID MEAPI MdtBodyGetNextContact(const MdtBodyID body, const MdtContactI
   if (!checkType(c, kContactType, fn)) return nullptr;
   MdtConstraint *entry = entryOf(body, c);
   ME_REQUIRE_ARG_RET(entry != nullptr, nullptr, fn, "the contact does not act on this body");
-  if (c->owner && c->next) return c->next;
+  if (c->owner && c->owner->enabled && c->next) return c->next;
   return firstFrom(body, nextAtBody(entry, body));
 }
 

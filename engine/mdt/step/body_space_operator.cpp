@@ -53,30 +53,35 @@ void BodySpaceOperator::prepare() const {
   u_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
   // |M_b^-1 J^T| <= w_b max|J| per component, w_b = max(1/m_b, 3 max|I_b^-1|).
   MeReal largestJ = 0, largestW = 0, largestSoftness = 0;
+  bool finite = true;  // every input; std::max alone would pass a NaN over
+  auto note = [&finite](MeReal &largest, MeReal v) {
+    finite = finite && std::isfinite(v);
+    largest = std::max(largest, std::fabs(v));
+  };
   for (int b = 0; b < p.bodyCount; ++b) {
-    MeReal w = p.invMass[(size_t)b];
-    for (int k = 0; k < 9; ++k) w = std::max(w, 3 * std::fabs(p.invInertia[(size_t)b * 9 + (size_t)k]));
-    largestW = std::max(largestW, w);
+    note(largestW, p.invMass[(size_t)b]);
+    for (int k = 0; k < 9; ++k) note(largestW, 3 * p.invInertia[(size_t)b * 9 + (size_t)k]);
   }
   for (int r = 0; r < p.rowCount; ++r) {
-    largestSoftness = std::max(largestSoftness, std::fabs(p.softness[(size_t)r]));
+    note(largestSoftness, p.softness[(size_t)r]);
     for (int side = 0; side < 2; ++side) {
       if ((side == 0 ? p.body0[(size_t)r] : p.body1[(size_t)r]) < 0) continue;
       MeReal *J = &J_[((size_t)r * 2 + (size_t)side) * kSide];
       sideMinvJt(p, r, side, &minvJt_[((size_t)r * 2 + (size_t)side) * kSide]);
       for (int c = 0; c < 6; ++c) {
         J[c] = p.J[(size_t)r * 12 + (size_t)side * 6 + (size_t)c];
-        largestJ = std::max(largestJ, std::fabs(J[c]));
+        note(largestJ, J[c]);
       }
     }
   }
-  bounded_ =
-      12 * (double)largestJ * (double)largestJ * (double)largestW + (double)largestSoftness <= (double)ME_REAL_MAX;
+  const double entryBound = 12 * (double)largestJ * (double)largestJ * (double)largestW + (double)largestSoftness;
+  const double factorBound = (double)largestJ * (double)largestW;  // |M^-1 J^T|
+  entriesFinite_ = finite && entryBound <= (double)ME_REAL_MAX / 2 && factorBound <= (double)ME_REAL_MAX / 2;
 }
 
-bool BodySpaceOperator::bounded() const {
+bool BodySpaceOperator::entriesFinite() const {
   prepare();
-  return bounded_;
+  return entriesFinite_;
 }
 
 template <bool Absolute>

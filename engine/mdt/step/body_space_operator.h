@@ -19,14 +19,14 @@
 // at most the sum over the shared bodies of |J_i,b| |M_b^-1 J_j,b^T|) and
 // the rounding of times, which rounds those same terms.
 //
-// Finite entries (bounded, kea_lcp.h). The problem's values are finite
-// (collect_rows.cpp drops a constraint with a non-finite row; masses and
-// inertias are checked where they are set). Every entry of A and every
-// term of its sums is then finite when
-//     12 max|J| (max|J| max_b w_b) + max softness <= the largest MeReal,
-// with w_b = max(1/m_b, 3 max|I_b^-1|), which bounds each component of
-// M_b^-1 J^T by w_b max|J| (a body flung to the edge of the range breaks
-// it; Kea then assembles A and checks it).
+// Finite entries (entriesFinite, kea_lcp.h): every input is finite, and
+//     12 max|J| (max|J| max_b w_b) + max softness <= half the largest MeReal,
+// with w_b = max(1/m_b, 3 max|I_b^-1|): each component of M_b^-1 J^T is
+// at most w_b max|J| (also kept within half the range), and an entry of A
+// sums at most 12 products |J_i,b,c| |(M_b^-1 J_j,b^T)_c| (two shared
+// bodies, six components) and the softness; the half leaves room for
+// rounding. A body flung to the edge of the range breaks it, and Kea then
+// assembles A and checks it.
 //
 // Lazy: M^-1 J^T and the bound are made at the first call that needs them,
 // so a solve that assembles A first (no kept factor) pays nothing here.
@@ -53,14 +53,14 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
 
   void times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const override;
   MeReal absTimesMax(const int *rows, std::size_t count, const MeReal *x) const override;
-  bool bounded() const override;
+  bool entriesFinite() const override;
 
  protected:
   BodySpaceOperator(const BodySpaceOperator &) = default;
   ~BodySpaceOperator() = default;
 
  private:
-  // minvJt_ and bounded_, once.
+  // minvJt_ and entriesFinite_, once.
   void prepare() const;
   // u = the per-body sums of the rows' (|M^-1 J^T|) x, of absolute values
   // when Absolute.
@@ -75,7 +75,7 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
   mutable std::span<MeReal> minvJt_;  // 2 kSide per row: side 0, side 1 (zeros for no body)
   mutable std::span<MeReal> J_;       // the rows' J in the same layout
   mutable std::span<MeReal> u_;       // kSide per body
-  mutable bool prepared_ = false, bounded_ = false;
+  mutable bool prepared_ = false, entriesFinite_ = false;
 };
 
 }  // namespace karma::mdt

@@ -295,24 +295,25 @@ class PartitionMatrix final : public BodySpaceOperator {
  public:
   PartitionMatrix(const BodySpaceProblem &p, StepArena &arena, const PartitionMemory &memory)
       : BodySpaceOperator(p, arena),
-        p_(p),
-        arena_(arena),
+        problem_(p),
+        scratch_(arena),
         memory_(memory),
         val_(arena.take<MeReal>(memory.col.size())) {}
   ~PartitionMatrix() = default;
   PartitionMatrix(const PartitionMatrix &) = delete;
   PartitionMatrix &operator=(const PartitionMatrix &) = delete;
 
-  std::span<const MeReal> values() const { return val_; }
+  // Where assemble() puts A's values: unfilled until then.
+  std::span<const MeReal> storage() const { return val_; }
   void assemble() const override {
     if (assembled_) return;
-    fillValues(p_, arena_, memory_, val_);
+    fillValues(problem_, scratch_, memory_, val_);
     assembled_ = true;
   }
 
  private:
-  const BodySpaceProblem &p_;
-  StepArena &arena_;
+  const BodySpaceProblem &problem_;
+  StepArena &scratch_;
   const PartitionMemory &memory_;
   std::span<MeReal> val_;
   mutable bool assembled_ = false;
@@ -386,7 +387,7 @@ class KeaSolver final : public PartitionSolver {
     prob.n = p.rowCount;
     prob.rowStart = memory.rowStart;
     prob.col = memory.col;
-    prob.val = a.values();
+    prob.val = a.storage();
     prob.op = &a;
     prob.b = p.rhs;
     prob.lo = p.lo;

@@ -34,7 +34,7 @@ constexpr double kTol = 2e-3;
 class ReversedRows final : public SparseLcpOperator {
  public:
   explicit ReversedRows(const ContactProblem &p, bool bounded = true)
-      : p_(p), values_(p.val.size(), std::numeric_limits<MeReal>::quiet_NaN()), bounded_(bounded) {}
+      : p_(p), values_(p.val.size(), std::numeric_limits<MeReal>::quiet_NaN()), entriesFinite_(bounded) {}
 
   SparseLcpProblem problem() const {
     SparseLcpProblem s = p_.sparse();
@@ -52,7 +52,7 @@ class ReversedRows final : public SparseLcpOperator {
     for (std::size_t a = 0; a < count; ++a) largest = std::max(largest, rowSum(rows ? rows[a] : (int)a, x, true));
     return largest;
   }
-  bool bounded() const override { return bounded_; }
+  bool entriesFinite() const override { return entriesFinite_; }
   void assemble() const override {
     if (values_[0] == values_[0]) return;  // already filled
     values_ = p_.val;
@@ -72,7 +72,7 @@ class ReversedRows final : public SparseLcpOperator {
   const ContactProblem &p_;
   mutable std::vector<MeReal> values_;
   mutable int assembled_ = 0;
-  bool bounded_;
+  bool entriesFinite_;
 };
 
 std::vector<std::pair<std::string, ContactProblem>> Problems() {

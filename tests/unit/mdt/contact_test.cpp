@@ -245,11 +245,14 @@ TEST(Contact, ABodysWalkReachesEachContactActingOnItOnce) {
   MdtBSJointEnable(joint);
   MdtContactGroupID live = MdtContactGroupCreate(w);
   MdtContactGroupSetBodies(live, c, a);
-  for (int i = 0; i < 3; ++i) expected.insert(MdtContactGroupCreateContact(live));
+  std::set<MdtContactID> ofLive;
+  for (int i = 0; i < 3; ++i) ofLive.insert(MdtContactGroupCreateContact(live));
+  expected.insert(ofLive.begin(), ofLive.end());
   MdtContactID joined = alone(c, a, true);  // linked while alone
   MdtContactDisable(joined);
   MdtContactGroupAppendContact(live, joined);
   expected.insert(joined);
+  ofLive.insert(joined);
   MdtContactGroupEnable(live);
   MdtContactGroupID off = MdtContactGroupCreate(w);
   MdtContactGroupSetBodies(off, a, b);
@@ -264,6 +267,13 @@ TEST(Contact, ABodysWalkReachesEachContactActingOnItOnce) {
   int atC = 0;
   for (MdtContactID k = MdtBodyGetFirstContact(c); k; k = MdtBodyGetNextContact(c, k)) ++atC;
   EXPECT_EQ(atC, 5);
+  // A group disabled in the middle of a walk: the rest of it is not reached.
+  MdtContactID k = MdtBodyGetFirstContact(c);
+  while (k && !ofLive.count(k)) k = MdtBodyGetNextContact(c, k);
+  ASSERT_NE(k, nullptr);
+  MdtContactGroupDisable(live);
+  for (k = MdtBodyGetNextContact(c, k); k; k = MdtBodyGetNextContact(c, k)) EXPECT_EQ(ofLive.count(k), 0u);
+  MdtContactGroupEnable(live);
   // A contact asked for from a body it does not act on ends the walk, with a warning.
   WarningCapture cap;
   EXPECT_EQ(MdtBodyGetNextContact(c, onGround), nullptr);
