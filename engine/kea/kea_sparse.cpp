@@ -228,6 +228,7 @@ void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &w
 }  // namespace
 
 void KeaSolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &workspace, KeaResult &result) {
+  workspace.backend.offerOperator(p.op != nullptr);
   if (!p.op || AppliesOperator(p, o, workspace)) {
     SolveSparse(p, o, workspace, result);
     return;

@@ -296,11 +296,12 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
    * non-finite residual is never accepted). */
   auto largest = [](const std::vector<MeReal> &v) {
     MeReal big = 0;
+    bool finite = true;
     for (MeReal e : v) {
-      if (!std::isfinite(e)) return std::numeric_limits<MeReal>::infinity();
+      finite &= std::isfinite(e);
       big = std::max(big, std::fabs(e));
     }
-    return big;
+    return finite ? big : std::numeric_limits<MeReal>::infinity();
   };
   auto dot = [this, m](const std::vector<MeReal> &a, const std::vector<MeReal> &b) {
     return platform::Dot(*kernels_, a.data(), b.data(), static_cast<int>(m));
@@ -444,7 +445,10 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
   const bool envelopeWasFresh = envelopeFresh_;
   envelopeFresh_ = false;
   if (envelopeRows_ == 0 && DenseFits(m, U(p_->n), U(p_->rowStart[U(p_->n)])) && factoriseDense(set)) {
-    staleWorthIt_ = memory_ == KeaFactorMemory::Always;
+    staleWorthIt_ = memory_ == KeaFactorMemory::Always ||
+                    (operatorOffered_ && staleIterationsExpected_ <= kDenseStaleIterations);
+    if (!staleWorthIt_)
+      staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
     rememberFactor();
     return;
   }

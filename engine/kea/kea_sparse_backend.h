@@ -9,9 +9,12 @@
  *    (DenseFits; a car, whose rows all share the chassis): the envelope's
  *    Crout order would be a chain of dot products, each waiting on the
  *    entry before, while the dense updates run in vector lanes
- *    (docs/NOTES.md, "Dense small blocks"). Such a factor is not kept as a
- *    stale one (below) unless the memory is KeaFactorMemory::Always:
- *    refactorising costs about as much as one conjugate-gradient step.
+ *    (docs/NOTES.md, "Dense small blocks"). Such a factor is kept as a
+ *    stale one (below) only for a caller that offers an operator (then a
+ *    stale solve needs neither A's values nor a factorisation; see
+ *    kDenseStaleIterations) or under KeaFactorMemory::Always: with A
+ *    assembled anyway, refactorising costs about as much as one
+ *    conjugate-gradient step.
  *
  *  - Envelope LDL^T (kea_envelope_ldlt.h), allocation-free once its arrays
  *    have grown to the problem, and faster than the sparse LDL^T on small
@@ -130,6 +133,12 @@ class SparseBackend {
   static constexpr MeReal kStaleIterationsPrior = 2;
   static constexpr MeReal kStaleLearningRate = MeReal(0.25);
   static constexpr MeReal kStaleRecoveryRate = MeReal(1) / 16;
+  /* A dense factor is kept for the next problem (WhenCheaper) when the
+   * caller offers an operator (offerOperator) and this workspace's stale
+   * solves take at most this many iterations on average: a stale solve
+   * then applies A through the operator, so it saves the assembly as well
+   * as the factorisation (docs/NOTES.md, "Stale solves without A"). */
+  static constexpr MeReal kDenseStaleIterations = 2;
 
   /* Starts a solve of `p` (which must outlive it) with eps on the diagonal;
    * forgets the previous problem's ordering and factorisation, keeps the
@@ -138,6 +147,10 @@ class SparseBackend {
    * `target` is the largest residual component a solve with it may leave. */
   void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0, KeaFactorMemory memory = KeaFactorMemory::Off,
              MeReal target = 0);
+
+  /* Whether the problems come with an operator (SparseLcpProblem::op),
+   * whether or not this solve applies it: the dense factor's keep rule. */
+  void offerOperator(bool offered) { operatorOffered_ = offered; }
 
   /* The backend of the array kernels from now on (default: the reference). */
   void useKernels(const platform::Kernels &kernels) { kernels_ = &kernels; }
@@ -263,6 +276,7 @@ class SparseBackend {
   bool staleWorthIt_ = false;
   KeaFactorMemory memory_ = KeaFactorMemory::Off; /* reset's */
   MeReal target_ = 0;
+  bool operatorOffered_ = false;
   std::vector<MeReal> cgR_, cgZ_, cgD_, cgQ_, cgFull_;
   int staleSolves_ = 0, staleIterations_ = 0;
   MeReal staleIterationsExpected_ = kStaleIterationsPrior; /* running mean, kept across problems */

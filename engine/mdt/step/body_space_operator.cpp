@@ -55,7 +55,7 @@ void BodySpaceOperator::prepare() const {
   MeReal largestJ = 0, largestW = 0, largestSoftness = 0;
   bool finite = true;  // every input; std::max alone would pass a NaN over
   auto note = [&finite](MeReal &largest, MeReal v) {
-    finite = finite && std::isfinite(v);
+    finite &= std::isfinite(v);
     largest = std::max(largest, std::fabs(v));
   };
   for (int b = 0; b < p.bodyCount; ++b) {

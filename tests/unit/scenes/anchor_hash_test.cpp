@@ -34,10 +34,10 @@ struct PinnedHash {
 // clang-format off
 constexpr PinnedHash kPinned[] = {
     {"car",      300,  "0x06adb4d0f5bd0888", "0xc5f9e6d2d605d049"},
-    {"topple",   600,  "0xb234b6828a4d9aba", "0xda7bf17dccf89bda"},
-    {"ragdoll",  600,  "0x7c960a64245f9c1e", "0x882126e45f453a49"},
+    {"topple",   600,  "0xbe60e17f3ff3a9aa", "0x19b5f811b0316a7f"},
+    {"ragdoll",  600,  "0xe29a0f598a48431a", "0x1f2ed0f628043fe0"},
     {"stack21",  1200, "0x8e76ecf9b2a82504", "0xe3a79de7146be07c"},
-    {"pile1000", 60,   "0x69a10fd0fe3812a9", "0xff35fd934fff2c4e"},
+    {"pile1000", 60,   "0xafdc5183185b139e", "0x549361fda7e6c8d3"},
 };
 // clang-format on
 
