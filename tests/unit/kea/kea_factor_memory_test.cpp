@@ -9,6 +9,7 @@
 // or another epsilon (or another sparsity stamp) never uses the kept factor;
 // a stamped sparsity gives the unstamped answers; without a factor memory
 // nothing is kept; WhenCheaper keeps a factor while its stale solves pay.
+#include "kea_tolerance.h"
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
 
@@ -26,11 +27,7 @@ using kea_test::ContactProblem;
 
 namespace {
 
-#if KARMA_DOUBLE
-constexpr double kTol = 1e-8;
-#else
-constexpr double kTol = 2e-3;
-#endif
+using kea_test::kTol;
 
 struct Named {
   std::string name;

@@ -1,4 +1,5 @@
 // Tests of the Kea boxed-LCP contract (engine/kea/kea_lcp.h).
+#include "kea_tolerance.h"
 #include "kea_lcp.h"
 #include "kea_enumerate.h"
 #include "support/warning_capture.h"
@@ -18,11 +19,7 @@ using namespace karma::kea;
 
 namespace {
 
-#if KARMA_DOUBLE
-constexpr double kTol = 1e-8;  // relative agreement with the double reference
-#else
-constexpr double kTol = 2e-3;
-#endif
+using kea_test::kTol;
 
 const MeReal kInf = MEINFINITY;
 

@@ -10,6 +10,7 @@
 // and, when it ends on that factor, assembles nothing; a far problem
 // assembles once; PGS assembles first; an operator that does not vouch for
 // its values is assembled and checked.
+#include "kea_tolerance.h"
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
 
@@ -25,11 +26,7 @@ using kea_test::ContactProblem;
 
 namespace {
 
-#if KARMA_DOUBLE
-constexpr double kTol = 1e-8;
-#else
-constexpr double kTol = 2e-3;
-#endif
+using kea_test::kTol;
 
 class ReversedRows final : public SparseLcpOperator {
  public:

@@ -2,6 +2,7 @@
 // agreement with the dense solvers on random body-structured problems, with
 // and without friction; small problems against exhaustive enumeration of the
 // active sets; a 3000-row chain; bad CSR input; the iteration cap; cycles.
+#include "kea_tolerance.h"
 #include "kea_lcp.h"
 #include "kea_enumerate.h"
 #include "support/warning_capture.h"
@@ -23,11 +24,7 @@ using namespace karma::kea;
 
 namespace {
 
-#if KARMA_DOUBLE
-constexpr double kTol = 1e-8;
-#else
-constexpr double kTol = 2e-3;
-#endif
+using kea_test::kTol;
 
 const MeReal kInf = MEINFINITY;
 

@@ -5,6 +5,7 @@
 // the next of a resting scene) converges in a few solves; the workspace
 // entry point gives bit-identical answers to the allocating one; the two
 // factorisations of the free blocks (sparse, envelope) give the same answers.
+#include "kea_tolerance.h"
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
 
@@ -20,11 +21,7 @@ using kea_test::ContactProblem;
 
 namespace {
 
-#if KARMA_DOUBLE
-constexpr double kTol = 1e-8;
-#else
-constexpr double kTol = 2e-3;
-#endif
+using kea_test::kTol;
 
 struct Named {
   std::string name;
