@@ -7,8 +7,8 @@
 #include <Eigen/OrderingMethods>
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 
 namespace karma::kea::detail {
 namespace {
@@ -417,8 +417,12 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
         rhsFull_[j] = lambda[j];
         any = true;
       }
-    if (any) p.op->times(rows.data(), rows.size(), rhsFull_.data(), rhs_.data());
-    for (std::size_t a = 0; a < rows.size(); ++a) rhs_[a] = any ? p.b[U(rows[a])] - rhs_[a] : p.b[U(rows[a])];
+    if (!any) {
+      for (std::size_t a = 0; a < rows.size(); ++a) rhs_[a] = p.b[U(rows[a])];
+      return;
+    }
+    p.op->times(rows.data(), rows.size(), rhsFull_.data(), rhs_.data());
+    for (std::size_t a = 0; a < rows.size(); ++a) rhs_[a] = p.b[U(rows[a])] - rhs_[a];
     return;
   }
   rhsFull_.assign(p.b.begin(), p.b.begin() + static_cast<std::ptrdiff_t>(n));
