@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace karma::kea::detail {
@@ -122,6 +123,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
                           MeReal target) {
   factorizations_ = staleSolves_ = staleIterations_ = 0;
   envelopeFresh_ = false;
+  productValid_ = false; /* made for the previous problem */
   target_ = target;
   if (startsStale(p, eps, envelopeRows, memory)) {
     /* The orderings depend on the sparsity only: they stay too. */
@@ -172,9 +174,25 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
 }
 
 MeReal SparseBackend::residual(std::span<const MeReal> lambda, std::span<MeReal> w) {
-  if (w.size() == lambda.size()) return SparseMultiplyResidual(*kernels_, *p_, eps_, lambda, w);
-  wScratch_.resize(lambda.size());
-  return SparseMultiplyResidual(*kernels_, *p_, eps_, lambda, wScratch_);
+  std::span<MeReal> out = w;
+  if (w.size() != lambda.size()) {
+    wScratch_.resize(lambda.size());
+    out = wScratch_;
+  }
+  if (!productOf(lambda)) return SparseMultiplyResidual(*kernels_, *p_, eps_, lambda, out);
+  const SparseLcpProblem &p = *p_;
+  for (std::size_t i = 0; i < lambda.size(); ++i) out[i] = (-p.b[i] + eps_ * lambda[i]) + productFull_[i];
+  return ComplementarityResidual(Rows(p), lambda, out);
+}
+
+/* Whether productFull_ holds A lambda: the last multiplyFree covered every
+ * row of this problem through its operator, and the vector it multiplied
+ * is lambda, bit for bit. The operator's product of a row is a function of
+ * the whole vector only (the bodies' sums), so it is the one
+ * SparseMultiplyResidual would compute. */
+bool SparseBackend::productOf(std::span<const MeReal> lambda) const {
+  return productValid_ && p_->op && lambda.size() == cgFull_.size() &&
+         std::memcmp(lambda.data(), cgFull_.data(), lambda.size() * sizeof(MeReal)) == 0;
 }
 
 void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo,
@@ -247,6 +265,13 @@ void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const M
   cgFull_.assign(static_cast<std::size_t>(p.n), MeReal(0));
   for (std::size_t a = 0; a < m; ++a) cgFull_[U(rows[a])] = x[a];
   RowsTimes(*kernels_, p, rows.data(), m, cgFull_.data(), y.data());
+  /* Every row free: the product is A times the whole vector, which the
+   * residual of the same lambda reuses (productOf). */
+  productValid_ = p.op && m == U(p.n);
+  if (productValid_) {
+    productFull_.resize(m);
+    for (std::size_t a = 0; a < m; ++a) productFull_[U(rows[a])] = y[a];
+  }
   for (std::size_t a = 0; a < m; ++a) y[a] = eps_ * x[a] + y[a];
 }
 

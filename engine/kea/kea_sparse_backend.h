@@ -188,6 +188,7 @@ class SparseBackend {
   const std::vector<int> &factorOrder() const;
   void multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y);
   MeReal productScale(const std::vector<int> &rows, std::span<const MeReal> x) const;
+  bool productOf(std::span<const MeReal> lambda) const;
   std::span<const MeReal> values() const;
   bool solveStale(const std::vector<int> &rows);
   bool solveStaleAndLearn(const std::vector<int> &rows);
@@ -278,6 +279,10 @@ class SparseBackend {
   MeReal target_ = 0;
   bool operatorOffered_ = false;
   std::vector<MeReal> cgR_, cgZ_, cgD_, cgQ_, cgFull_;
+  /* (A x)_i of multiplyFree's last product for every row i when it
+   * covered them all (productValid_; x is cgFull_), before eps is added. */
+  std::vector<MeReal> productFull_;
+  bool productValid_ = false;
   int staleSolves_ = 0, staleIterations_ = 0;
   MeReal staleIterationsExpected_ = kStaleIterationsPrior; /* running mean, kept across problems */
 };
