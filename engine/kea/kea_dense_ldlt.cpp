@@ -4,17 +4,32 @@
 #include "kea_envelope_ldlt.h"
 
 #include <algorithm>
+#include <cstring>
 #include <utility>
 
 namespace karma::kea::detail {
 namespace {
 
-/* y[c] -= s * x[c] on whole groups of kLanes values (count a multiple of
- * kLanes): one element at a time, in lanes, no remainder loop. */
-void SubtractScaledLanes(MeReal *__restrict y, const MeReal *__restrict x, MeReal s, std::size_t count) {
-  constexpr auto kLanes = static_cast<std::size_t>(DenseLdlt::kLanes);
-  for (std::size_t c = 0; c < count; c += kLanes)
-    for (std::size_t l = 0; l < kLanes; ++l) y[c + l] = y[c + l] - s * x[c + l];
+/* y[c] = (y[c] - s0 * x0[c]) - s1 * x1[c] on whole groups of kLanes
+ * values (count a multiple of kLanes), one element at a time, in lanes, no
+ * remainder loop: each element rounded as by a pass with row 0 and then
+ * one with row 1. */
+void SubtractTwoScaledLanes(MeReal *__restrict y, const MeReal *__restrict x0, MeReal s0,
+                            const MeReal *__restrict x1, MeReal s1, std::size_t count) {
+  /* GCC's vector extension, 16 bytes (every x86-64 processor's width):
+   * element by element, so each rounds as the scalar expression does. */
+  using Lanes = MeReal __attribute__((vector_size(16)));
+  constexpr std::size_t kPer = 16 / sizeof(MeReal);
+  static_assert(DenseLdlt::kLanes % kPer == 0);
+  auto load = [](const MeReal *from) {
+    Lanes v;
+    std::memcpy(&v, from, sizeof v);
+    return v;
+  };
+  for (std::size_t c = 0; c < count; c += kPer) {
+    const Lanes v = (load(y + c) - s0 * load(x0 + c)) - s1 * load(x1 + c);
+    std::memcpy(y + c, &v, sizeof v);
+  }
 }
 
 /* Row j of the factorisation, columns from .. from + Width - 1 (from = j
@@ -110,23 +125,44 @@ void DenseLdlt::solve(std::span<const MeReal> rhs, std::span<MeReal> x) const {
   std::fill(work.begin() + static_cast<std::ptrdiff_t>(n), work.end(), MeReal(0));
   /* z_k = y_k r_k; y_c -= u_kc z_k for the rows below, in whole lanes from
    * column k + 1 rounded down: the columns up to k of work are spent (z_k
-   * is in x), so what the scratch part of row k does to them is never read. */
-  for (std::size_t k = 0; k < n; ++k) {
+   * is in x), so what the scratch part of row k does to them is never read.
+   * Rows k and k + 1 go in one pass: y_k+1 first receives row k's term
+   * alone (what row k's pass would leave there), which gives z_k+1; then
+   * every column receives row k's term and row k + 1's, in that order.
+   * Columns that only row k's pass would cover are up to k + 1, spent too,
+   * and row k + 1 is zero or scratch from there (begin()). */
+  std::size_t k = 0;
+  for (; k + 1 < n; k += 2) {
+    const MeReal *rowK = upper.data() + k * s, *rowNext = rowK + s;
     const MeReal z = work[k] * reciprocal[k];
+    const MeReal zNext = (work[k + 1] - z * rowK[k + 1]) * reciprocal[k + 1];
     x[k] = z;
+    x[k + 1] = zNext;
     const std::size_t from = (k + 1) / lanes * lanes;
-    SubtractScaledLanes(work.data() + from, upper.data() + k * s + from, z, s - from);
+    SubtractTwoScaledLanes(work.data() + from, rowK + from, z, rowNext + from, zNext, s - from);
   }
+  if (k < n) x[k] = work[k] * reciprocal[k];
   /* L^T x = z by rows of L from the bottom: x_c is final once the rows
    * below it have been subtracted; it is taken out before its own row runs
-   * over columns c .. (c rounded up) - 1, which are spent. */
+   * over columns c .. (c rounded up) - 1, which are spent. Rows c and c - 1
+   * go in one pass, as above: x_c-1 receives row c's term alone first. */
   std::copy(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(n), work.begin());
-  for (std::size_t c = n; c-- > 1;) {
+  std::size_t c = n - 1;
+  for (; c >= 2; c -= 2) {
+    const MeReal *rowC = lower.data() + c * s, *rowBefore = rowC - s;
     const MeReal xc = work[c];
+    const MeReal xBefore = work[c - 1] - xc * rowC[c - 1];
     x[c] = xc;
-    SubtractScaledLanes(work.data(), lower.data() + c * s, xc, (c + lanes - 1) / lanes * lanes);
+    x[c - 1] = xBefore;
+    SubtractTwoScaledLanes(work.data(), rowC, xc, rowBefore, xBefore, (c + lanes - 1) / lanes * lanes);
   }
-  x[0] = work[0];
+  if (c == 1) {
+    const MeReal x1 = work[1];
+    x[1] = x1;
+    x[0] = work[0] - x1 * lower[s];
+  } else {
+    x[0] = work[0];
+  }
 }
 
 }  // namespace karma::kea::detail
