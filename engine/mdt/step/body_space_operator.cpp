@@ -48,8 +48,8 @@ void BodySpaceOperator::prepare() const {
   if (prepared_) return;
   prepared_ = true;
   const BodySpaceProblem &p = *p_;
-  minvJt_ = arena_->filled<MeReal>((size_t)p.rowCount * 2 * kSide, 0);
-  J_ = arena_->filled<MeReal>((size_t)p.rowCount * 2 * kSide, 0);
+  minvJt_ = arena_->take<MeReal>((size_t)p.rowCount * 2 * kSide);
+  J_ = arena_->take<MeReal>((size_t)p.rowCount * 2 * kSide);
   u_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
   // |M_b^-1 J^T| <= w_b max|J| per component, w_b = max(1/m_b, 3 max|I_b^-1|).
   MeReal largestJ = 0, largestW = 0, largestSoftness = 0;
@@ -65,9 +65,18 @@ void BodySpaceOperator::prepare() const {
   for (int r = 0; r < p.rowCount; ++r) {
     note(largestSoftness, p.softness[(size_t)r]);
     for (int side = 0; side < 2; ++side) {
-      if ((side == 0 ? p.body0[(size_t)r] : p.body1[(size_t)r]) < 0) continue;
+      // Every lane of both arrays is written: the six values and two zeros,
+      // or eight zeros for a side without a body.
       MeReal *J = &J_[((size_t)r * 2 + (size_t)side) * kSide];
-      sideMinvJt(p, r, side, &minvJt_[((size_t)r * 2 + (size_t)side) * kSide]);
+      MeReal *minvJt = &minvJt_[((size_t)r * 2 + (size_t)side) * kSide];
+      std::fill(J + 6, J + kSide, MeReal(0));
+      std::fill(minvJt + 6, minvJt + kSide, MeReal(0));
+      if ((side == 0 ? p.body0[(size_t)r] : p.body1[(size_t)r]) < 0) {
+        std::fill(J, J + 6, MeReal(0));
+        std::fill(minvJt, minvJt + 6, MeReal(0));
+        continue;
+      }
+      sideMinvJt(p, r, side, minvJt);
       for (int c = 0; c < 6; ++c) {
         J[c] = p.J[(size_t)r * 12 + (size_t)side * 6 + (size_t)c];
         note(largestJ, J[c]);
