@@ -28,6 +28,18 @@ namespace {
   return (s0 + s1) + (s2 + s3);
 }
 
+/* y[k] -= a[k] s, k < count. */
+void SubtractScaled(MeReal *__restrict y, const MeReal *__restrict a, MeReal s, int count) {
+  for (int k = 0; k < count; ++k) y[k] -= a[k] * s;
+}
+
+/* y[k] = (y[k] - a0[k] s0) - a1[k] s1, k < count: each element rounded
+ * as by SubtractScaled with a0 and then with a1. */
+void SubtractTwoScaled(MeReal *__restrict y, const MeReal *__restrict a0, MeReal s0, const MeReal *__restrict a1,
+                       MeReal s1, int count) {
+  for (int k = 0; k < count; ++k) y[k] = (y[k] - a0[k] * s0) - a1[k] * s1;
+}
+
 }  // namespace
 
 bool EnvelopeLdltFactor(int m, std::span<const int> first, std::span<const int> start, std::span<MeReal> value,
@@ -75,12 +87,27 @@ void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> s
   for (int i = 0; i < m; ++i)
     x[static_cast<std::size_t>(i)] /= value[static_cast<std::size_t>(start[static_cast<std::size_t>(i + 1)] - 1)];
   /* L^T x = z, by rows of L from the bottom: x_i is final once the rows
-   * below it have been subtracted. */
+   * below it have been subtracted. Rows i and b = i - 1 go in one pass:
+   * x_b first receives row i's term, then every x_k, k < b, that both rows
+   * reach receives row i's term and row b's, in that order, as two passes
+   * would; where only one row reaches, its term alone. */
   for (int i = m - 1; i > 0; --i) {
     const int fi = first[static_cast<std::size_t>(i)];
+    if (fi == i) continue; /* nothing left of the diagonal */
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
     const MeReal xi = x[static_cast<std::size_t>(i)];
-    for (int k = fi; k < i; ++k) x[static_cast<std::size_t>(k)] -= rowI[k - fi] * xi;
+    const int b = i - 1;
+    const int fb = first[static_cast<std::size_t>(b)];
+    const MeReal *rowB = value.data() + start[static_cast<std::size_t>(b)];
+    const MeReal xb = x[static_cast<std::size_t>(b)] - rowI[b - fi] * xi;
+    x[static_cast<std::size_t>(b)] = xb;
+    const int both = std::max(fi, fb);
+    if (fi < fb)
+      SubtractScaled(x.data() + fi, rowI, xi, fb - fi);
+    else
+      SubtractScaled(x.data() + fb, rowB, xb, fi - fb);
+    SubtractTwoScaled(x.data() + both, rowI + (both - fi), xi, rowB + (both - fb), xb, b - both);
+    --i; /* row b is done */
   }
 }
 
