@@ -216,6 +216,7 @@ void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &w
   workspace.backend.useKernels(detail::KernelsOf(o));
   workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.factorMemory, target);
   detail::ActiveSetCore(rows, first, kName, workspace.backend, workspace.activeSet, result);
+  workspace.backend.learnFrictionRounds(result.frictionRounds);
   result.factorizations = workspace.backend.factorizations();
   result.staleSolves = workspace.backend.staleSolves();
   result.staleIterations = workspace.backend.staleIterations();

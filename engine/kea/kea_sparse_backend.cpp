@@ -42,20 +42,41 @@ MeReal SparseMultiplyResidual(const platform::Kernels &kernels, const SparseLcpP
 
 namespace {
 
+/* What a workspace's stale solves have taken, as running means. */
+struct StaleRecord {
+  MeReal iterations; /* conjugate-gradient iterations a stale solve (a failure: kMaxRefine) */
+  MeReal failures;   /* the fraction of stale solves that failed */
+  MeReal solves;     /* solves of one problem: the first and one per friction round */
+};
+
 /* Whether solving with a stale envelope factor is expected to cost less
- * than factorising afresh: the factorisation costs sum_i (i - first_i)^2
- * multiply-adds; a stale solve about nnz + 2 * envelope (a product with
- * A_FF and two triangular solves) for its first solve with the factor, as
- * much again for the residual that accepts it, and as much per
- * conjugate-gradient iteration, of which it is expected to take
- * `iterations`. */
-bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, MeReal iterations) {
-  std::size_t factorCost = 0;
+ * than factorising afresh, in multiply-adds:
+ *   F = sum_i (i - first_i)^2 for the factorisation, plus
+ *       kAssemblyPerEntry * nnz when the caller offers an operator (A's
+ *       entries must then be assembled for a factorisation; a stale solve
+ *       never assembles them);
+ *   S = nnz + 2 * envelope, one product with A_FF or two triangular
+ *       solves' worth. A stale solve costs about (2 + iterations) S: its
+ *       first solve with the factor, the residual that accepts it, and one
+ *       S per conjugate-gradient iteration (`iterations` counts a failure
+ *       as all it was allowed); with an operator, one S more for the
+ *       operator's preparation (M^-1 J^T of every row). A problem takes
+ *       `solves` of them (each friction round solves again, where on a
+ *       fresh factor it costs two triangular solves), and a failure, at
+ *       rate `failures`, costs a factorisation besides.
+ * Kept when solves (passes + iterations) S + failures F < F. */
+bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOffered, const StaleRecord &record) {
+  std::size_t crout = 0;
   for (int i = 0; i < e.m; ++i) {
     const auto width = static_cast<std::size_t>(i - e.first[U(i)]);
-    factorCost += width * width;
+    crout += width * width;
   }
-  return static_cast<MeReal>(factorCost) > (2 + iterations) * static_cast<MeReal>(nnz + 2 * e.size());
+  const MeReal assembly = operatorOffered ? SparseBackend::kAssemblyPerEntry : MeReal(0);
+  const MeReal passes = operatorOffered ? 3 : 2;
+  const MeReal factorCost = static_cast<MeReal>(crout) + assembly * static_cast<MeReal>(nnz);
+  const MeReal staleCost =
+      record.solves * (passes + record.iterations) * static_cast<MeReal>(nnz + 2 * e.size());
+  return staleCost + record.failures * factorCost < factorCost;
 }
 
 /* Whether the free block (m rows) of an n x n matrix with nnz stored
@@ -373,6 +394,10 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
   return true;
 }
 
+void SparseBackend::learnFrictionRounds(int rounds) {
+  frictionRoundsExpected_ += kStaleLearningRate * (static_cast<MeReal>(rounds) - frictionRoundsExpected_);
+}
+
 /* solveStale, and what it took teaches the expected iteration count (a
  * failure counts as every iteration allowed). */
 bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows) {
@@ -380,6 +405,7 @@ bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows) {
   const bool solved = solveStale(rows);
   const MeReal taken = static_cast<MeReal>(solved ? staleIterations_ - before : kMaxRefine);
   staleIterationsExpected_ += kStaleLearningRate * (taken - staleIterationsExpected_);
+  staleFailureRate_ += kStaleLearningRate * ((solved ? MeReal(0) : MeReal(1)) - staleFailureRate_);
   return solved;
 }
 
@@ -499,12 +525,16 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
       factor_ = useBandOrder_ ? Factor::BandEnvelope : Factor::Envelope;
       envelopeFactorRows_ = rows;
       envelopeFresh_ = !envelope_.broken;
-      staleWorthIt_ = memory_ == KeaFactorMemory::Always ||
-                      StaleSolveWorthIt(envelope_, U(p_->rowStart[U(p_->n)]), staleIterationsExpected_);
-      /* A factor not kept teaches nothing: the expectation drifts back to
-       * the prior so that the factor is tried again. */
-      if (!staleWorthIt_)
+      staleWorthIt_ =
+          memory_ == KeaFactorMemory::Always ||
+          StaleSolveWorthIt(envelope_, U(p_->rowStart[U(p_->n)]), operatorOffered_,
+                            {staleIterationsExpected_, staleFailureRate_, 1 + frictionRoundsExpected_});
+      /* A factor not kept teaches nothing: the expectations drift back to
+       * the priors so that the factor is tried again. */
+      if (!staleWorthIt_) {
         staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
+        staleFailureRate_ -= kStaleRecoveryRate * staleFailureRate_;
+      }
       rememberFactor();
       return;
     }

@@ -49,9 +49,10 @@
  * computation; after kMaxRefine iterations without that the block is
  * refactorised and solved directly. A factor is kept only where this is
  * expected to pay: always for the sparse LDL^T, for an envelope when its
- * factorisation costs more than a stale solve of the iterations this
- * workspace's stale solves have been taking (StaleSolveWorthIt,
- * kStaleIterationsPrior). A stale factor never decides the answer's
+ * factorisation (and, for a caller with an operator, A's assembly) costs
+ * more than the stale solves a problem is expected to take, at the
+ * iterations, failure rate and friction rounds this workspace has seen
+ * (StaleSolveWorthIt, kStaleIterationsPrior). A stale factor never decides the answer's
  * accuracy, only its cost. A factorisation that breaks down (not positive
  * definite, e.g. eps = 0 with redundant rows) falls back to a dense
  * least-squares solve for blocks up to kDenseFallback rows, and to a
@@ -125,12 +126,19 @@ class SparseBackend {
   /* The conjugate-gradient iterations a stale solve is expected to take
    * before this backend has made one, and the weight of each stale solve's
    * count in the running mean that replaces it (a failed one counts
-   * kMaxRefine). A factor is kept for the next problem when refactorising
-   * is expected to cost more than a stale solve of that many iterations;
-   * each factor not kept moves the mean back toward the prior by
+   * kMaxRefine; the failure rate and the friction rounds per problem are
+   * running means of the same weight, from 0). A factor is kept for the
+   * next problem when refactorising is expected to cost more than the
+   * stale solves (StaleSolveWorthIt); each factor not kept moves the
+   * iterations and the failure rate back toward their priors by
    * kStaleRecoveryRate, so that a workspace that learnt to refactorise
-   * tries again now and then. */
+   * tries again now and then. The friction rounds are learnt from every
+   * problem and need no recovery. */
   static constexpr MeReal kStaleIterationsPrior = 2;
+  /* The multiply-adds of assembling one entry of A = J M^-1 J^T + diag
+   * for a factorisation, counted in the envelope's cost model when the
+   * caller offers an operator (StaleSolveWorthIt). */
+  static constexpr MeReal kAssemblyPerEntry = 12;
   static constexpr MeReal kStaleLearningRate = MeReal(0.25);
   static constexpr MeReal kStaleRecoveryRate = MeReal(1) / 16;
   /* A dense factor is kept for the next problem (WhenCheaper) when the
@@ -171,6 +179,11 @@ class SparseBackend {
   /* Whether reset() with these arguments keeps the last factor as a stale
    * one (the solve then starts from it). */
   bool startsStale(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory) const;
+
+  /* The friction rounds the problem since reset() took (KeaResult), which
+   * teaches the cost model how many times a problem solves with its factor:
+   * on a stale factor each round is a stale solve. */
+  void learnFrictionRounds(int rounds);
 
   /* Factorisations since reset(). */
   int factorizations() const { return factorizations_; }
@@ -285,6 +298,8 @@ class SparseBackend {
   bool productValid_ = false;
   int staleSolves_ = 0, staleIterations_ = 0;
   MeReal staleIterationsExpected_ = kStaleIterationsPrior; /* running mean, kept across problems */
+  MeReal staleFailureRate_ = 0;                             /* running mean of failures (1) and successes (0) */
+  MeReal frictionRoundsExpected_ = 0;                       /* running mean per problem (learnFrictionRounds) */
 };
 
 }  // namespace karma::kea::detail

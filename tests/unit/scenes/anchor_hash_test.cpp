@@ -35,9 +35,9 @@ struct PinnedHash {
 constexpr PinnedHash kPinned[] = {
     {"car",      300,  "0x06adb4d0f5bd0888", "0xc5f9e6d2d605d049"},
     {"topple",   600,  "0xbe60e17f3ff3a9aa", "0x19b5f811b0316a7f"},
-    {"ragdoll",  600,  "0xe29a0f598a48431a", "0x1f2ed0f628043fe0"},
-    {"stack21",  1200, "0x8e76ecf9b2a82504", "0xe3a79de7146be07c"},
-    {"pile1000", 60,   "0xafdc5183185b139e", "0x549361fda7e6c8d3"},
+    {"ragdoll",  600,  "0xbf1160105f1e819e", "0x5dc964fd464acac1"},
+    {"stack21",  1200, "0x6c3e2758a63b5b08", "0x99310838d197d99d"},
+    {"pile1000", 60,   "0x10842c7fabfc6556", "0xaa54beacf7515109"},
 };
 // clang-format on
 
