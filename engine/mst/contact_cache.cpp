@@ -1,22 +1,12 @@
 // contact_cache.cpp: the contact matching rule of contact_cache.h.
 #include "contact_cache.h"
+#include "mdt_bridge.h"
 
 using namespace karma::mst;
 
 namespace {
 
 constexpr int kNone = -1;
-
-// The group's contacts, in order, at most kContactBuffer of them, and their
-// features (oldFeature[j] is old[j]'s; the matching does not change them).
-int CollectOld(MdtContactGroupID g, MdtContactID *old, MeU32 *oldFeature) {
-  int n = 0;
-  for (MdtContactID c = MdtContactGroupGetFirstContact(g); c && n < kContactBuffer; c = MdtContactGetNext(c)) {
-    oldFeature[n] = MdtContactGetFeature(c);
-    old[n++] = c;
-  }
-  return n;
-}
 
 // Pass 1 of the rule: equal nonzero features. Returns how many matched.
 int MatchByFeature(const McdContact *cc, int n, const MeU32 *oldFeature, int oldCount, int *match, bool *taken) {
@@ -65,14 +55,11 @@ void MatchByPosition(const McdContact *cc, int n, MdtContactID *old, const MeU32
   }
 }
 
-// Writes collision contact cc into dynamics contact c, whose feature is
-// `feature` already.
-void Assign(MdtContactID c, MeU32 feature, const McdContact &cc, MeReal sign, const MdtContactParams &params) {
-  MdtContactSetPosition(c, cc.position[0], cc.position[1], cc.position[2]);
-  MdtContactSetNormal(c, sign * cc.normal[0], sign * cc.normal[1], sign * cc.normal[2]);
-  MdtContactSetPenetration(c, -cc.separation);
-  MdtContactSetParams(c, const_cast<MdtContactParams *>(&params));
-  if (feature != cc.feature) MdtContactSetFeature(c, cc.feature);
+// Writes collision contact cc into dynamics contact c (the normal turned to
+// body 0's by `sign`).
+void Assign(MdtContactID c, const McdContact &cc, MeReal sign, const MdtContactParams &params) {
+  const MeVector3 normal = {sign * cc.normal[0], sign * cc.normal[1], sign * cc.normal[2]};
+  MdtContactSetFromCollision(c, cc.position, normal, -cc.separation, &params, cc.feature);
 }
 
 }  // namespace
@@ -88,7 +75,10 @@ MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeRe
   int match[kContactBuffer];
   if (n > kContactBuffer) n = kContactBuffer;
   for (int i = 0; i < n; ++i) match[i] = kNone;
-  const int oldCount = g ? CollectOld(g, old, oldFeature) : 0;
+  // The group's contacts, in order, at most kContactBuffer of them, and
+  // their features (oldFeature[j] is old[j]'s; the matching does not change
+  // them).
+  const int oldCount = g ? MdtContactGroupGetContacts(g, old, oldFeature, kContactBuffer) : 0;
   // Contacts beyond the buffer (a group filled by hand) are not this
   // step's contacts either.
   if (oldCount == kContactBuffer) {
@@ -113,18 +103,15 @@ MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeRe
   }
   for (int i = 0; i < n; ++i) {
     MdtContactID c = nullptr;
-    MeU32 feature = 0;
     if (match[i] != kNone) {
       c = old[match[i]];
-      feature = oldFeature[match[i]];
       ++counts.kept;
     } else {
       c = MdtContactGroupCreateContact(g);
       if (!c) break;  // the constraint pool is full (it warned)
-      feature = MdtContactGetFeature(c);
       ++counts.created;
     }
-    Assign(c, feature, cc[i], sign, params);
+    Assign(c, cc[i], sign, params);
     if (perContact && !perContact(result, &result->contacts[i], c)) {
       MdtContactGroupDestroyContact(g, c);
       if (match[i] != kNone) {

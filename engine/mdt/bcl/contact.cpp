@@ -212,6 +212,21 @@ void afterSolve(MdtConstraint *c, const Row *rows, const MeReal *impulse, int n,
   storeContactImpulses(k, rows, impulse, n);
 }
 
+// The normal n / |n|; a non-finite or (nearly) zero n is ignored with a
+// warning naming fn.
+void setNormal(MdtContact *c, const MeVector3 n, const char *fn) {
+  ME_REQUIRE_ARG(realFinite3(n[0], n[1], n[2]), fn, "normal is not finite; ignored");
+  const MeReal len = MeVector3Magnitude(n);
+  ME_REQUIRE_ARG(len > (MeReal)1e-6, fn, "normal has zero length; ignored");
+  MeVector3MultiplyScalar(c->normal, n, 1 / len);
+}
+
+// The penetration; a non-finite one is ignored with a warning naming fn.
+void setPenetration(MdtContact *c, MeReal penetration, const char *fn) {
+  ME_REQUIRE_ARG(realFinite(penetration), fn, "penetration is not finite; ignored");
+  c->penetration = penetration;
+}
+
 void destroy(MdtConstraint *c) {
   auto *contact = as<MdtContact>(c);
   if (contact->owner) MdtContactGroupRemoveContact(static_cast<MdtContactGroup *>(contact->owner), contact);
@@ -231,11 +246,8 @@ extern "C" {
 void MEAPI MdtContactSetNormal(const MdtContactID c, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtContactSetNormal";
   if (!checkType(c, kContactType, fn)) return;
-  ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "normal is not finite; ignored");
-  MeVector3 n = {x, y, z};
-  const MeReal len = MeVector3Magnitude(n);
-  ME_REQUIRE_ARG(len > (MeReal)1e-6, fn, "normal has zero length; ignored");
-  MeVector3MultiplyScalar(c->normal, n, 1 / len);
+  const MeVector3 n = {x, y, z};
+  setNormal(c, n, fn);
 }
 
 void MEAPI MdtContactGetNormal(const MdtContactID c, MeVector3 normal) {
@@ -263,8 +275,7 @@ void MEAPI MdtContactGetDirection(const MdtContactID c, MeVector3 direction) {
 void MEAPI MdtContactSetPenetration(const MdtContactID c, const MeReal penetration) {
   static const char *fn = "MdtContactSetPenetration";
   if (!checkType(c, kContactType, fn)) return;
-  ME_REQUIRE_ARG(realFinite(penetration), fn, "penetration is not finite; ignored");
-  c->penetration = penetration;
+  setPenetration(c, penetration, fn);
 }
 
 MeReal MEAPI MdtContactGetPenetration(const MdtContactID c) {
@@ -318,6 +329,25 @@ void MEAPI MdtContactClearImpulse(const MdtContactID c) {
 MeReal MEAPI MdtContactGetNormalForce(const MdtContactID c) {
   if (!checkType(c, kContactType, "MdtContactGetNormalForce")) return 0;
   return c->normalForce;
+}
+
+// The five setters' effects (bridge/mdt_bridge.h), each with its own check:
+// the position goes to both bodies' frames as MdtConstraintSetPosition does.
+void MEAPI MdtContactSetFromCollision(const MdtContactID c, const MeVector3 position, const MeVector3 normal,
+                                      const MeReal penetration, const MdtContactParams *params, const MeU32 feature) {
+  static const char *fn = "MdtContactSetFromCollision";
+  if (!checkType(c, kContactType, fn)) return;
+  if (realFinite3(position[0], position[1], position[2]))
+    for (int i = 0; i < 2; ++i) pointToBodyFrame(c, i, position, c->localPos[i]);
+  else
+    MeArgumentWarning(fn, "position is not finite; ignored");
+  setNormal(c, normal, fn);
+  setPenetration(c, penetration, fn);
+  if (params)
+    c->params = *params;
+  else
+    MeArgumentWarning(fn, "params is NULL; ignored");
+  c->feature = feature;
 }
 
 }  // extern "C"

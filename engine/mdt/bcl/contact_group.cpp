@@ -146,6 +146,16 @@ int MEAPI MdtContactGroupGetCount(const MdtContactGroupID g) {
   return g->count;
 }
 
+int MEAPI MdtContactGroupGetContacts(const MdtContactGroupID g, MdtContactID *contacts, MeU32 *features, int max) {
+  if (!checkType(g, kContactGroupType, "MdtContactGroupGetContacts")) return 0;
+  int n = 0;
+  for (MdtContact *k = g->first; k && n < max; k = k->next, ++n) {
+    contacts[n] = k;
+    features[n] = k->feature;
+  }
+  return n;
+}
+
 MeReal MEAPI MdtContactGroupGetNormalForce(const MdtContactGroupID g) {
   if (!checkType(g, kContactGroupType, "MdtContactGroupGetNormalForce")) return 0;
   return g->normalForce;

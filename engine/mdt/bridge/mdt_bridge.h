@@ -12,10 +12,19 @@
  *  - A body-destroy callback: MdtBodyDestroy calls it, while the body is
  *    still valid, for a body whose collision-model slot is set, so the
  *    bridge can detach the model (MstSetWorldHandlers) instead of leaving
- *    it to drive whichever body takes the freed slot next. */
+ *    it to drive whichever body takes the freed slot next.
+ *  - The contact matching's reads and writes (Mst's contact_cache.h), one
+ *    call per group or contact instead of one per field:
+ *    MdtContactGroupGetContacts writes a group's contacts, in the group's
+ *    order, at most `max` of them, and each one's feature, and returns how
+ *    many it wrote; MdtContactSetFromCollision has exactly the effect,
+ *    warnings included, of MdtContactSetPosition, MdtContactSetNormal,
+ *    MdtContactSetPenetration, MdtContactSetParams and
+ *    MdtContactSetFeature called in that order. */
 #ifndef KARMA_MDT_BRIDGE_H
 #define KARMA_MDT_BRIDGE_H
 #include "MdtBody.h"
+#include "MdtContact.h"
 #include "MdtWorld.h"
 
 ME_EXTERN_C_BEGIN
@@ -26,6 +35,10 @@ MEPUBLIC void MEAPI MdtBodySetCollisionModel(const MdtBodyID body, void *model);
 MEPUBLIC void *MEAPI MdtBodyGetCollisionModel(const MdtBodyID body);
 typedef void(MEAPI *MdtBodyDestroyCallbackPtr)(MdtBodyID body, void *model);
 MEPUBLIC void MEAPI MdtWorldSetBodyDestroyCallback(MdtWorldID world, MdtBodyDestroyCallbackPtr cb);
+MEPUBLIC int MEAPI MdtContactGroupGetContacts(const MdtContactGroupID g, MdtContactID *contacts, MeU32 *features,
+                                              int max);
+MEPUBLIC void MEAPI MdtContactSetFromCollision(const MdtContactID c, const MeVector3 position, const MeVector3 normal,
+                                               MeReal penetration, const MdtContactParams *params, MeU32 feature);
 
 ME_EXTERN_C_END
 #endif

@@ -4,6 +4,8 @@
 
 #include "mdt_bridge.h"
 
+#include <cmath>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -66,4 +68,94 @@ TEST(BodyEnableCallback, BridgeAccessors) {
   EXPECT_EQ(MdtBodyGetLinearVelocityPtr(nullptr), nullptr);
   MdtWorldSetBodyEnableCallback(nullptr, nullptr, nullptr);
   EXPECT_EQ(wc.count(), 2u);
+}
+
+namespace {
+// Two turned bodies and a contact group between them (the bridge's setting).
+struct Pair {
+  World w;
+  MdtBodyID a, b;
+  MdtContactGroupID g;
+  Pair() : a(MdtBodyCreate(w)), b(MdtBodyCreate(w)), g(MdtContactGroupCreate(w)) {
+    MdtBodySetPosition(a, (MeReal)0.3, (MeReal)1.1, -(MeReal)0.2);
+    MdtBodySetPosition(b, -(MeReal)0.4, (MeReal)0.2, (MeReal)0.7);
+    MdtBodySetQuaternion(a, (MeReal)0.8, (MeReal)0.2, (MeReal)0.4, (MeReal)0.4);
+    MdtBodySetQuaternion(b, (MeReal)0.6, -(MeReal)0.5, (MeReal)0.5, (MeReal)0.374);
+    MdtContactGroupSetBodies(g, a, b);
+  }
+};
+
+// Every state MdtContactSetFromCollision writes, read through the public API.
+void ExpectSameContact(MdtContactID x, MdtContactID y) {
+  for (unsigned i = 0; i < 2; ++i) {
+    MeVector3 px, py;
+    MdtConstraintBodyGetPosition(MdtContactQuaConstraint(x), i, px);
+    MdtConstraintBodyGetPosition(MdtContactQuaConstraint(y), i, py);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(px[k], py[k]);
+  }
+  MeVector3 nx, ny;
+  MdtContactGetNormal(x, nx);
+  MdtContactGetNormal(y, ny);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(nx[k], ny[k]);
+  EXPECT_EQ(MdtContactGetPenetration(x), MdtContactGetPenetration(y));
+  EXPECT_EQ(std::memcmp(MdtContactGetParams(x), MdtContactGetParams(y), sizeof(MdtContactParams)), 0);
+  EXPECT_EQ(MdtContactGetFeature(x), MdtContactGetFeature(y));
+}
+}  // namespace
+
+TEST(BridgeContacts, SetFromCollisionEqualsTheFiveSettersBitForBit) {
+  Pair p;
+  MdtContactParams params;
+  MdtContactParamsReset(&params);
+  MdtContactParamsSetType(&params, MdtContactTypeFriction2D);
+  MdtContactParamsSetFriction(&params, (MeReal)0.4);
+  const MeVector3 at = {(MeReal)0.123, (MeReal)0.777, -(MeReal)0.31}, n = {(MeReal)0.1, (MeReal)0.99, -(MeReal)0.05};
+  MdtContactID byHand = MdtContactGroupCreateContact(p.g), bulk = MdtContactGroupCreateContact(p.g);
+  MdtContactSetPosition(byHand, at[0], at[1], at[2]);
+  MdtContactSetNormal(byHand, n[0], n[1], n[2]);
+  MdtContactSetPenetration(byHand, (MeReal)0.0042);
+  MdtContactSetParams(byHand, &params);
+  MdtContactSetFeature(byHand, 77);
+  MdtContactSetFromCollision(bulk, at, n, (MeReal)0.0042, &params, 77);
+  ExpectSameContact(byHand, bulk);
+}
+
+TEST(BridgeContacts, SetFromCollisionIgnoresEachBadFieldAsItsSetterDoes) {
+  Pair p;
+  WarningCapture cap;
+  MdtContactParams params;
+  MdtContactParamsReset(&params);
+  const MeReal nan = std::nan("");
+  const MeVector3 at = {nan, 0, 0}, zero = {0, 0, 0};
+  MdtContactID byHand = MdtContactGroupCreateContact(p.g), bulk = MdtContactGroupCreateContact(p.g);
+  MdtContactSetPosition(byHand, at[0], at[1], at[2]);
+  MdtContactSetNormal(byHand, 0, 0, 0);
+  MdtContactSetPenetration(byHand, nan);
+  MdtContactSetFeature(byHand, 5);
+  EXPECT_EQ(cap.count(), 3u);
+  MdtContactSetFromCollision(bulk, at, zero, nan, nullptr, 5);
+  EXPECT_EQ(cap.count(), 7u);  // position, normal, penetration, params
+  ExpectSameContact(byHand, bulk);
+  MdtContactSetFromCollision(nullptr, at, zero, 0, &params, 5);
+  EXPECT_EQ(cap.count(), 8u);
+}
+
+TEST(BridgeContacts, GroupGetContactsListsTheGroupInOrderWithFeatures) {
+  Pair p;
+  MdtContactID made[3];
+  for (int i = 0; i < 3; ++i) {
+    made[i] = MdtContactGroupCreateContact(p.g);
+    MdtContactSetFeature(made[i], (MeU32)(10 + i));
+  }
+  MdtContactID got[4] = {};
+  MeU32 features[4] = {};
+  ASSERT_EQ(MdtContactGroupGetContacts(p.g, got, features, 4), 3);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(got[i], made[i]);
+    EXPECT_EQ(features[i], (MeU32)(10 + i));
+  }
+  EXPECT_EQ(MdtContactGroupGetContacts(p.g, got, features, 2), 2);  // at most max
+  WarningCapture cap;
+  EXPECT_EQ(MdtContactGroupGetContacts(nullptr, got, features, 4), 0);
+  EXPECT_EQ(cap.count(), 1u);
 }
