@@ -42,43 +42,6 @@ MeReal SparseMultiplyResidual(const platform::Kernels &kernels, const SparseLcpP
 
 namespace {
 
-/* What a workspace's stale solves have taken, as running means. */
-struct StaleRecord {
-  MeReal iterations; /* conjugate-gradient iterations a stale solve (a failure: kMaxRefine) */
-  MeReal failures;   /* the fraction of stale solves that failed */
-  MeReal solves;     /* solves of one problem: the first and one per friction round */
-};
-
-/* Whether solving with a stale envelope factor is expected to cost less
- * than factorising afresh, in multiply-adds:
- *   F = sum_i (i - first_i)^2 for the factorisation, plus
- *       kAssemblyPerEntry * nnz when the caller offers an operator (A's
- *       entries must then be assembled for a factorisation; a stale solve
- *       never assembles them);
- *   S = nnz + 2 * envelope, one product with A_FF or two triangular
- *       solves' worth. A stale solve costs about (2 + iterations) S: its
- *       first solve with the factor, the residual that accepts it, and one
- *       S per conjugate-gradient iteration (`iterations` counts a failure
- *       as all it was allowed); with an operator, one S more for the
- *       operator's preparation (M^-1 J^T of every row). A problem takes
- *       `solves` of them (each friction round solves again, where on a
- *       fresh factor it costs two triangular solves), and a failure, at
- *       rate `failures`, costs a factorisation besides.
- * Kept when solves (passes + iterations) S + failures F < F. */
-bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOffered, const StaleRecord &record) {
-  std::size_t crout = 0;
-  for (int i = 0; i < e.m; ++i) {
-    const auto width = static_cast<std::size_t>(i - e.first[U(i)]);
-    crout += width * width;
-  }
-  const MeReal assembly = operatorOffered ? SparseBackend::kAssemblyPerEntry : MeReal(0);
-  const MeReal passes = operatorOffered ? 3 : 2;
-  const MeReal factorCost = static_cast<MeReal>(crout) + assembly * static_cast<MeReal>(nnz);
-  const MeReal staleCost =
-      record.solves * (passes + record.iterations) * static_cast<MeReal>(nnz + 2 * e.size());
-  return staleCost + record.failures * factorCost < factorCost;
-}
-
 /* Whether the free block (m rows) of an n x n matrix with nnz stored
  * entries is taken by the dense LDL^T: m at most kDenseRows and the matrix
  * at least a third full. Such a block costs the envelope's Crout order
@@ -92,6 +55,21 @@ bool DenseFits(std::size_t m, std::size_t n, std::size_t nnz) {
 }
 
 }  // namespace
+
+/* See kea_sparse_backend.h. */
+bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOffered, const StaleRecord &record) {
+  std::size_t crout = 0;
+  for (int i = 0; i < e.m; ++i) {
+    const auto width = static_cast<std::size_t>(i - e.first[U(i)]);
+    crout += width * width;
+  }
+  const MeReal assembly = operatorOffered ? SparseBackend::kAssemblyPerEntry : MeReal(0);
+  const MeReal passes = operatorOffered ? 3 : 2;
+  const MeReal factorCost = static_cast<MeReal>(crout) + assembly * static_cast<MeReal>(nnz);
+  const MeReal staleCost =
+      record.solves * (passes + record.iterations) * static_cast<MeReal>(nnz + 2 * e.size());
+  return staleCost + record.failures * factorCost < factorCost;
+}
 
 /* Whether `p` has the sparsity and eps of the problem the kept factor was
  * made for. */

@@ -104,6 +104,31 @@ class SparsityRecord {
   std::vector<int> rowStart_, col_; /* only for a problem without a stamp */
 };
 
+/* What a workspace's stale solves have taken, as running means. */
+struct StaleRecord {
+  MeReal iterations; /* conjugate-gradient iterations a stale solve (a failure: kMaxRefine) */
+  MeReal failures;   /* the fraction of stale solves that failed */
+  MeReal solves;     /* solves of one problem: the first and one per friction round */
+};
+
+/* Whether solving with a stale envelope factor is expected to cost less
+ * than factorising afresh, in multiply-adds:
+ *   F = sum_i (i - first_i)^2 for the factorisation, plus
+ *       SparseBackend::kAssemblyPerEntry * nnz when the caller offers an operator (A's
+ *       entries must then be assembled for a factorisation; a stale solve
+ *       never assembles them);
+ *   S = nnz + 2 * envelope, one product with A_FF or two triangular
+ *       solves' worth. A stale solve costs about (2 + iterations) S: its
+ *       first solve with the factor, the residual that accepts it, and one
+ *       S per conjugate-gradient iteration (`iterations` counts a failure
+ *       as all it was allowed); with an operator, one S more for the
+ *       operator's preparation (M^-1 J^T of every row). A problem takes
+ *       `solves` of them (each friction round solves again, where on a
+ *       fresh factor it costs two triangular solves), and a failure, at
+ *       rate `failures`, costs a factorisation besides.
+ * Kept when solves (passes + iterations) S + failures F < F. */
+bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOffered, const StaleRecord &record);
+
 class SparseBackend {
  public:
   /* Free blocks up to this many rows take the envelope path whatever their

@@ -12,9 +12,11 @@
 #include "kea_tolerance.h"
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
+#include "kea_sparse_backend.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -342,4 +344,38 @@ TEST(KeaFactorMemory, ASmallDenseBlockIsFactorisedAfreshEachSolve) {
   EXPECT_EQ(kept.status, KeaStatus::Solved);
   EXPECT_EQ(kept.staleSolves, 1);
   EXPECT_EQ(kept.factorizations, 0);
+}
+
+// The keep rule of an envelope factor (StaleSolveWorthIt) in closed form, on
+// a 120-row band of half-width 24 (a column of boxes' rows): the Crout cost
+// sum_i min(i, 24)^2 = 59,620, the envelope sum_i (min(i, 24) + 1) = 2,700,
+// and nnz = 3,600, so S = nnz + 2 * envelope = 9,000 and, with an operator,
+// F = 59,620 + 12 * 3,600 = 102,820 (without one, F = 59,620).
+TEST(KeaFactorMemory, TheKeepRulePricesAssemblyFailuresAndFrictionRounds) {
+  using karma::kea::detail::StaleRecord;
+  using karma::kea::detail::StaleSolveWorthIt;
+  karma::kea::detail::EnvelopeSystem band;
+  band.begin(120);
+  for (int i = 0; i < 120; ++i) band.first[(std::size_t)i] = std::max(0, i - 24);
+  band.layout();
+  ASSERT_EQ(band.size(), 2700u);
+  const std::size_t nnz = 3600;
+  // Two iterations, no failure, one solve a problem: kept with or without
+  // an operator (5 S = 45,000 < 102,820; 4 S = 36,000 < 59,620).
+  EXPECT_TRUE(StaleSolveWorthIt(band, nnz, true, {2, 0, 1}));
+  EXPECT_TRUE(StaleSolveWorthIt(band, nnz, false, {2, 0, 1}));
+  // The assembly: at five iterations a caller without an operator
+  // refactorises (7 S = 63,000 > 59,620), one with an operator keeps the
+  // factor (8 S = 72,000 < 102,820).
+  EXPECT_FALSE(StaleSolveWorthIt(band, nnz, false, {5, 0, 1}));
+  EXPECT_TRUE(StaleSolveWorthIt(band, nnz, true, {5, 0, 1}));
+  // The friction rounds: four iterations and one solve a problem keep it
+  // (7 S = 63,000 < 102,820); a round in each problem doubles the stale
+  // cost (126,000) and the factor is refactorised instead.
+  EXPECT_TRUE(StaleSolveWorthIt(band, nnz, true, {4, 0, 1}));
+  EXPECT_FALSE(StaleSolveWorthIt(band, nnz, true, {4, 0, 2}));
+  // The failures: each costs a factorisation besides (45,000 + 0.6 F =
+  // 106,692 > 102,820; at 0.5, 96,410 < 102,820).
+  EXPECT_TRUE(StaleSolveWorthIt(band, nnz, true, {2, MeReal(0.5), 1}));
+  EXPECT_FALSE(StaleSolveWorthIt(band, nnz, true, {2, MeReal(0.6), 1}));
 }
