@@ -91,9 +91,13 @@ void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> s
    * x_b first receives row i's term, then every x_k, k < b, that both rows
    * reach receives row i's term and row b's, in that order, as two passes
    * would; where only one row reaches, its term alone. */
-  for (int i = m - 1; i > 0; --i) {
+  int i = m - 1;
+  while (i > 0) {
     const int fi = first[static_cast<std::size_t>(i)];
-    if (fi == i) continue; /* nothing left of the diagonal */
+    if (fi == i) { /* nothing left of the diagonal */
+      --i;
+      continue;
+    }
     const MeReal *rowI = value.data() + start[static_cast<std::size_t>(i)];
     const MeReal xi = x[static_cast<std::size_t>(i)];
     const int b = i - 1;
@@ -107,7 +111,7 @@ void EnvelopeLdltSolve(int m, std::span<const int> first, std::span<const int> s
     else
       SubtractScaled(x.data() + fb, rowB, xb, fi - fb);
     SubtractTwoScaled(x.data() + both, rowI + (both - fi), xi, rowB + (both - fb), xb, b - both);
-    --i; /* row b is done */
+    i -= 2; /* rows i and b are done */
   }
 }
 

@@ -231,8 +231,10 @@ struct KeaResult {
  * Contract:
  *  - times: y[a] = (A x)_i with i = rows[a] (i = a when rows is null) for
  *    a < count; x holds n values; y does not overlap x. Deterministic: the
- *    same x gives the same bits. Its rounding may differ from the CSR
- *    values' row sums.
+ *    same x gives the same bits, and row i's value does not depend on
+ *    which other rows are asked for, or in what order (Kea reuses a
+ *    product over every row as A x). Its rounding may differ from the
+ *    CSR values' row sums.
  *  - absTimesMax: the largest over those rows of a bound B_i >= sum_j
  *    |A_ij| |x_j| that also bounds times' rounding, as sum_j |A_ij x_j|
  *    does for a row sum (for a product J W J^T: (|J| |W| |J^T| |x|)_i).

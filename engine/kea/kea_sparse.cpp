@@ -216,7 +216,6 @@ void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &w
   workspace.backend.useKernels(detail::KernelsOf(o));
   workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.factorMemory, target);
   detail::ActiveSetCore(rows, first, kName, workspace.backend, workspace.activeSet, result);
-  workspace.backend.learnFrictionRounds(result.frictionRounds);
   result.factorizations = workspace.backend.factorizations();
   result.staleSolves = workspace.backend.staleSolves();
   result.staleIterations = workspace.backend.staleIterations();
@@ -224,6 +223,7 @@ void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &w
     RetryCold(p, o, target, workspace, result);
   else if (warm && result.status == KeaStatus::IterationLimit)
     detail::WarnIterationLimit(o, kName, result.iterations, result.residual);
+  workspace.backend.learnFrictionRounds(result.frictionRounds); /* a cold retry's included */
 }
 
 }  // namespace

@@ -52,11 +52,11 @@
  * factorisation (and, for a caller with an operator, A's assembly) costs
  * more than the stale solves a problem is expected to take, at the
  * iterations, failure rate and friction rounds this workspace has seen
- * (StaleSolveWorthIt, kStaleIterationsPrior). A stale factor never decides the answer's
- * accuracy, only its cost. A factorisation that breaks down (not positive
- * definite, e.g. eps = 0 with redundant rows) falls back to a dense
- * least-squares solve for blocks up to kDenseFallback rows, and to a
- * slightly shifted sparse LDL^T beyond.
+ * (StaleSolveWorthIt, kStaleIterationsPrior). A stale factor never
+ * decides the answer's accuracy, only its cost. A factorisation that
+ * breaks down (not positive definite, e.g. eps = 0 with redundant rows)
+ * falls back to a dense least-squares solve for blocks up to
+ * kDenseFallback rows, and to a slightly shifted sparse LDL^T beyond.
  *
  * A problem with an operator (SparseLcpProblem::op; KeaSolveSparse hands
  * the backend one only for a solve that starts on a kept factor): every
@@ -104,7 +104,8 @@ class SparsityRecord {
   std::vector<int> rowStart_, col_; /* only for a problem without a stamp */
 };
 
-/* What a workspace's stale solves have taken, as running means. */
+/* What a workspace's problems have taken, as running means: the cost
+ * model's expectations (SparseBackend keeps them). */
 struct StaleRecord {
   MeReal iterations; /* conjugate-gradient iterations a stale solve (a failure: kMaxRefine) */
   MeReal failures;   /* the fraction of stale solves that failed */
@@ -112,21 +113,25 @@ struct StaleRecord {
 };
 
 /* Whether solving with a stale envelope factor is expected to cost less
- * than factorising afresh, in multiply-adds:
- *   F = sum_i (i - first_i)^2 for the factorisation, plus
- *       SparseBackend::kAssemblyPerEntry * nnz when the caller offers an operator (A's
- *       entries must then be assembled for a factorisation; a stale solve
- *       never assembles them);
- *   S = nnz + 2 * envelope, one product with A_FF or two triangular
- *       solves' worth. A stale solve costs about (2 + iterations) S: its
- *       first solve with the factor, the residual that accepts it, and one
- *       S per conjugate-gradient iteration (`iterations` counts a failure
- *       as all it was allowed); with an operator, one S more for the
- *       operator's preparation (M^-1 J^T of every row). A problem takes
- *       `solves` of them (each friction round solves again, where on a
- *       fresh factor it costs two triangular solves), and a failure, at
- *       rate `failures`, costs a factorisation besides.
- * Kept when solves (passes + iterations) S + failures F < F. */
+ * than factorising afresh. In the model's units:
+ *   F = sum_i (i - first_i)^2 for the factorisation (twice its Crout
+ *       multiply-adds: the weight the rule has always given it), plus
+ *       SparseBackend::kAssemblyPerEntry * nnz when the caller offers an
+ *       operator (A's entries must then be assembled for a factorisation;
+ *       a stale solve never assembles them);
+ *   S = nnz + 2 * envelope: one product with A_FF and two triangular
+ *       solves, a conjugate-gradient iteration's worth.
+ * A stale solve costs about (passes + iterations) S: passes = 2 for its
+ * first solve with the factor and the residual that accepts it, and 3
+ * with an operator, whose preparation (M^-1 J^T of every row, once a
+ * problem) is counted once a solve, an approximation; `iterations` counts
+ * a failure as all it was allowed. A problem takes `solves` of them (each
+ * friction round solves again; the two triangular solves a round costs on
+ * a fresh factor are left out), and a failure, at rate `failures`, costs a
+ * factorisation besides. Kept when
+ *   solves (passes + iterations) S + failures F < F.
+ * The weights were checked against instruction counts of the anchor
+ * scenes (docs/NOTES.md, "The keep rule of a stale factor"). */
 bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOffered, const StaleRecord &record);
 
 class SparseBackend {
@@ -205,9 +210,10 @@ class SparseBackend {
    * one (the solve then starts from it). */
   bool startsStale(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory) const;
 
-  /* The friction rounds the problem since reset() took (KeaResult), which
-   * teaches the cost model how many times a problem solves with its factor:
-   * on a stale factor each round is a stale solve. */
+  /* The friction rounds one problem took (KeaResult::frictionRounds, a
+   * cold retry's included), which teaches the cost model how many times a
+   * problem solves with its factor: on a stale factor each round is a
+   * stale solve. */
   void learnFrictionRounds(int rounds);
 
   /* Factorisations since reset(). */

@@ -17,10 +17,13 @@
  *    call per group or contact instead of one per field:
  *    MdtContactGroupGetContacts writes a group's contacts, in the group's
  *    order, at most `max` of them, and each one's feature, and returns how
- *    many it wrote; MdtContactSetFromCollision has exactly the effect,
- *    warnings included, of MdtContactSetPosition, MdtContactSetNormal,
+ *    many it wrote; MdtContactSetFromCollision has, on a contact, the
+ *    effect of MdtContactSetPosition, MdtContactSetNormal,
  *    MdtContactSetPenetration, MdtContactSetParams and
- *    MdtContactSetFeature called in that order. */
+ *    MdtContactSetFeature called in that order, each field checked as
+ *    there; a field it ignores warns once under its own name, and a
+ *    constraint that is not a contact (or NULL) warns once and is left
+ *    unchanged. */
 #ifndef KARMA_MDT_BRIDGE_H
 #define KARMA_MDT_BRIDGE_H
 #include "MdtBody.h"

@@ -349,7 +349,8 @@ TEST(KeaFactorMemory, ASmallDenseBlockIsFactorisedAfreshEachSolve) {
 // The keep rule of an envelope factor (StaleSolveWorthIt) in closed form, on
 // a 120-row band of half-width 24 (a column of boxes' rows): the Crout cost
 // sum_i min(i, 24)^2 = 59,620, the envelope sum_i (min(i, 24) + 1) = 2,700,
-// and nnz = 3,600, so S = nnz + 2 * envelope = 9,000 and, with an operator,
+// and nnz = 3,600 (a count chosen for the arithmetic, not the band's own
+// 5,280 stored entries), so S = nnz + 2 * envelope = 9,000 and, with an operator,
 // F = 59,620 + 12 * 3,600 = 102,820 (without one, F = 59,620).
 TEST(KeaFactorMemory, TheKeepRulePricesAssemblyFailuresAndFrictionRounds) {
   using karma::kea::detail::StaleRecord;
