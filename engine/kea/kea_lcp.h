@@ -145,10 +145,12 @@ enum class KeaMethod {
 enum class KeaStatus { Solved, IterationLimit, CycleDetected, BadInput };
 
 /* KeaOptions::factorMemory. WhenCheaper keeps a factor only where the cost
- * model of kea_sparse_backend.cpp (StaleSolveWorthIt) expects a stale solve
+ * model of kea_sparse_backend.h (StaleSolveWorthIt) expects stale solves
  * to cost less than a factorisation: always for the sparse LDL^T, for an
- * envelope while the conjugate-gradient iterations its workspace's stale
- * solves have been taking cost less than refactorising it. */
+ * envelope while the stale solves a problem is expected to take (at the
+ * iterations, failure rate and friction rounds its workspace has seen)
+ * cost less than refactorising it (and, for a problem with an operator,
+ * assembling A). */
 enum class KeaFactorMemory { Off, WhenCheaper, Always };
 
 /* A short name for a status ("Solved", ...), for messages and tests. */
