@@ -2,9 +2,9 @@
 #include "kea_dense_ldlt.h"
 
 #include "kea_envelope_ldlt.h"
+#include "lanes16.h"
 
 #include <algorithm>
-#include <cstring>
 #include <utility>
 
 namespace karma::kea::detail {
@@ -14,22 +14,12 @@ namespace {
  * values (count a multiple of kLanes), one element at a time, in lanes, no
  * remainder loop: each element rounded as by a pass with row 0 and then
  * one with row 1. */
-void SubtractTwoScaledLanes(MeReal *__restrict y, const MeReal *__restrict x0, MeReal s0,
-                            const MeReal *__restrict x1, MeReal s1, std::size_t count) {
-  /* GCC's vector extension, 16 bytes (every x86-64 processor's width):
-   * element by element, so each rounds as the scalar expression does. */
-  using Lanes = MeReal __attribute__((vector_size(16)));
-  constexpr std::size_t kPer = 16 / sizeof(MeReal);
-  static_assert(DenseLdlt::kLanes % kPer == 0);
-  auto load = [](const MeReal *from) {
-    Lanes v;
-    std::memcpy(&v, from, sizeof v);
-    return v;
-  };
-  for (std::size_t c = 0; c < count; c += kPer) {
-    const Lanes v = (load(y + c) - s0 * load(x0 + c)) - s1 * load(x1 + c);
-    std::memcpy(y + c, &v, sizeof v);
-  }
+void SubtractTwoScaledLanes(MeReal *__restrict y, const MeReal *__restrict x0, MeReal s0, const MeReal *__restrict x1,
+                            MeReal s1, std::size_t count) {
+  using platform::LoadLanes16;
+  static_assert(DenseLdlt::kLanes % platform::kPerLanes16 == 0);
+  for (std::size_t c = 0; c < count; c += platform::kPerLanes16)
+    platform::StoreLanes16(y + c, (LoadLanes16(y + c) - s0 * LoadLanes16(x0 + c)) - s1 * LoadLanes16(x1 + c));
 }
 
 /* Row j of the factorisation, columns from .. from + Width - 1 (from = j

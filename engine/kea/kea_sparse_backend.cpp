@@ -190,7 +190,7 @@ MeReal SparseBackend::residual(std::span<const MeReal> lambda, std::span<MeReal>
  * the whole vector only (the bodies' sums), so it is the one
  * SparseMultiplyResidual would compute. */
 bool SparseBackend::productOf(std::span<const MeReal> lambda) const {
-  return productValid_ && p_->op && lambda.size() == cgFull_.size() &&
+  return productValid_ && lambda.size() == cgFull_.size() &&
          std::memcmp(lambda.data(), cgFull_.data(), lambda.size() * sizeof(MeReal)) == 0;
 }
 

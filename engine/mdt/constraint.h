@@ -213,6 +213,9 @@ void attachmentOrtho(const MdtConstraint *c, int i, MeVector3 out);  // world se
 // World vector -> body i's frame (identity for the world).
 void toBodyFrame(const MdtConstraint *c, int i, const MeVector3 world, MeVector3 local);
 void pointToBodyFrame(const MdtConstraint *c, int i, const MeVector3 world, MeVector3 local);
+// The world point p as the attachment point in both bodies' frames; a
+// non-finite p is ignored with a warning naming fn.
+void setWorldPosition(MdtConstraint *c, const MeVector3 p, const char *fn);
 // Sets both bodies' attachment axes from world axes (normalised, orthogonal).
 void setWorldAxes(MdtConstraint *c, const MeVector3 primary, const MeVector3 ortho);
 // Any unit vector orthogonal to a unit vector n.

@@ -97,6 +97,11 @@ void pointVelocity(const MdtConstraint *c, int i, const MeVector3 p, MeVector3 o
   MeVector3Add(out, b->velocity, wr);
 }
 
+void setWorldPosition(MdtConstraint *c, const MeVector3 p, const char *fn) {
+  ME_REQUIRE_ARG(realFinite3(p[0], p[1], p[2]), fn, "position is not finite; ignored");
+  for (int i = 0; i < 2; ++i) pointToBodyFrame(c, i, p, c->localPos[i]);
+}
+
 }  // namespace karma::mdt
 
 using namespace karma::mdt;
@@ -146,9 +151,8 @@ extern "C" {
 void MEAPI MdtConstraintSetPosition(const MdtConstraintID c, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtConstraintSetPosition";
   ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
-  ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position is not finite; ignored");
   const MeVector3 p = {x, y, z};
-  for (int i = 0; i < 2; ++i) pointToBodyFrame(c, i, p, c->localPos[i]);
+  setWorldPosition(c, p, fn);
 }
 
 void MEAPI MdtConstraintGetPosition(const MdtConstraintID c, MeVector3 position) {

@@ -221,6 +221,12 @@ void setNormal(MdtContact *c, const MeVector3 n, const char *fn) {
   MeVector3MultiplyScalar(c->normal, n, 1 / len);
 }
 
+// The contact parameters, copied; NULL is ignored with a warning naming fn.
+void setParams(MdtContact *c, const MdtContactParams *p, const char *fn) {
+  ME_REQUIRE_ARG(p != nullptr, fn, "params is NULL");
+  c->params = *p;
+}
+
 // The penetration; a non-finite one is ignored with a warning naming fn.
 void setPenetration(MdtContact *c, MeReal penetration, const char *fn) {
   ME_REQUIRE_ARG(realFinite(penetration), fn, "penetration is not finite; ignored");
@@ -289,9 +295,9 @@ MdtContactParamsID MEAPI MdtContactGetParams(const MdtContactID c) {
 }
 
 void MEAPI MdtContactSetParams(const MdtContactID c, const MdtContactParamsID p) {
-  if (!checkType(c, kContactType, "MdtContactSetParams")) return;
-  ME_REQUIRE_ARG(p != nullptr, "MdtContactSetParams", "params is NULL");
-  c->params = *p;
+  static const char *fn = "MdtContactSetParams";
+  if (!checkType(c, kContactType, fn)) return;
+  setParams(c, p, fn);
 }
 
 MdtContactID MEAPI MdtContactGetNext(const MdtContactID c) {
@@ -331,22 +337,16 @@ MeReal MEAPI MdtContactGetNormalForce(const MdtContactID c) {
   return c->normalForce;
 }
 
-// The five setters' effects (bridge/mdt_bridge.h), each with its own check:
-// the position goes to both bodies' frames as MdtConstraintSetPosition does.
+// The five setters' effects (bridge/mdt_bridge.h), through the helpers they
+// use, each field with its own check.
 void MEAPI MdtContactSetFromCollision(const MdtContactID c, const MeVector3 position, const MeVector3 normal,
                                       const MeReal penetration, const MdtContactParams *params, const MeU32 feature) {
   static const char *fn = "MdtContactSetFromCollision";
   if (!checkType(c, kContactType, fn)) return;
-  if (realFinite3(position[0], position[1], position[2]))
-    for (int i = 0; i < 2; ++i) pointToBodyFrame(c, i, position, c->localPos[i]);
-  else
-    MeArgumentWarning(fn, "position is not finite; ignored");
+  setWorldPosition(c, position, fn);
   setNormal(c, normal, fn);
   setPenetration(c, penetration, fn);
-  if (params)
-    c->params = *params;
-  else
-    MeArgumentWarning(fn, "params is NULL; ignored");
+  setParams(c, params, fn);
   c->feature = feature;
 }
 

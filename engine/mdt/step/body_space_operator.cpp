@@ -2,9 +2,10 @@
 // forming it (see body_space_operator.h for the order of every sum).
 #include "body_space_operator.h"
 
+#include "lanes16.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 namespace karma::mdt {
 
@@ -17,20 +18,13 @@ MeReal magnitude(MeReal v) {
 
 constexpr std::size_t kSide = BodySpaceOperator::kSide;
 
-// A row side or a body, kSide values, as vectors of 16 bytes (GCC's vector
-// extension, the width every x86-64 processor has). Operations go element
-// by element, so they round as the scalar ones do.
-using Lanes = MeReal __attribute__((vector_size(16)));
-constexpr std::size_t kPerLanes = 16 / sizeof(MeReal);
+// A row side or a body, kSide values, in 16-byte lanes (lanes16.h: they
+// round as the scalar operations do).
+using Lanes = platform::Lanes16;
+using platform::LoadLanes16;
+using platform::StoreLanes16;
+constexpr std::size_t kPerLanes = platform::kPerLanes16;
 static_assert(kSide % kPerLanes == 0);
-
-inline Lanes load(const MeReal *from) {
-  Lanes v;
-  std::memcpy(&v, from, sizeof v);
-  return v;
-}
-
-inline void store(MeReal *to, Lanes v) { std::memcpy(to, &v, sizeof v); }
 
 template <bool Absolute>
 inline Lanes magnitudes(Lanes v) {
@@ -105,7 +99,7 @@ void BodySpaceOperator::gather(const MeReal *x) const {
       MeReal *u = &u_[(size_t)body[side] * kSide];
       const MeReal *m = &minvJt_[((size_t)r * 2 + (size_t)side) * kSide];
       for (std::size_t l = 0; l < kSide; l += kPerLanes)
-        store(u + l, load(u + l) + magnitudes<Absolute>(load(m + l)) * xr);
+        StoreLanes16(u + l, LoadLanes16(u + l) + magnitudes<Absolute>(LoadLanes16(m + l)) * xr);
     }
   }
 }
@@ -120,7 +114,8 @@ MeReal BodySpaceOperator::rowDot(int r) const {
     const MeReal *J = &J_[((size_t)r * 2 + (size_t)side) * kSide];
     const MeReal *u = &u_[(size_t)body[side] * kSide];
     MeReal t[kSide];
-    for (std::size_t l = 0; l < kSide; l += kPerLanes) store(t + l, magnitudes<Absolute>(load(J + l)) * load(u + l));
+    for (std::size_t l = 0; l < kSide; l += kPerLanes)
+      StoreLanes16(t + l, magnitudes<Absolute>(LoadLanes16(J + l)) * LoadLanes16(u + l));
     const MeReal d = (t[0] + t[1] + t[2]) + (t[3] + t[4] + t[5]);
     sum = side == 0 ? d : sum + d;
   }
