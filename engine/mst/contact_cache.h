@@ -28,7 +28,7 @@
 //      never match.
 //   4. A matched old contact takes the new contact's position, normal,
 //      penetration, feature and the material's parameters, and keeps its
-//      place in the group and its impulses. An old contact left unmatched
+//      place in the group, its impulses and its friction axis. An old contact left unmatched
 //      is destroyed. A new contact left unmatched becomes a new MdtContact,
 //      with zero impulses, appended to the group in the nearfield's order.
 // So the group's order is stable: contacts that persist keep their

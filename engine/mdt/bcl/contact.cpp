@@ -24,6 +24,9 @@
 //              friction1 (Box) or frictionCoefficient1 * normal force
 //              (NormalForce, tied to the normal row);
 //   secondary  along d2 = n x d1 (Friction2D), likewise.
+// d1 is the user's direction when set, else last step's d1 carried onto the
+// new tangent plane, else anyOrthogonal(n) (contactDirections): a contact's
+// friction rows turn with its normal, and A changes smoothly at rest.
 // Rows only for effects that act: a friction direction whose force bound is
 // identically zero (Box model with friction 0, NormalForce model with
 // coefficient 0) writes no row, since its impulse would be 0 whatever the
@@ -53,6 +56,8 @@ void resetContact(MdtContact *c) {
   c->feature = 0;
   c->warmNormal = 0;
   MeVector3Set(c->warmFriction, 0, 0, 0);
+  MeVector3Set(c->frictionAxis, 0, 0, 0);
+  c->frictionAxisSet = FALSE;
 }
 
 bool frictionActs(const MdtContactParams &p, int direction) {
@@ -76,15 +81,28 @@ int storeContactImpulses(MdtContact *c, const Row *rows, const MeReal *impulse, 
   return count;
 }
 
+namespace {
+
+// A kept friction axis is given up once its part in the tangent plane is
+// this short: the normal has turned by 60 degrees towards it.
+constexpr MeReal kKeptAxisShortest = (MeReal)0.5;
+
+// out = the part of v in the plane normal to the unit n, normalised; false
+// (out unnormalised) when that part is not longer than `shortest`.
+bool tangentPart(const MeVector3 v, const MeVector3 n, MeReal shortest, MeVector3 out) {
+  MeVector3Copy(out, v);
+  MeVector3MultiplyAdd(out, -MeVector3Dot(out, n), n);
+  if (!(MeVector3Magnitude(out) > shortest)) return false;
+  MeVector3Normalize(out);
+  return true;
+}
+
+}  // namespace
+
 void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2) {
-  bool ok = false;
-  if (c->directionSet) {
-    MeVector3Copy(d1, c->direction);
-    MeVector3MultiplyAdd(d1, -MeVector3Dot(d1, c->normal), c->normal);
-    ok = MeVector3Magnitude(d1) > (MeReal)1e-6;
-    if (ok) MeVector3Normalize(d1);
-  }
-  if (!ok) anyOrthogonal(c->normal, d1);
+  const bool user = c->directionSet && tangentPart(c->direction, c->normal, (MeReal)1e-6, d1);
+  const bool kept = !user && c->frictionAxisSet && tangentPart(c->frictionAxis, c->normal, kKeptAxisShortest, d1);
+  if (!user && !kept) anyOrthogonal(c->normal, d1);
   MeVector3Cross(d2, c->normal, d1);
 }
 
@@ -190,6 +208,8 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
   if (!acts1 && !acts2) return;
   MeVector3 d1, d2;
   contactDirections(c, d1, d2);
+  MeVector3Copy(c->frictionAxis, d1);
+  c->frictionAxisSet = TRUE;
   if (acts1)
     frictionRow(c, sink, ctx, a, d1, normalRow, prm.model1, prm.friction1, prm.frictionCoefficient1, prm.slip1,
                 prm.slide1);

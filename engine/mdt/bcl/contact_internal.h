@@ -22,6 +22,14 @@ struct MdtContact : MdtConstraint {
   // its projections onto them).
   MeReal warmNormal;
   MeVector3 warmFriction;
+  // The primary friction direction of last step's rows (world frame, unit),
+  // when frictionAxisSet: without a direction set by the user, the next
+  // step keeps it, projected onto the new tangent plane, while it stays
+  // clear of the normal (contactDirections). So the friction rows turn with
+  // the normal instead of jumping by a quarter turn where anyOrthogonal's
+  // choice of axis switches (near-vertical normals, |n_x| close to |n_z|).
+  MeVector3 frictionAxis;
+  MeBool frictionAxisSet;
 };
 
 struct MdtContactGroup : MdtConstraint {
@@ -39,6 +47,9 @@ extern const ConstraintType kContactGroupType;
 // `sink`; friction rows refer to the normal row by its index in the sink.
 void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx);
 // The friction directions in use: primary d1 and secondary d2 = n x d1.
+// d1 is the first of these whose part in the tangent plane is long enough,
+// normalised: the user's direction (MdtContactSetDirection), then the axis
+// last step's rows used (frictionAxis), then anyOrthogonal(n).
 void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2);
 // Contact defaults (params, normal, penetration, no direction, no memory).
 void resetContact(MdtContact *c);

@@ -280,6 +280,70 @@ TEST(Contact, ABodysWalkReachesEachContactActingOnItOnce) {
   EXPECT_EQ(cap.count(), 1u);
 }
 
+// A contact's friction directions turn with its normal. Near the vertical,
+// where |n_x| and |n_z| are both small, anyOrthogonal's choice of axis
+// switches with their order and a fresh choice would turn the friction rows
+// by a quarter turn; the contact keeps last step's axis instead, projected
+// onto the new tangent plane, until the normal has turned 60 degrees
+// towards it. A direction set by the user comes first.
+TEST(Contact, FrictionDirectionsTurnWithTheNormal) {
+  World w;
+  MdtWorldSetGravity(w, 0, -g, 0);
+  MdtWorldSetAutoDisable(w, FALSE);
+  Puck p(w, 1);
+  MdtContactParamsID prm = MdtContactGetParams(p.contact);
+  MdtContactParamsSetType(prm, MdtContactTypeFriction2D);
+  MdtContactParamsSetPrimaryFrictionModel(prm, MdtFrictionModelNormalForce);
+  MdtContactParamsSetSecondaryFrictionModel(prm, MdtFrictionModelNormalForce);
+  MdtContactParamsSetFrictionCoefficient(prm, 1);
+  auto dot = [](const MeVector3 a, const MeVector3 b) { return (double)MeVector3Dot(a, b); };
+  auto same = [](const MeVector3 a, const MeVector3 b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; };
+  // The direction a contact without memory takes for normal (x, y, z).
+  auto fresh = [&](MeReal x, MeReal y, MeReal z, MeVector3 d) {
+    MdtContactID c = MdtContactCreate(w);
+    MdtContactSetNormal(c, x, y, z);
+    MdtContactGetDirection(c, d);
+    MdtContactDestroy(c);
+  };
+
+  MdtContactSetNormal(p.contact, (MeReal)0.001, 1, (MeReal)0.002);
+  MeVector3 before, start;
+  MdtContactGetDirection(p.contact, before);
+  fresh((MeReal)0.001, 1, (MeReal)0.002, start);
+  EXPECT_TRUE(same(before, start));  // no memory yet: anyOrthogonal's choice
+  MdtWorldStep(w, (MeReal)0.01);
+
+  // |n_x| and |n_z| swap order: a fresh choice is a quarter turn away.
+  MdtContactSetNormal(p.contact, (MeReal)0.002, 1, (MeReal)0.001);
+  MeVector3 kept, jumped, n;
+  MdtContactGetDirection(p.contact, kept);
+  fresh((MeReal)0.002, 1, (MeReal)0.001, jumped);
+  MdtContactGetNormal(p.contact, n);
+  EXPECT_LT(std::fabs(dot(jumped, before)), 0.01);
+  EXPECT_GT(dot(kept, before), 0.99999);
+  EXPECT_NEAR(dot(kept, n), 0, 1e-6);
+  EXPECT_NEAR(dot(kept, kept), 1, 1e-6);
+  MdtWorldStep(w, (MeReal)0.01);
+
+  // The normal turned 70 degrees towards the kept axis: it is given up.
+  const double a = 70 * M_PI / 180;
+  MeVector3 tilted;
+  for (int i = 0; i < 3; ++i) tilted[i] = (MeReal)(std::cos(a) * n[i] + std::sin(a) * kept[i]);
+  MdtContactSetNormal(p.contact, tilted[0], tilted[1], tilted[2]);
+  MeVector3 after, fromScratch;
+  MdtContactGetDirection(p.contact, after);
+  fresh(tilted[0], tilted[1], tilted[2], fromScratch);
+  EXPECT_TRUE(same(after, fromScratch));
+
+  // A direction set by the user wins over the kept axis.
+  MdtContactSetNormal(p.contact, 0, 1, 0);
+  MdtWorldStep(w, (MeReal)0.01);
+  MdtContactSetDirection(p.contact, 0, 0, 1);
+  MeVector3 user;
+  MdtContactGetDirection(p.contact, user);
+  EXPECT_EQ(user[2], 1);
+}
+
 TEST(Contact, DefaultsAndBadInput) {
   World w;
   WarningCapture cap;
