@@ -57,6 +57,9 @@ bool DenseFits(std::size_t m, std::size_t n, std::size_t nnz) {
 }  // namespace
 
 /* See kea_sparse_backend.h. */
+bool DenseCheaper(std::size_t n, std::size_t crout) { return n * n * n <= kDenseOverCrout * crout; }
+
+/* See kea_sparse_backend.h. */
 bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOffered, const StaleRecord &record) {
   std::size_t crout = 0;
   for (int i = 0; i < e.m; ++i) {
@@ -112,7 +115,7 @@ void SparseBackend::keepOrderings(const SparseLcpProblem &p) {
   sparsity_.record(p);
   order_.clear();
   bandOrder_.clear();
-  orderChosen_ = useBandOrder_ = false;
+  orderChosen_ = useBandOrder_ = denseCheaper_ = false;
   degreeOrder_.clear();
   denseMapRows_.clear();
   denseCandidateRows_.clear();
@@ -468,8 +471,10 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
 
 /* The choice of factorisation for the free block (see
  * kea_sparse_backend.h): under the default rule, the dense LDL^T when the
- * block is small and the matrix full enough (DenseFits) and it does not
- * break down; else the envelope in the rows' own order when it is a band;
+ * block is small and the matrix full enough (DenseFits), or when the block
+ * is small and its envelope in the order chosen below would cost more
+ * (DenseCheaper), and it does not break down; else the envelope in the
+ * rows' own order when it is a band;
  * else, under the default rule, the envelope in reverse Cuthill-McKee
  * order when the block is small or that order makes it a band; else the
  * sparse LDL^T. */
@@ -478,15 +483,15 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
   const bool envelopeWasFresh = envelopeFresh_;
   envelopeFresh_ = false;
   if (envelopeRows_ == 0 && DenseFits(m, U(p_->n), U(p_->rowStart[U(p_->n)])) && factoriseDense(set)) {
-    staleWorthIt_ = memory_ == KeaFactorMemory::Always ||
-                    (operatorOffered_ && staleIterationsExpected_ <= kDenseStaleIterations);
-    if (!staleWorthIt_)
-      staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
-    rememberFactor();
+    keepDenseFactor();
     return;
   }
   if (envelopeRows_ >= 0) {
     if (!orderChosen_) chooseEnvelopeOrder();
+    if (envelopeRows_ == 0 && m <= kDenseRows && denseCheaper_ && factoriseDense(set)) {
+      keepDenseFactor();
+      return;
+    }
     if (useBandOrder_) {
       bandRows_.clear();
       for (int i : bandOrder_)
@@ -522,6 +527,16 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
   rememberFactor();
 }
 
+/* Whether the dense factor just made is worth keeping (see
+ * kDenseStaleIterations), and keeps it if so. */
+void SparseBackend::keepDenseFactor() {
+  staleWorthIt_ = memory_ == KeaFactorMemory::Always ||
+                  (operatorOffered_ && staleIterationsExpected_ <= kDenseStaleIterations);
+  if (!staleWorthIt_)
+    staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
+  rememberFactor();
+}
+
 /* Marks the factor as kept for this problem's sparsity when it is worth
  * keeping. */
 void SparseBackend::rememberFactor() {
@@ -532,7 +547,9 @@ void SparseBackend::rememberFactor() {
  * holds the lower triangle's nonzeros, so when the natural order's envelope
  * is within kOrderSlack of that count no renumbering can gain much and the
  * rows keep their order (stacks, chains: O(n) to check). Otherwise reverse
- * Cuthill-McKee is computed and kept if its envelope is smaller. */
+ * Cuthill-McKee is computed and kept if its envelope is smaller. Also
+ * judges, in the order kept, whether a small block is cheaper dense
+ * (denseCheaper_). */
 void SparseBackend::chooseEnvelopeOrder() {
   const SparseLcpProblem &p = *p_;
   const auto n = static_cast<std::size_t>(p.n);
@@ -540,21 +557,30 @@ void SparseBackend::chooseEnvelopeOrder() {
   /* Symmetric with every diagonal present: the lower triangle holds
    * (nnz + n) / 2 entries. */
   const std::size_t lower = (U(p.rowStart[n]) + n) / 2;
-  std::size_t natural = 0;
-  for (std::size_t i = 0; i < n; ++i) natural += i - std::min(i, U(p.col[U(p.rowStart[i])])) + 1;
+  std::size_t natural = 0, naturalCrout = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t width = i - std::min(i, U(p.col[U(p.rowStart[i])]));
+    natural += width + 1;
+    naturalCrout += width * width;
+  }
   orderChosen_ = true;
   useBandOrder_ = false;
+  /* Judged once per problem on the whole matrix in the order kept; each
+   * free block of at most kDenseRows rows follows the judgement. */
+  denseCheaper_ = DenseCheaper(n, naturalCrout);
   if (2 * natural <= kOrderSlack * lower) return;
   computeBandOrder();
   for (std::size_t r = 0; r < n; ++r) bandRank_[U(bandOrder_[r])] = static_cast<int>(r);
-  std::size_t band = 0;
+  std::size_t band = 0, bandCrout = 0;
   for (std::size_t r = 0; r < n; ++r) {
     const auto i = U(bandOrder_[r]);
     std::size_t first = r;
     for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k) first = std::min(first, U(bandRank_[U(p.col[U(k)])]));
     band += r - first + 1;
+    bandCrout += (r - first) * (r - first);
   }
   useBandOrder_ = band < natural;
+  if (useBandOrder_) denseCheaper_ = DenseCheaper(n, bandCrout);
 }
 
 /* envelope_.first[] for the free block with its rows in the order of

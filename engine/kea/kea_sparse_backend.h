@@ -6,7 +6,9 @@
  *
  *  - Dense LDL^T (kea_dense_ldlt.h), under the default rule, for blocks
  *    of at most kDenseRows rows of a matrix at least a third full
- *    (DenseFits; a car, whose rows all share the chassis): the envelope's
+ *    (DenseFits; a car, whose rows all share the chassis), or whose
+ *    envelope would cost more (DenseCheaper, kDenseOverCrout; a rag
+ *    doll, whose tree has no narrow band in any order): the envelope's
  *    Crout order would be a chain of dot products, each waiting on the
  *    entry before, while the dense updates run in vector lanes
  *    (docs/NOTES.md, "Dense small blocks"). Such a factor is kept as a
@@ -134,6 +136,22 @@ struct StaleRecord {
  * scenes (docs/NOTES.md, "The keep rule of a stale factor"). */
 bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOffered, const StaleRecord &record);
 
+/* Whether the dense LDL^T of an n-row matrix is expected to cost less than
+ * its envelope LDL^T, whose Crout multiply-adds are `crout` (sum over rows
+ * of width^2, in the order the envelope would use): when
+ *   n^3 <= kDenseOverCrout * crout.
+ * The dense m^3 / 6 multiply-adds run in vector lanes, while each envelope
+ * row is a chain of dot products waiting on the row before. Mdt's rows
+ * come in an order that makes a stack or a chain a narrow band (small
+ * crout, envelope); a rag doll's tree has no narrow band in any order
+ * (dense). kDenseOverCrout = 32 was measured: on the rag doll (about 74
+ * free rows of 87, Crout 18,000, m^3 = 405,000) the dense path took 13 %
+ * fewer instructions over 600 steps; stack21's blocks of 88-96 rows in
+ * their natural band (m^3 / crout = 36) took 0.2 % more forced dense
+ * (docs/NOTES.md, "Dense blocks for trees"). */
+inline constexpr std::size_t kDenseOverCrout = 32;
+bool DenseCheaper(std::size_t n, std::size_t crout);
+
 class SparseBackend {
  public:
   /* Free blocks up to this many rows take the envelope path whatever their
@@ -229,6 +247,7 @@ class SparseBackend {
   bool sameSparsity(const SparseLcpProblem &p, MeReal eps, int envelopeRows) const;
   void keepOrderings(const SparseLcpProblem &p);
   void rememberFactor();
+  void keepDenseFactor();
   const std::vector<int> &factorOrder() const;
   void multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y);
   MeReal productScale(const std::vector<int> &rows, std::span<const MeReal> x) const;
@@ -295,6 +314,7 @@ class SparseBackend {
    * rows in that order (envelope path when the natural order is wide). */
   std::vector<int> bandOrder_, bandRank_, bandRows_, queue_;
   bool orderChosen_ = false, useBandOrder_ = false;
+  bool denseCheaper_ = false; /* DenseCheaper, judged with the order */
   std::vector<int> position_, order_, rank_, upStart_, upRow_;
   std::vector<std::pair<int, int>> entries_;
   std::vector<MeReal> upVal_, wScratch_, rhs_, rhsFull_, x_;

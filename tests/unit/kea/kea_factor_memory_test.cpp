@@ -380,3 +380,20 @@ TEST(KeaFactorMemory, TheKeepRulePricesAssemblyFailuresAndFrictionRounds) {
   EXPECT_TRUE(StaleSolveWorthIt(band, nnz, true, {2, MeReal(0.5), 1}));
   EXPECT_FALSE(StaleSolveWorthIt(band, nnz, true, {2, MeReal(0.6), 1}));
 }
+
+// The choice of a dense factorisation by cost (DenseCheaper: n^3 <= 32 *
+// crout, crout = sum of width^2 of the envelope in the order it would use).
+// The rag doll's matrix (87 rows, reverse Cuthill-McKee envelope Crout
+// 21,763: 87^3 = 658,503 <= 696,416) goes dense; a 96-row block of a stack
+// in its natural band (Crout 24,400: 884,736 > 780,800) stays an envelope;
+// a chain's tridiagonal band (Crout n - 1) stays an envelope at any size
+// past 5 rows.
+TEST(KeaFactorMemory, ADenseFactorIsChosenWhereTheEnvelopeCostsMore) {
+  using karma::kea::detail::DenseCheaper;
+  EXPECT_TRUE(DenseCheaper(87, 21763));
+  EXPECT_FALSE(DenseCheaper(87, 20577));  // 32 * 20,577 = 658,464 < 87^3
+  EXPECT_FALSE(DenseCheaper(96, 24400));
+  EXPECT_TRUE(DenseCheaper(5, 4));        // 125 <= 128
+  EXPECT_FALSE(DenseCheaper(6, 5));       // 216 > 160
+  EXPECT_FALSE(DenseCheaper(96, 95));
+}

@@ -35,7 +35,7 @@ struct PinnedHash {
 constexpr PinnedHash kPinned[] = {
     {"car",      300,  "0x06adb4d0f5bd0888", "0xc5f9e6d2d605d049"},
     {"topple",   600,  "0x95198d67d21b5876", "0x11b09ee02b74b3c3"},
-    {"ragdoll",  600,  "0xbf1160105f1e819e", "0x5dc964fd464acac1"},
+    {"ragdoll",  600,  "0x14bc8d34acfeef9c", "0x8d6c691b471a063a"},
     {"stack21",  1200, "0xde8347a611d7d661", "0xc0908257ad4cbd09"},
     {"pile1000", 60,   "0x6c496a0b0965c3f1", "0xdf6bd15894e3d46a"},
 };
