@@ -335,14 +335,18 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
   };
   const MeReal rhsSize = largest(rhs_);
   MeReal accept = target_;
+  bool scaled = false;
   /* The true residual into cgR_; whether it is accepted. The rounding
-   * scale is only needed when the residual is above the target. */
+   * scale is only needed when the residual is above the target, and is
+   * taken once, at the first such iterate: the later ones differ from it
+   * by a correction far below its size. */
   auto converged = [&]() {
     multiplyFree(rows, x_, cgQ_);
     for (std::size_t a = 0; a < m; ++a) cgR_[a] = rhs_[a] - cgQ_[a];
     const MeReal residual = largest(cgR_);
     if (!(residual > target_)) return true;
-    accept = std::max(target_, 4 * ME_REAL_EPSILON * (productScale(rows, x_) + rhsSize));
+    if (!scaled) accept = std::max(target_, 4 * ME_REAL_EPSILON * (productScale(rows, x_) + rhsSize));
+    scaled = true;
     return !(residual > accept);
   };
   ++staleSolves_;
