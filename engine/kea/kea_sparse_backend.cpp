@@ -476,8 +476,9 @@ void SparseBackend::buildRhs(const std::vector<int> &rows, const std::vector<uns
 /* The choice of factorisation for the free block (see
  * kea_sparse_backend.h): under the default rule, the dense LDL^T when the
  * block is small and the matrix full enough (DenseFits), or when the block
- * is small and its envelope in the order chosen below would cost more
- * (DenseCheaper), and it does not break down; else the envelope in the
+ * is small and the whole matrix's envelope in the order chosen below would
+ * cost more than its dense factorisation (DenseCheaper, judged once per
+ * sparsity), and it does not break down; else the envelope in the
  * rows' own order when it is a band;
  * else, under the default rule, the envelope in reverse Cuthill-McKee
  * order when the block is small or that order makes it a band; else the
@@ -486,13 +487,15 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
   const std::size_t m = naturalRows_.size();
   const bool envelopeWasFresh = envelopeFresh_;
   envelopeFresh_ = false;
-  if (envelopeRows_ == 0 && DenseFits(m, U(p_->n), U(p_->rowStart[U(p_->n)])) && factoriseDense(set)) {
+  const bool denseFits = envelopeRows_ == 0 && DenseFits(m, U(p_->n), U(p_->rowStart[U(p_->n)]));
+  if (denseFits && factoriseDense(set)) {
     keepDenseFactor();
     return;
   }
   if (envelopeRows_ >= 0) {
     if (!orderChosen_) chooseEnvelopeOrder();
-    if (envelopeRows_ == 0 && m <= kDenseRows && denseCheaper_ && factoriseDense(set)) {
+    /* A dense factorisation that broke down above is not tried again. */
+    if (envelopeRows_ == 0 && !denseFits && m <= kDenseRows && denseCheaper_ && factoriseDense(set)) {
       keepDenseFactor();
       return;
     }

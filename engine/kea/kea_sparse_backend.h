@@ -144,11 +144,13 @@ bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOf
  * row is a chain of dot products waiting on the row before. Mdt's rows
  * come in an order that makes a stack or a chain a narrow band (small
  * crout, envelope); a rag doll's tree has no narrow band in any order
- * (dense). kDenseOverCrout = 32 was measured: on the rag doll (about 74
- * free rows of 87, Crout 18,000, m^3 = 405,000) the dense path took 13 %
- * fewer instructions over 600 steps; stack21's blocks of 88-96 rows in
- * their natural band (m^3 / crout = 36) took 0.2 % more forced dense
- * (docs/NOTES.md, "Dense blocks for trees"). */
+ * (dense). SparseBackend judges the whole matrix (n = all rows, crout of
+ * its envelope) once per sparsity and applies the judgement to each free
+ * block of at most kDenseRows rows. kDenseOverCrout = 32 was measured: the
+ * rag doll's matrix (87 rows, Crout 21,763, n^3 / crout = 30.3) took 13 %
+ * fewer instructions over 600 steps dense; stack21's free blocks of 88-96
+ * rows in their natural band (m^3 / crout = 36 for the block) took 0.2 %
+ * more when forced dense (docs/NOTES.md, "Dense blocks for trees"). */
 inline constexpr std::size_t kDenseOverCrout = 32;
 bool DenseCheaper(std::size_t n, std::size_t crout);
 

@@ -8,8 +8,11 @@
  * SetPenetration, Enable) or by collision through contact groups.
  *
  * Friction acts in the contact plane along a primary direction (set with
- * MdtContactSetDirection, else chosen from the normal) and the secondary
- * direction normal x primary.
+ * MdtContactSetDirection; else last step's primary direction carried onto
+ * the new contact plane while the normal has turned less than 60 degrees
+ * towards it; else chosen from the normal) and the secondary direction
+ * normal x primary. The carried direction is reset with the contact, not by
+ * MdtContactClearImpulse.
  *
  * Parameters (MdtContactParams, defaults from Appendix A):
  *   type            FrictionZero | Friction1D (primary only) | Friction2D
@@ -119,7 +122,7 @@ MEPUBLIC int MEAPI MdtContactParamsGetOptions(const MdtContactParamsID p);
  * plane; this library leaves it unset instead (the automatic direction
  * below), the outcome Appendix A's value would have once projected onto the
  * plane, and a contact whose normal is later set elsewhere does not pick up
- * a direction nobody chose. */
+ * a direction nobody chose (beyond last step's own, carried as above). */
 MDT_CONSTRAINT_TYPE_DECL(Contact, MdtContactID)
 MDT_CONSTRAINT_COMMON_API(Contact, MdtContactID)
 MDT_CONSTRAINT_POSITION_API(Contact, MdtContactID)

@@ -325,15 +325,34 @@ TEST(Contact, FrictionDirectionsTurnWithTheNormal) {
   EXPECT_NEAR(dot(kept, kept), 1, 1e-6);
   MdtWorldStep(w, (MeReal)0.01);
 
-  // The normal turned 70 degrees towards the kept axis: it is given up.
-  const double a = 70 * M_PI / 180;
-  MeVector3 tilted;
-  for (int i = 0; i < 3; ++i) tilted[i] = (MeReal)(std::cos(a) * n[i] + std::sin(a) * kept[i]);
-  MdtContactSetNormal(p.contact, tilted[0], tilted[1], tilted[2]);
-  MeVector3 after, fromScratch;
-  MdtContactGetDirection(p.contact, after);
-  fresh(tilted[0], tilted[1], tilted[2], fromScratch);
-  EXPECT_TRUE(same(after, fromScratch));
+  // The normal tilted by a towards w, 20 degrees off the kept axis (so the
+  // fresh choice and the carried axis differ): the carried axis is the kept
+  // one projected while kept . normal = sin(a) cos(20 deg) stays below
+  // cos(30 deg) (the normal turned less than 60 degrees towards it).
+  MeVector3 side, toward;
+  MeVector3Cross(side, n, kept);
+  const double b = 20 * M_PI / 180;
+  for (int i = 0; i < 3; ++i) toward[i] = (MeReal)(std::cos(b) * kept[i] + std::sin(b) * side[i]);
+  auto tiltAndCompare = [&](double degrees, MeVector3 carried, MeVector3 projected, MeVector3 fromScratch) {
+    const double a = degrees * M_PI / 180;
+    MeVector3 tilted;
+    for (int i = 0; i < 3; ++i) tilted[i] = (MeReal)(std::cos(a) * n[i] + std::sin(a) * toward[i]);
+    MdtContactSetNormal(p.contact, tilted[0], tilted[1], tilted[2]);
+    MeVector3 unit;
+    MdtContactGetNormal(p.contact, unit);
+    MdtContactGetDirection(p.contact, carried);
+    fresh(tilted[0], tilted[1], tilted[2], fromScratch);
+    MeVector3Copy(projected, kept);
+    MeVector3MultiplyAdd(projected, -MeVector3Dot(kept, unit), unit);
+    MeVector3Normalize(projected);
+  };
+  MeVector3 carried, projected, fromScratch;
+  tiltAndCompare(50, carried, projected, fromScratch);  // kept . normal = 0.72
+  EXPECT_GT(dot(carried, projected), 0.99999);
+  EXPECT_LT(dot(fromScratch, projected), 0.99);
+  tiltAndCompare(80, carried, projected, fromScratch);  // kept . normal = 0.93: given up
+  EXPECT_TRUE(same(carried, fromScratch));
+  EXPECT_LT(dot(carried, projected), 0.99);
 
   // A direction set by the user wins over the kept axis.
   MdtContactSetNormal(p.contact, 0, 1, 0);
