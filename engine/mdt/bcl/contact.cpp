@@ -57,7 +57,6 @@ void resetContact(MdtContact *c) {
   c->warmNormal = 0;
   MeVector3Set(c->warmFriction, 0, 0, 0);
   MeVector3Set(c->frictionAxis, 0, 0, 0);
-  c->frictionAxisSet = FALSE;
 }
 
 bool frictionActs(const MdtContactParams &p, int direction) {
@@ -100,9 +99,9 @@ bool tangentPart(const MeVector3 v, const MeVector3 n, MeReal shortest, MeVector
 }  // namespace
 
 void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2) {
+  // A zero frictionAxis (no rows yet) has no tangent part: never kept.
   const bool user = c->directionSet && tangentPart(c->direction, c->normal, (MeReal)1e-6, d1);
-  const bool kept = !user && c->frictionAxisSet && tangentPart(c->frictionAxis, c->normal, kKeptAxisShortest, d1);
-  if (!user && !kept) anyOrthogonal(c->normal, d1);
+  if (!user && !tangentPart(c->frictionAxis, c->normal, kKeptAxisShortest, d1)) anyOrthogonal(c->normal, d1);
   MeVector3Cross(d2, c->normal, d1);
 }
 
@@ -209,7 +208,6 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
   MeVector3 d1, d2;
   contactDirections(c, d1, d2);
   MeVector3Copy(c->frictionAxis, d1);
-  c->frictionAxisSet = TRUE;
   if (acts1)
     frictionRow(c, sink, ctx, a, d1, normalRow, prm.model1, prm.friction1, prm.frictionCoefficient1, prm.slip1,
                 prm.slide1);

@@ -22,14 +22,13 @@ struct MdtContact : MdtConstraint {
   // its projections onto them).
   MeReal warmNormal;
   MeVector3 warmFriction;
-  // The primary friction direction of last step's rows (world frame, unit),
-  // when frictionAxisSet: without a direction set by the user, the next
+  // The primary friction direction of last step's rows (world frame, unit;
+  // zero before the first rows): without a direction set by the user, the next
   // step keeps it, projected onto the new tangent plane, while it stays
   // clear of the normal (contactDirections). So the friction rows turn with
   // the normal instead of jumping by a quarter turn where anyOrthogonal's
   // choice of axis switches (near-vertical normals, |n_x| close to |n_z|).
   MeVector3 frictionAxis;
-  MeBool frictionAxisSet;
 };
 
 struct MdtContactGroup : MdtConstraint {
