@@ -45,15 +45,15 @@ int main(int argc, char **argv) {
   std::printf("# platform backend: %s\n", MdtWorldGetPlatformName(scene->world()));
   std::printf(
       "step partitions rows solves factorizations stale_solves friction_rounds unsolved cycles residual "
-      "iterative_partitions\n");
+      "iterative_partitions warm_starts\n");
   for (int i = 0; i < last; ++i) {
     scene->step();
     if (i < first) continue;
     MdtWorldStepStats s;
     MdtWorldGetStepStats(scene->world(), &s);
-    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
+    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d %d\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
                 s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual,
-                s.iterativePartitions);
+                s.iterativePartitions, s.keaWarmStarts);
   }
   return 0;
 }

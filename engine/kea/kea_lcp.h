@@ -202,6 +202,16 @@ struct KeaOptions {
    * only the values, b, the bounds and the options are checked. A caller
    * that breaks the promise gets undefined behaviour, not BadInput. */
   bool trustedStructure = false;
+  /* Active set with a warm start: first check the warm start itself (one
+   * product with A) and return it, without a linear solve, when its
+   * residual is already at most a sixteenth of the solved threshold
+   * (kWarmAcceptDivisor, kea_activeset_core.h). The answer meets the
+   * contract with room to spare but is not refined further, where a solve
+   * usually ends near rounding. For a caller whose
+   * problems change little from one call to the next (a scene at rest); a
+   * workspace that sees its checks fail makes them rarely (ActiveSetScratch::
+   * warmAccepted). Off: the warm start only chooses the initial sets. */
+  bool acceptWarmStart = false;
 };
 
 struct KeaResult {
@@ -220,6 +230,9 @@ struct KeaResult {
    * conjugate-gradient iterations. */
   int staleSolves = 0;
   int staleIterations = 0;
+  /* Whether the answer is the warm start itself, accepted by
+   * KeaOptions::acceptWarmStart without a linear solve. */
+  bool warmStartAccepted = false;
 };
 
 /* A held by its caller as a product, e.g. A = J M^-1 J^T + diag(s) (Mdt's

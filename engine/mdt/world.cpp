@@ -40,6 +40,7 @@ void setDefaultParams(MdtWorldParams &p, MeReal l, MeReal m) {
   p.geometricStiffness = 1;
   p.keaIterativeRows = kDefaultIterativeRows;
   p.jointProjection = 0;
+  p.keaAcceptWarmStart = 1;
 }
 
 }  // namespace

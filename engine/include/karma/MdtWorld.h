@@ -37,6 +37,7 @@ typedef struct MdtBody *MdtBodyID;
  *   keaMethod                        MdtKeaMethodActiveSet
  *   keaMaxIterations                 0 = Kea's default
  *   keaTolerance                     0 = Kea's default
+ *   keaAcceptWarmStart               1 (0 = off)
  *   geometricStiffness               1 (0 = off)
  *
  * epsilon is added to the diagonal of the constraint matrix: every rigid
@@ -68,6 +69,7 @@ typedef struct MdtWorldParams {
   MeReal geometricStiffness;
   int keaIterativeRows; /* see MdtWorldSetKeaIterativeRows; 0 = never, default 300 */
   int jointProjection;  /* see MdtWorldSetJointProjection; 0 = off (the default) */
+  MeBool keaAcceptWarmStart; /* see MdtWorldSetKeaAcceptWarmStart; default 1 */
 } MdtWorldParams;
 
 /* What the last MdtWorldStep did. */
@@ -86,6 +88,9 @@ typedef struct MdtWorldStepStats {
   int keaStaleSolves;      /* linear solves preconditioned by last step's factor */
   int keaFrictionRounds;   /* friction fixed-point rounds beyond the first */
   int keaCycles;           /* partitions stopped by a detected cycle */
+  int keaWarmStarts;       /* partitions whose last-step impulses met the
+                              tolerance as they were, with no linear solve
+                              (MdtWorldSetKeaAcceptWarmStart) */
   int iterativePartitions; /* partitions solved by the iterative solver */
   int budgetLevel;         /* least accurate step-budget level used: 0 exact,
                               1 exact:8, 2 iterative; -1 after a step without
@@ -282,6 +287,19 @@ MEPUBLIC int MEAPI MdtWorldGetJointProjection(const MdtWorldID world);
 MEPUBLIC void MEAPI MdtWorldSetKeaMethod(const MdtWorldID world, const MdtKeaMethod method);
 MEPUBLIC void MEAPI MdtWorldSetKeaMaxIterations(const MdtWorldID world, const int n);
 MEPUBLIC void MEAPI MdtWorldSetKeaTolerance(const MdtWorldID world, const MeReal tol);
+
+/* Whether the exact method first checks each partition's warm start (its
+ * contacts' and joints' impulses of the last step) and keeps it, with no
+ * linear solve, when its residual is already within a sixteenth of the
+ * tolerance (MdtWorldSetKeaTolerance): one product with the constraint
+ * matrix instead of a factorisation or a solve. A resting stack then often
+ * costs a check a step. Such impulses meet the tolerance with room to
+ * spare, where a solve usually ends near rounding. On by default; off (0),
+ * every partition is solved and the warm start only chooses where the
+ * pivoting begins. The step stats count the partitions kept this way
+ * (keaWarmStarts). */
+MEPUBLIC void MEAPI MdtWorldSetKeaAcceptWarmStart(const MdtWorldID world, const MeBool on);
+MEPUBLIC MeBool MEAPI MdtWorldGetKeaAcceptWarmStart(const MdtWorldID world);
 
 /* Each partition's solver by its size: with the exact method selected, a
  * partition of more than `rows` constraint rows (after capping) is solved

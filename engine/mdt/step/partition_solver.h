@@ -25,6 +25,9 @@ struct SolverSettings {
   // The world's platform backend for the exact solver's array kernels
   // (kernels.h); nullptr: the process default. It changes speed only.
   const platform::Kernels *kernels = nullptr;
+  // Exact solver: keep a warm start that already meets the tolerance
+  // (MdtWorldSetKeaAcceptWarmStart).
+  bool acceptWarmStart = false;
 };
 
 struct SolveReport {
@@ -33,6 +36,7 @@ struct SolveReport {
   int factorizations = 0;  // exact solver: factorisations of a free block
   int frictionRounds = 0;  // exact solver: friction fixed-point rounds beyond the first
   int staleSolves = 0;     // exact solver: linear solves with last step's factor
+  bool warmStartAccepted = false;  // exact solver: the warm start was the answer
   bool solved = true;
   bool cycle = false;  // stopped by a detected cycle
   bool badInput = false;

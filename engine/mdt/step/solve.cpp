@@ -26,6 +26,7 @@ SolverChoice chooseSolver(MdtWorldID world, const StepScratch &s, const BodySpac
   c.settings.maxIterations = params.keaMaxIterations;
   c.settings.tolerance = params.keaTolerance;
   c.settings.kernels = world->priv->kernels;
+  c.settings.acceptWarmStart = params.keaAcceptWarmStart != 0;
   if (s.budget.on()) {
     c.budgeted = true;
     c.budget = s.budget.choose(problem.identity, rows);
@@ -63,6 +64,7 @@ std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpace
   s.stats.keaFactorizations += report.factorizations;
   s.stats.keaFrictionRounds += report.frictionRounds;
   s.stats.keaStaleSolves += report.staleSolves;
+  if (report.warmStartAccepted) ++s.stats.keaWarmStarts;
   if (report.solved)
     ++s.stats.keaSolved;
   else

@@ -404,6 +404,7 @@ class KeaSolver final : public PartitionSolver {
     opt.kernels = settings.kernels;
     opt.epsilon = 0;  // softness is already on the diagonal
     if (p.anyWarm) opt.warmStart = p.warm;
+    opt.acceptWarmStart = settings.acceptWarmStart;
     opt.factorMemory = kea::KeaFactorMemory::WhenCheaper;
     opt.trustedStructure = true;  // layoutColumns: ascending columns, every diagonal present
     opt.warnings = false;         // the step reports, rate-limited (solve_warnings.h)
@@ -412,6 +413,7 @@ class KeaSolver final : public PartitionSolver {
     report.residual = result_.residual;
     report.factorizations = result_.factorizations;
     report.staleSolves = result_.staleSolves;
+    report.warmStartAccepted = result_.warmStartAccepted;
     report.frictionRounds = result_.frictionRounds;
     report.solved = result_.status == kea::KeaStatus::Solved;
     report.cycle = result_.status == kea::KeaStatus::CycleDetected;

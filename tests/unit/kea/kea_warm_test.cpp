@@ -8,6 +8,8 @@
 #include "kea_tolerance.h"
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
+#include "kea_activeset_core.h"
+#include "kea_sparse_backend.h"
 
 #include <gtest/gtest.h>
 
@@ -159,4 +161,101 @@ TEST(KeaWarmStart, ResultReusedAsItsOwnWarmStart) {
       }
     }
   }
+}
+
+namespace {
+
+// b of t's problem moved by 1e-3 of its largest entry, row by row: a
+// problem its own answer no longer solves to the tolerance.
+ContactProblem Perturbed(const ContactProblem &problem) {
+  ContactProblem next = problem;
+  const double bMax = MaxAbs(next.b);
+  for (std::size_t i = 0; i < next.b.size(); ++i)
+    next.b[i] += static_cast<MeReal>(1e-3 * bMax * kea_test::Jitter(7, static_cast<unsigned>(i)));
+  return next;
+}
+
+}  // namespace
+
+TEST(KeaWarmStart, AnAnswerIsKeptAsItIsWhenAskedFor) {
+  // A solve's own answer, given back as the warm start of the same
+  // problem, is kept without a solve when its residual is within the
+  // solved threshold over kWarmAcceptDivisor, and solved again otherwise
+  // (a friction fixed point may stop anywhere within half the threshold).
+  int keptCount = 0;
+  for (const Named &t : Problems()) {
+    const KeaResult cold = KeaSolveSparse(t.problem.sparse(), KeaOptions{});
+    ASSERT_EQ(cold.status, KeaStatus::Solved) << t.name;
+    std::vector<MeReal> w(cold.lambda.size());
+    const MeReal residual = karma::kea::detail::SparseMultiplyResidual(karma::platform::DefaultKernels(),
+                                                                       t.problem.sparse(), 0, cold.lambda, w);
+    const MeReal threshold = KeaDefaultTolerance() * (1 + static_cast<MeReal>(MaxAbs(t.problem.b)));
+    const bool keep = residual <= threshold / karma::kea::detail::kWarmAcceptDivisor;
+    KeaOptions o;
+    o.warmStart = cold.lambda;
+    o.acceptWarmStart = true;
+    const KeaResult kept = KeaSolveSparse(t.problem.sparse(), o);
+    EXPECT_EQ(kept.status, KeaStatus::Solved) << t.name;
+    EXPECT_EQ(kept.warmStartAccepted, keep) << t.name << ": residual " << residual << ", threshold " << threshold;
+    if (!keep) continue;
+    ++keptCount;
+    EXPECT_EQ(kept.iterations, 0) << t.name;
+    EXPECT_EQ(kept.factorizations, 0) << t.name;
+    EXPECT_TRUE(kept.lambda == cold.lambda) << t.name;  // bit for bit: no solve touched it
+    EXPECT_EQ(kept.residual, residual) << t.name;        // the warm start's own residual and w
+    EXPECT_TRUE(kept.w == w) << t.name;
+  }
+  EXPECT_GE(keptCount, 10);  // most of the 15
+}
+
+TEST(KeaWarmStart, AWarmStartThatIsNoLongerAnAnswerIsSolved) {
+  for (const Named &t : Problems()) {
+    const KeaResult first = KeaSolveSparse(t.problem.sparse(), KeaOptions{});
+    ASSERT_EQ(first.status, KeaStatus::Solved) << t.name;
+    const ContactProblem next = Perturbed(t.problem);
+    KeaOptions o;
+    o.warmStart = first.lambda;
+    o.acceptWarmStart = true;
+    const KeaResult w = KeaSolveSparse(next.sparse(), o);
+    const KeaResult c = KeaSolveSparse(next.sparse(), KeaOptions{});
+    ASSERT_EQ(w.status, KeaStatus::Solved) << t.name;
+    ASSERT_EQ(c.status, KeaStatus::Solved) << t.name;
+    EXPECT_FALSE(w.warmStartAccepted) << t.name;
+    EXPECT_GE(w.iterations, 1) << t.name;
+    const double scale = 1 + MaxAbs(c.lambda);
+    for (std::size_t i = 0; i < c.lambda.size(); ++i)
+      EXPECT_NEAR(w.lambda[i], c.lambda[i], 10 * kTol * scale) << t.name << " row " << i;
+  }
+}
+
+TEST(KeaWarmStart, AWorkspaceWhoseChecksFailStopsCheckingForAWhile) {
+  // Three checks that fail (a warm start from the unperturbed answer) take
+  // the workspace's running mean below the floor: the next warm starts are
+  // solved without a check even when they are answers, until the mean has
+  // recovered toward its prior; then they are kept again.
+  const ContactProblem problem = kea_test::Stack(6, 1, false);  // frictionless: its answer is kept
+  const ContactProblem next = Perturbed(problem);
+  const KeaResult answer = KeaSolveSparse(problem.sparse(), KeaOptions{});
+  ASSERT_EQ(answer.status, KeaStatus::Solved);
+  Workspace workspace(KeaWorkspaceCreate());
+  KeaOptions o;
+  o.warmStart = answer.lambda;
+  o.acceptWarmStart = true;
+  KeaResult r;
+  for (int i = 0; i < 3; ++i) {
+    KeaSolveSparse(next.sparse(), o, *workspace, r);
+    ASSERT_EQ(r.status, KeaStatus::Solved);
+    EXPECT_FALSE(r.warmStartAccepted) << "solve " << i;
+  }
+  int solvedBeforeKept = 0;
+  for (; solvedBeforeKept < 100; ++solvedBeforeKept) {
+    KeaSolveSparse(problem.sparse(), o, *workspace, r);
+    ASSERT_EQ(r.status, KeaStatus::Solved);
+    if (r.warmStartAccepted) break;
+    EXPECT_GE(r.iterations, 1);
+  }
+  EXPECT_GE(solvedBeforeKept, 1);   // the check was skipped at least once
+  EXPECT_LE(solvedBeforeKept, 20);  // and came back
+  KeaSolveSparse(problem.sparse(), o, *workspace, r);
+  EXPECT_TRUE(r.warmStartAccepted);  // a kept warm start raises the mean again
 }

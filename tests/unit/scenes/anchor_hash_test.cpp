@@ -33,10 +33,10 @@ struct PinnedHash {
 
 // clang-format off
 constexpr PinnedHash kPinned[] = {
-    {"car",      300,  "0x06adb4d0f5bd0888", "0xc5f9e6d2d605d049"},
-    {"topple",   600,  "0x95198d67d21b5876", "0x11b09ee02b74b3c3"},
-    {"ragdoll",  600,  "0x14bc8d34acfeef9c", "0x8d6c691b471a063a"},
-    {"stack21",  1200, "0xde8347a611d7d661", "0xc0908257ad4cbd09"},
+    {"car",      300,  "0xac8e1fea8938895b", "0xf86235ce2ce39eee"},
+    {"topple",   600,  "0x3c413ede28d66814", "0x48841417651dd25e"},
+    {"ragdoll",  600,  "0xad3ed715d67c848e", "0x22b831db3d2e9875"},
+    {"stack21",  1200, "0xd2630f5a851bb170", "0xad1702f466ed3392"},
     {"pile1000", 60,   "0x6c496a0b0965c3f1", "0xdf6bd15894e3d46a"},
 };
 // clang-format on

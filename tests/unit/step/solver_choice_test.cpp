@@ -58,7 +58,9 @@ TEST(SolverChoice, ASmallStackStaysExactBesideALargeOneSolvedIteratively) {
     s.step();
     ASSERT_EQ(Stats(s).partitions, 2) << "step " << i;
     EXPECT_EQ(Stats(s).iterativePartitions, 1) << "step " << i;
-    EXPECT_GE(Stats(s).keaFactorizations + Stats(s).keaStaleSolves, 1) << "step " << i;  // the small one
+    // The small one: solved, or its warm start kept (one check).
+    EXPECT_GE(Stats(s).keaFactorizations + Stats(s).keaStaleSolves + Stats(s).keaWarmStarts, 1) << "step " << i;
+    EXPECT_LE(Stats(s).keaWarmStarts, 1) << "step " << i;  // never the iterative one
   }
 }
 
@@ -99,3 +101,24 @@ TEST(SolverChoice, ANegativeThresholdWarnsAndIsIgnored) {
 }
 
 }  // namespace
+
+TEST(SolverChoice, KeptWarmStartsAreOnByDefaultAndCanBeTurnedOff) {
+  Scene s;
+  Column(s, 2, 0);
+  EXPECT_EQ(MdtWorldGetKeaAcceptWarmStart(s.u->world), 1);
+  int kept = 0;
+  for (int i = 0; i < 120; ++i) {
+    s.step();
+    kept += Stats(s).keaWarmStarts;
+  }
+  EXPECT_GT(kept, 0);  // a resting pair of boxes
+  MdtWorldSetKeaAcceptWarmStart(s.u->world, 0);
+  EXPECT_EQ(MdtWorldGetKeaAcceptWarmStart(s.u->world), 0);
+  for (int i = 0; i < 60; ++i) {
+    s.step();
+    EXPECT_EQ(Stats(s).keaWarmStarts, 0) << "step " << i;
+    EXPECT_EQ(Stats(s).keaFactorizations + Stats(s).keaStaleSolves, 1) << "step " << i;
+  }
+  MdtWorldSetKeaAcceptWarmStart(s.u->world, 7);  // any non-zero value is on
+  EXPECT_EQ(MdtWorldGetKeaAcceptWarmStart(s.u->world), 1);
+}
