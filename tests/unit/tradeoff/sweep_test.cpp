@@ -97,6 +97,28 @@ TEST(TradeoffSweep, JointProjectionIsAKnob) {
   EXPECT_FALSE(ParseSweep("projection=-1", s, error));
 }
 
+TEST(TradeoffSweep, TheWarmKnobKeepsOrSolvesWarmStarts) {
+  std::vector<Setting> s;
+  std::string error;
+  ASSERT_TRUE(ParseSweep("warm=1,0", s, error)) << error;
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].label(), "exact h=1/60 warm=1");
+  EXPECT_EQ(s[1].label(), "exact h=1/60 warm=0");
+  EXPECT_EQ(Setting{}.label(), "exact h=1/60");  // left out: the scene's own
+  EXPECT_FALSE(ParseSweep("warm=2", s, error));
+  EXPECT_FALSE(ParseSweep("warm=0.5", s, error));
+  MdtWorldID world = MdtWorldCreate(4, 4, 1, 1);
+  ASSERT_NE(world, nullptr);
+  ASSERT_TRUE(ParseSweep("warm=0", s, error)) << error;
+  s[0].apply(world);
+  EXPECT_EQ(MdtWorldGetKeaAcceptWarmStart(world), 0);
+  ASSERT_TRUE(ParseSweep("warm=1", s, error)) << error;
+  s[0].apply(world);
+  EXPECT_EQ(MdtWorldGetKeaAcceptWarmStart(world), 1);
+  MdtWorldDestroy(world);
+}
+
+
 TEST(TradeoffSweep, BadSweepsSayWhatIsWrong) {
   std::vector<Setting> s;
   std::string error;

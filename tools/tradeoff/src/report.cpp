@@ -1,6 +1,7 @@
 // report.cpp: CSV and Markdown of a sweep (report.h).
 #include "report.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace karma::tradeoff {
@@ -46,6 +47,7 @@ const std::vector<std::string> &CsvColumns() {
                                                    "tolerance",
                                                    "cap",
                                                    "projection",
+                                                   "warm",
                                                    "repeats",
                                                    "us_per_step",
                                                    "us_min",
@@ -86,6 +88,7 @@ void WriteCsv(std::FILE *f, const std::vector<ResultRow> &rows) {
                                             peer ? "" : Cell(s.tolerance),
                                             peer || s.cap < 0 ? "" : std::to_string(s.cap),
                                             peer || s.projection < 0 ? "" : std::to_string(s.projection),
+                                            peer || s.warm < 0 ? "" : std::to_string(s.warm),
                                             std::to_string(r.micros.size()),
                                             Cell(r.median()),
                                             Cell(r.low()),
@@ -180,36 +183,41 @@ bool ReadCsv(const std::string &path, std::vector<ResultRow> &out, std::string &
   std::ifstream in(path);
   std::string line;
   if (!in || !std::getline(in, line)) return error = "cannot read " + path, false;
-  if (SplitCsvLine(line) != CsvColumns()) return error = path + " has other columns than this tool writes", false;
+  const std::vector<std::string> &columns = CsvColumns();
+  if (SplitCsvLine(line) != columns) return error = path + " has other columns than this tool writes", false;
+  // The index of a column by its name (every name used below is one of CsvColumns()).
+  auto at = [&columns](const char *name) {
+    return (size_t)(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
   while (std::getline(in, line)) {
     const std::vector<std::string> c = SplitCsvLine(line);
-    if (c.size() != CsvColumns().size()) continue;
+    if (c.size() != columns.size()) continue;
     ResultRow r;
-    r.scene = c[0];
-    r.precision = c[1];
-    r.engine = c[2];
+    r.scene = c[at("scene")];
+    r.precision = c[at("precision")];
+    r.engine = c[at("engine")];
     if (!r.isPeer()) {
       std::vector<Setting> parsed;
-      std::string label = c[3], ignored;
+      std::string label = c[at("setting")], ignored;
       for (const char *p : {" single", " double"})
         if (label.size() > 7 && label.compare(label.size() - 7, 7, p) == 0) label.resize(label.size() - 7);
       if (!ParseSweep("solver=" + label, parsed, ignored) || parsed.size() != 1) continue;
       r.setting = parsed[0];
     }
-    const double median = Real(c[12]), low = Real(c[13]), high = Real(c[14]);
+    const double median = Real(c[at("us_per_step")]), low = Real(c[at("us_min")]), high = Real(c[at("us_max")]);
     r.micros = {low, median, high};  // the median and range survive
-    r.steps = std::atoi(c[16].c_str());
-    r.drift = Real(c[17]);
-    r.jointError = Real(c[18]);
-    r.penetration = Real(c[19]);
-    r.energyError = Real(c[20]);
-    r.momentumError = Real(c[21]);
-    r.residual = Real(c[22]);
-    r.unsolvedSteps = std::atoi(c[23].c_str());
-    r.maxSpeed = Real(c[24]);
-    r.sceneError = Real(c[25]);
-    r.held = c[26] == "1";
-    r.detail = c[29];
+    r.steps = std::atoi(c[at("steps")].c_str());
+    r.drift = Real(c[at("drift_m")]);
+    r.jointError = Real(c[at("joint_error_m")]);
+    r.penetration = Real(c[at("penetration_m")]);
+    r.energyError = Real(c[at("energy_error_J")]);
+    r.momentumError = Real(c[at("momentum_error_Ns")]);
+    r.residual = Real(c[at("residual")]);
+    r.unsolvedSteps = std::atoi(c[at("unsolved_steps")].c_str());
+    r.maxSpeed = Real(c[at("max_speed_mps")]);
+    r.sceneError = Real(c[at("scene_error")]);
+    r.held = c[at("held")] == "1";
+    r.detail = c[at("detail")];
     out.push_back(r);
   }
   return true;

@@ -81,6 +81,8 @@ bool Multiply(const std::string &name, const std::string &values, std::vector<Se
         s.cap = (int)v;
       else if (name == "projection" && v >= 0 && v == std::floor(v))
         s.projection = (int)v;
+      else if (name == "warm" && (v == 0 || v == 1))
+        s.warm = (int)v;
       else {
         error = "bad knob or value: " + name + "=" + FormatValue(v);
         return false;
@@ -192,6 +194,7 @@ std::string Setting::label() const {
   if (!std::isnan(tolerance)) s += " tolerance=" + FormatValue(tolerance);
   if (cap >= 0) s += " cap=" + std::to_string(cap);
   if (projection >= 0) s += " projection=" + std::to_string(projection);
+  if (warm >= 0) s += " warm=" + std::to_string(warm);
   if (!precision.empty()) s += " " + precision;
   return s;
 }
@@ -206,6 +209,7 @@ void Setting::apply(MdtWorldID world) const {
   if (!std::isnan(tolerance)) MdtWorldSetKeaTolerance(world, (MeReal)tolerance);
   if (cap >= 0) MdtWorldSetMaxMatrixSize(world, cap);
   if (projection >= 0) MdtWorldSetJointProjection(world, projection);
+  if (warm >= 0) MdtWorldSetKeaAcceptWarmStart(world, warm);
 }
 
 }  // namespace karma::tradeoff

@@ -17,6 +17,10 @@
 //   cap        matrix capping, rows per partition (MdtWorldSetMaxMatrixSize)
 //   projection joint projection iterations after each step
 //              (MdtWorldSetJointProjection; 0 = off)
+//   warm       1: the exact solver keeps a warm start that already meets a
+//              sixteenth of the tolerance, with no solve (the default);
+//              0: it solves every partition
+//              (MdtWorldSetKeaAcceptWarmStart)
 // Values: a comma list `a,b,c`, or a geometric range `lo..hi` (both ends
 // included; ratio 10 when both ends are powers of ten, otherwise 2), or
 // `lo..hi:N` (N points, geometric). A knob left out keeps the scene's own
@@ -44,12 +48,13 @@ struct Setting {
   double tolerance = kUnset;
   int cap = -1;         // < 0: the scene's own
   int projection = -1;  // < 0: the scene's own
+  int warm = -1;        // < 0: the scene's own; 0 or 1
   // "single" or "double" when a sweep runs both (--precision); empty
   // otherwise. Not a world setting: the precision of the build that ran.
   std::string precision;
   // "exact", "exact:8", "iterative:50", "budget:300".
   std::string solver() const;
-  // The knobs that are set, e.g. "exact:8 epsilon=1e-3 h=1/120 projection=2".
+  // The knobs that are set, e.g. "exact:8 epsilon=1e-3 h=1/120 projection=2 warm=0".
   std::string label() const;
   // Applies every knob that is set (not h: the runner steps with it).
   void apply(MdtWorldID world) const;
