@@ -6,9 +6,12 @@
 //   penetration  deepest contact penetration after the last step (mm)
 //   car_v, car_x chassis velocity (m/s) and position (m) at 5 s (analytic 16.18, 40.45)
 //   joint_err    ragdoll: largest joint gap over the run (mm)
-//   rows, solves, factorizations, friction_rounds
-//                per step, summed over partitions (MdtWorldGetStepStats)
+//   rows, solves, factorizations, friction_rounds, stale_solves, warm_starts
+//                per step, summed over partitions (MdtWorldGetStepStats;
+//                warm_starts: partitions that kept their warm start)
 //   unsolved     partition solves over the run that did not reach tolerance
+// Each exact scene also runs as NAME/warm:0, with MdtWorldSetKeaAcceptWarmStart
+// off: every partition solved, what the kept warm starts save.
 // Run e.g.  build/bench/bench/anchor_scenes_bench --benchmark_repetitions=5
 // (Google Benchmark then reports the median and spread of the runs).
 #include <benchmark/benchmark.h>
@@ -23,7 +26,7 @@ using karma::scenes::AnchorScene;
 
 // The solver's work over a run (MdtWorldGetStepStats after every step).
 struct StatsSum {
-  double rows = 0, solves = 0, factorizations = 0, frictionRounds = 0, unsolved = 0;
+  double rows = 0, solves = 0, factorizations = 0, frictionRounds = 0, staleSolves = 0, warmStarts = 0, unsolved = 0;
   void add(MdtWorldID world) {
     MdtWorldStepStats s;
     MdtWorldGetStepStats(world, &s);
@@ -31,6 +34,8 @@ struct StatsSum {
     solves += s.keaIterations;
     factorizations += s.keaFactorizations;
     frictionRounds += s.keaFrictionRounds;
+    staleSolves += s.keaStaleSolves;
+    warmStarts += s.keaWarmStarts;
     unsolved += s.keaUnsolved;
   }
   void report(benchmark::State &state, int steps) const {
@@ -38,17 +43,21 @@ struct StatsSum {
     state.counters["solves"] = solves / steps;
     state.counters["factorizations"] = factorizations / steps;
     state.counters["friction_rounds"] = frictionRounds / steps;
+    state.counters["stale_solves"] = staleSolves / steps;
+    state.counters["warm_starts"] = warmStarts / steps;
     state.counters["unsolved"] = unsolved;
   }
 };
 
 // Steps = 0 runs the scene's own length; pile1000_first90 runs the first 90
 // steps of pile1000 (its landing, as the test does) for a quick figure.
-template <std::unique_ptr<AnchorScene> (*Make)(), int Steps = 0>
+// KeepWarm = false turns MdtWorldSetKeaAcceptWarmStart off.
+template <std::unique_ptr<AnchorScene> (*Make)(), int Steps = 0, bool KeepWarm = true>
 void BM_Scene(benchmark::State &state) {
   for (auto _ : state) {
     state.PauseTiming();
     std::unique_ptr<AnchorScene> scene = Make();
+    MdtWorldSetKeaAcceptWarmStart(scene->world(), KeepWarm);
     state.ResumeTiming();
     const auto start = std::chrono::steady_clock::now();
     const int steps = Steps > 0 ? Steps : scene->steps();
@@ -84,6 +93,22 @@ BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakePile1000)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakePile1000, 90)
     ->Name("pile1000_first90")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeCar, 0, false)
+    ->Name("car/warm:0")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeTopple, 0, false)
+    ->Name("topple/warm:0")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeStack21, 0, false)
+    ->Name("stack21/warm:0")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Scene, karma::scenes::MakeRagdoll, 0, false)
+    ->Name("ragdoll/warm:0")
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 
