@@ -55,7 +55,7 @@ inline constexpr MeReal kWarmAcceptDivisor = 16;
  * kWarmAcceptedPrior, moves by kWarmLearningRate toward each outcome, and
  * each check skipped moves it back toward the prior by kWarmRecoveryRate,
  * so that a workspace whose checks failed tries again now and then (a rag
- * doll whose limbs keep turning: about one check in ten solves). */
+ * doll whose limbs keep turning: about one check in sixteen solves). */
 inline constexpr MeReal kWarmAcceptedPrior = MeReal(0.5);
 inline constexpr MeReal kWarmCheckFloor = MeReal(0.25);
 inline constexpr MeReal kWarmLearningRate = MeReal(0.25);

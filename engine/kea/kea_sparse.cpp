@@ -64,6 +64,7 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   r.w.assign(n, MeReal(0));
   r.factorizations = 0;
   r.frictionRounds = 0;
+  r.warmStartAccepted = false;
   r.staleSolves = r.staleIterations = 0;
 
   detail::ComputeBounds(rows, r.lambda, s.lo, s.hi);
@@ -174,6 +175,7 @@ void BadInput(int n, KeaResult &result) {
   result.status = KeaStatus::BadInput;
   result.iterations = result.factorizations = result.frictionRounds = 0;
   result.staleSolves = result.staleIterations = 0;
+  result.warmStartAccepted = false;
   result.residual = 0;
 }
 

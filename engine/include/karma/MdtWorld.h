@@ -88,9 +88,6 @@ typedef struct MdtWorldStepStats {
   int keaStaleSolves;      /* linear solves preconditioned by last step's factor */
   int keaFrictionRounds;   /* friction fixed-point rounds beyond the first */
   int keaCycles;           /* partitions stopped by a detected cycle */
-  int keaWarmStarts;       /* partitions whose last-step impulses met the
-                              tolerance as they were, with no linear solve
-                              (MdtWorldSetKeaAcceptWarmStart) */
   int iterativePartitions; /* partitions solved by the iterative solver */
   int budgetLevel;         /* least accurate step-budget level used: 0 exact,
                               1 exact:8, 2 iterative; -1 after a step without
@@ -100,6 +97,10 @@ typedef struct MdtWorldStepStats {
   MeReal budgetMeasured;   /* step budget: measured step time (microseconds) */
   const char *platform;    /* the platform backend the step ran on (before
                               the first step: the world's current one) */
+  int keaWarmStarts;       /* partitions whose last-step impulses met a
+                              sixteenth of the tolerance as they were, kept
+                              with no linear solve
+                              (MdtWorldSetKeaAcceptWarmStart) */
 } MdtWorldStepStats;
 
 /* The world's private state (body pool, step order, counters). */
