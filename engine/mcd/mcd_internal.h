@@ -76,6 +76,9 @@ void PlaceInstance(McdGeometryInstance *inst, MECONSTMATRIX MeMatrix4 tm);
 
 // The touch tolerance of the framework (see McdFrameworkGetContactTolerance).
 MeReal ContactTolerance(const McdFramework *fw);
+// Records that a geometry of the framework changed its size: every pair's
+// remembered contacts (contact_reuse.h) are stale.
+void ShapeChanged(McdGeometry *g);
 
 // The key a model's pairs are ordered by: its own sort key once
 // McdModelSetSortKey was called, else its inherited key (0 by default).
@@ -134,6 +137,8 @@ struct McdModel {
 struct McdFramework {
   MeReal lengthScale;
   MeReal contactTolerance;
+  MeReal contactReuseDistance;  // McdFrameworkSetContactReuseDistance (contact_reuse.h)
+  unsigned shapeRevision;       // counts size changes of any geometry (contact_reuse.h)
   int typeMax;                             // built-in + user slots
   const karma::mcd::GeometryType **types;  // typeMax, NULL = unregistered
   McdInteractions *table;                  // typeMax * typeMax

@@ -78,6 +78,15 @@ MEPUBLIC int MEAPI McdFrameworkGetModelMaxCount(McdFrameworkID framework);
  * flicker with rounding. Default 1e-5 * lengthScale; >= 0. */
 MEPUBLIC void MEAPI McdFrameworkSetContactTolerance(McdFrameworkID framework, MeReal tolerance);
 MEPUBLIC MeReal MEAPI McdFrameworkGetContactTolerance(McdFrameworkID framework);
+/* Contact reuse (an extension of this engine): McdIntersect remembers a
+ * pair's contacts and serves later calls from them, moved with the two
+ * models, while their relative pose has moved no surface point by more
+ * than `distance` since the full test (and the tolerance asked for leaves
+ * room for that motion). Pairs of two boxes, cylinders, sphyls or convex
+ * meshes only; every other pair is always tested.
+ * Default 1e-4 * lengthScale; 0 tests every call; >= 0. */
+MEPUBLIC void MEAPI McdFrameworkSetContactReuseDistance(McdFrameworkID framework, MeReal distance);
+MEPUBLIC MeReal MEAPI McdFrameworkGetContactReuseDistance(McdFrameworkID framework);
 /* Geometries alive in the framework (every type). */
 MEPUBLIC int MEAPI McdFrameworkGetGeometryCount(McdFrameworkID framework);
 

@@ -56,6 +56,10 @@ typedef struct McdInteractions {
   /* Set by the table: 1 in the mirrored entry of a one-way registration
      * (the functions expect the models the other way round). */
   int swap;
+  /* Set by the table: 1 for the engine's own interactions, whose contacts
+   * McdIntersect may reuse (McdFrameworkSetContactReuseDistance); 0 for an
+   * application's. */
+  int m_builtIn;
 } McdInteractions;
 
 /* Registers `fns` (copied) for (type1, type2) and, unless registered on its

@@ -43,6 +43,8 @@ typedef struct McdModelPair {
   int m_spaceIndex;
   /* private: McdModelPairSetRequestPtr's */
   McdRequest *m_request;
+  /* private: McdIntersect's memory of the last contacts (contact reuse) */
+  void *m_contactMemory;
 } McdModelPair;
 typedef McdModelPair *McdModelPairID;
 

@@ -7,6 +7,12 @@
 //   element1 <-> element2
 //   dims low byte <-> high byte
 // The separation and position do not depend on the order.
+//
+// Contact reuse (contact_reuse.h): a pair of served types is tested at the
+// caller's tolerance plus the reuse distance and its contacts remembered;
+// later calls are served from that memory while the reuse rule holds. The
+// memory lives in m_contactMemory from the first test to McdGoodbye.
+#include "contact_reuse.h"
 #include "mcd_internal.h"
 
 #include <utility>
@@ -32,6 +38,25 @@ void InOrder(McdModelPair *pair, bool swap, F &&fn) {
   if (swap) Swap(pair);
   fn();
   if (swap) Swap(pair);
+}
+
+// The interaction's test of the pair, at most `cap` contacts, in the
+// caller's order.
+void Test(McdModelPair *pair, const McdInteractions *e, McdIntersectResult *result, int cap) {
+  const bool swap = e->swap != 0;
+  const int resultCap = result->contactMaxCount;
+  result->contactMaxCount = cap;
+  InOrder(pair, swap, [&] {
+    result->model1 = pair->model1;  // the interaction's order
+    result->model2 = pair->model2;
+    e->intersectFn(pair, result);
+  });
+  result->model1 = pair->model1;
+  result->model2 = pair->model2;
+  if (result->contactCount > result->contactMaxCount) result->contactCount = result->contactMaxCount;
+  result->contactMaxCount = resultCap;
+  if (result->contactCount < 0) result->contactCount = 0;
+  if (swap) TurnRound(result);
 }
 
 }  // namespace
@@ -64,6 +89,7 @@ void MEAPI McdGoodbye(McdModelPair *pair) {
   if (e && e->goodbyeFn) InOrder(pair, e->swap != 0, [&] { e->goodbyeFn(pair); });
   pair->m_interaction = nullptr;
   pair->m_cachedData = nullptr;
+  karma::mcd::Forget(pair);
   pair->m_helloed = 0;
 }
 
@@ -95,21 +121,22 @@ int MEAPI McdIntersect(McdModelPair *pair, McdIntersectResult *result) {
   ME_REQUIRE_ARG_RET(pair->m_helloed, 0, fn, "call McdHello on the pair first");
   const McdInteractions *e = pair->m_interaction;
   if (!e) return 0;  // no interaction for these types: ignored
-  const bool swap = e->swap != 0;
-  // The pair's request may lower the cap for this call only.
   const int resultCap = result->contactMaxCount;
-  result->contactMaxCount = karma::mcd::EffectiveContactCap(pair, resultCap);
-  InOrder(pair, swap, [&] {
-    result->model1 = pair->model1;  // the interaction's order
-    result->model2 = pair->model2;
-    e->intersectFn(pair, result);
-  });
-  result->model1 = pair->model1;
-  result->model2 = pair->model2;
-  if (result->contactCount > result->contactMaxCount) result->contactCount = result->contactMaxCount;
-  result->contactMaxCount = resultCap;
-  if (result->contactCount < 0) result->contactCount = 0;
-  if (swap) TurnRound(result);
+  const int cap = karma::mcd::EffectiveContactCap(pair, resultCap);
+  McdFramework *fw = pair->model1->framework;
+  const MeReal tolerance = fw->contactTolerance;
+  const MeReal reuse = karma::mcd::ReuseDistance(pair);
+  if (!(reuse > 0)) {
+    Test(pair, e, result, cap);
+    return result->touch;
+  }
+  const karma::mcd::RelativePose now = karma::mcd::PoseOf(pair->model1, pair->model2);
+  if (karma::mcd::ServeFromMemory(pair, result, tolerance, cap, now)) return result->touch;
+  fw->contactTolerance = tolerance + reuse;
+  Test(pair, e, result, cap);
+  fw->contactTolerance = tolerance;
+  karma::mcd::Remember(pair, result, tolerance + reuse, cap, now);
+  karma::mcd::DropBeyond(result, tolerance);
   return result->touch;
 }
 

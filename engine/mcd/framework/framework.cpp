@@ -3,6 +3,7 @@
 // McdInit takes all framework memory at once: the type table, the
 // interaction table (typeMax^2 entries), the model pool and the child
 // instance pool. Nothing else is allocated per frame.
+#include "contact_reuse.h"
 #include "mcd_internal.h"
 
 #include <cmath>
@@ -19,6 +20,10 @@ void *Zeroed(std::size_t bytes) { return MeMemoryAPI.createZeroed(bytes ? bytes 
 namespace karma::mcd {
 
 MeReal ContactTolerance(const McdFramework *fw) { return fw ? fw->contactTolerance : 0; }
+
+void ShapeChanged(McdGeometry *g) {
+  if (g && g->m_framework) ++g->m_framework->shapeRevision;
+}
 
 bool PositiveFinite(MeReal x, bool zeroOk) { return std::isfinite((double)x) && (zeroOk ? x >= 0 : x > 0); }
 
@@ -44,6 +49,7 @@ McdFrameworkID MEAPI McdInit(int geoTypeMaxCount, int modelCount, int instanceCo
   if (!fw) return nullptr;
   fw->lengthScale = lengthScale;
   fw->contactTolerance = (MeReal)1e-5 * lengthScale;
+  fw->contactReuseDistance = kDefaultContactReuse * lengthScale;
   fw->typeMax = kMcdGeometryBuiltInTypes + geoTypeMaxCount;
   const std::size_t cells = (std::size_t)fw->typeMax * (std::size_t)fw->typeMax;
   fw->types = static_cast<const GeometryType **>(Zeroed(sizeof(GeometryType *) * fw->typeMax));
@@ -93,6 +99,18 @@ void MEAPI McdFrameworkSetContactTolerance(McdFrameworkID fw, MeReal tolerance) 
   ME_REQUIRE_ARG(fw != nullptr, fn, "framework is NULL");
   ME_REQUIRE_ARG(PositiveFinite(tolerance, true), fn, "tolerance must be finite and >= 0, got %g", (double)tolerance);
   fw->contactTolerance = tolerance;
+}
+
+void MEAPI McdFrameworkSetContactReuseDistance(McdFrameworkID fw, MeReal distance) {
+  static const char *fn = "McdFrameworkSetContactReuseDistance";
+  ME_REQUIRE_ARG(fw != nullptr, fn, "framework is NULL");
+  ME_REQUIRE_ARG(PositiveFinite(distance, true), fn, "distance must be finite and >= 0, got %g", (double)distance);
+  fw->contactReuseDistance = distance;
+}
+
+MeReal MEAPI McdFrameworkGetContactReuseDistance(McdFrameworkID fw) {
+  ME_REQUIRE_ARG_RET(fw != nullptr, 0, "McdFrameworkGetContactReuseDistance", "framework is NULL");
+  return fw->contactReuseDistance;
 }
 
 MeReal MEAPI McdFrameworkGetContactTolerance(McdFrameworkID fw) {

@@ -18,6 +18,11 @@ namespace karma::mcd {
 void RegisterInteractionQuietly(McdFramework *fw, int a, int b, const McdInteractions &fns) {
   if (!fw || !ValidType(fw, a) || !ValidType(fw, b)) return;
   McdFrameworkSetInteraction(fw, a, b, &fns);
+  // The entries this call wrote are the engine's own.
+  const int n = fw->typeMax;
+  McdInteractions &ab = fw->table[a * n + b], &ba = fw->table[b * n + a];
+  ab.m_builtIn = 1;
+  if (a != b && !fw->explicitEntry[b * n + a]) ba.m_builtIn = 1;
 }
 
 }  // namespace karma::mcd
@@ -41,10 +46,12 @@ void MEAPI McdFrameworkSetInteraction(McdFrameworkID fw, int a, int b, const Mcd
   }
   ab = *fns;
   ab.swap = 0;
+  ab.m_builtIn = 0;
   fw->explicitEntry[a * n + b] = 1;
   if (a != b && !fw->explicitEntry[b * n + a]) {
     ba = *fns;
     ba.swap = 1;
+    ba.m_builtIn = 0;
   }
 }
 

@@ -62,7 +62,10 @@ void MEAPI McdBoxGetRadii(McdBoxID g, MeVector3 radii) {
 void MEAPI McdBoxSetDimensions(McdBoxID g, MeReal dx, MeReal dy, MeReal dz) {
   static const char *fn = "McdBoxSetDimensions";
   auto *b = As<Box>(g, kMcdGeometryTypeBox, fn);
-  if (b && GoodSize(dx, dy, dz, fn)) MeVector3Set(b->half, dx / 2, dy / 2, dz / 2);
+  if (b && GoodSize(dx, dy, dz, fn)) {
+    MeVector3Set(b->half, dx / 2, dy / 2, dz / 2);
+    ShapeChanged(g);
+  }
 }
 
 }  // extern "C"

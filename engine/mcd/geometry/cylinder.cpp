@@ -72,6 +72,7 @@ void MEAPI McdCylinderSetRadius(McdCylinderID g, MeReal radius) {
   if (!c) return;
   ME_REQUIRE_ARG(PositiveFinite(radius), fn, "radius must be positive and finite, got %g", (double)radius);
   c->radius = radius;
+  ShapeChanged(g);
 }
 
 void MEAPI McdCylinderSetHeight(McdCylinderID g, MeReal height) {
@@ -80,6 +81,7 @@ void MEAPI McdCylinderSetHeight(McdCylinderID g, MeReal height) {
   if (!c) return;
   ME_REQUIRE_ARG(PositiveFinite(height), fn, "height must be positive and finite, got %g", (double)height);
   c->height = height;
+  ShapeChanged(g);
 }
 
 }  // extern "C"

@@ -50,6 +50,7 @@ void MEAPI McdSphereSetRadius(McdSphereID g, MeReal radius) {
   if (!s) return;
   ME_REQUIRE_ARG(PositiveFinite(radius), fn, "radius must be positive and finite, got %g", (double)radius);
   s->radius = radius;
+  ShapeChanged(g);
 }
 
 }  // extern "C"

@@ -69,6 +69,7 @@ void MEAPI McdSphylSetRadius(McdSphylID g, MeReal radius) {
   if (!s) return;
   ME_REQUIRE_ARG(PositiveFinite(radius), fn, "radius must be positive and finite, got %g", (double)radius);
   s->radius = radius;
+  ShapeChanged(g);
 }
 
 void MEAPI McdSphylSetHeight(McdSphylID g, MeReal height) {
@@ -77,6 +78,7 @@ void MEAPI McdSphylSetHeight(McdSphylID g, MeReal height) {
   if (!s) return;
   ME_REQUIRE_ARG(PositiveFinite(height, true), fn, "height must be finite and >= 0, got %g", (double)height);
   s->height = height;
+  ShapeChanged(g);
 }
 
 }  // extern "C"

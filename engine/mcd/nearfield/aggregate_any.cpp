@@ -76,6 +76,7 @@ int MEAPI Intersect(McdModelPair *p, McdIntersectResult *r) {
     McdModelPair sub = *p;
     sub.model1 = &stand;
     sub.m_cachedData = nullptr;
+    sub.m_contactMemory = nullptr;
     McdIntersectResult sr{};
     sr.pair = p;
     sr.contacts = scratch.data();
