@@ -214,7 +214,8 @@ class ActiveSetRun {
     }
     /* The starting point counts as an iterate too, but its residual (a
      * product with A) is only needed when no iterate reaches the solved
-     * threshold, so it is scored at the end, if at all. */
+     * threshold, so it is scored at the end, if at all, unless the
+     * warm-start check has scored it already (startScored_). */
     s_.start = r_.lambda;
     s_.best = r_.lambda;
     return true;
@@ -222,9 +223,9 @@ class ActiveSetRun {
 
   /* KeaOptions::acceptWarmStart: whether the warm start meets the solved
    * threshold over kWarmAcceptDivisor as it is (then it is the answer, with
-   * no solve). Scored when
-   * the workspace expects the check to pay (kWarmCheckFloor); a check that
-   * fails leaves the warm start scored as the best iterate so far. */
+   * no solve). Scored when the workspace expects the check to pay
+   * (kWarmCheckFloor); a check that fails leaves the warm start scored as
+   * the best iterate so far, which finish() need not score again. */
   bool acceptedWarmStart() {
     if (!o_.acceptWarmStart || o_.warmStart.empty()) return false;
     MeReal &mean = s_.warmAccepted;
@@ -233,6 +234,7 @@ class ActiveSetRun {
       return false;
     }
     score();
+    startScored_ = true;
     r_.warmStartAccepted = bestResidual_ <= threshold_ / kWarmAcceptDivisor;
     mean += kWarmLearningRate * ((r_.warmStartAccepted ? MeReal(1) : MeReal(0)) - mean);
     return r_.warmStartAccepted;
@@ -376,17 +378,24 @@ class ActiveSetRun {
     s_.hi.swap(s_.newHi);
   }
 
+  /* The starting point becomes the best iterate when no iterate reached
+   * the solved threshold and its residual is smaller than theirs. A start
+   * already scored is already in bestResidual_ (score() keeps the least),
+   * so scoring it again could not change the best: it is skipped. */
+  void considerStart() {
+    if (startScored_ || bestResidual_ <= threshold_) return;
+    const MeReal startResidual = backend_.residual(s_.start, {});
+    if (startResidual < bestResidual_) {
+      bestResidual_ = startResidual;
+      s_.best = s_.start;
+      bestIsCurrent_ = false;
+    }
+  }
+
   /* The best iterate (the starting point included), its w and residual,
    * the status and its warning. */
   void finish() {
-    if (bestResidual_ > threshold_) {
-      const MeReal startResidual = backend_.residual(s_.start, {});
-      if (startResidual < bestResidual_) {
-        bestResidual_ = startResidual;
-        s_.best = s_.start;
-        bestIsCurrent_ = false;
-      }
-    }
+    considerStart();
     if (bestIsCurrent_) {
       r_.residual = bestResidual_;
     } else {
@@ -420,6 +429,8 @@ class ActiveSetRun {
   /* Whether best and bestResidual_ are r.lambda and its residual, with r.w
    * its w: then the final residual need not be computed again. */
   bool bestIsCurrent_ = false;
+  /* Whether the starting point has been scored (by acceptedWarmStart). */
+  bool startScored_ = false;
   /* Coupled friction steps that may still fail (see coupledStep). */
   int couplingTries_ = kCouplingTries;
 };

@@ -225,7 +225,9 @@ void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &w
     RetryCold(p, o, target, workspace, result);
   else if (warm && result.status == KeaStatus::IterationLimit)
     detail::WarnIterationLimit(o, kName, result.iterations, result.residual);
-  workspace.backend.learnFrictionRounds(result.frictionRounds); /* a cold retry's included */
+  /* A kept warm start solved nothing, so it says nothing of the solves the
+   * keep rule prices (kea_sparse_backend.h, StaleRecord::solves). */
+  if (!result.warmStartAccepted) workspace.backend.learnFrictionRounds(result.frictionRounds);
 }
 
 }  // namespace

@@ -183,7 +183,8 @@ class SparseBackend {
    * iterations and the failure rate back toward their priors by
    * kStaleRecoveryRate, so that a workspace that learnt to refactorise
    * tries again now and then. The friction rounds are learnt from every
-   * problem and need no recovery. */
+   * problem that is solved (not from a kept warm start, which makes no
+   * linear solve) and need no recovery. */
   static constexpr MeReal kStaleIterationsPrior = 2;
   /* The multiply-adds of assembling one entry of A = J M^-1 J^T + diag
    * for a factorisation, counted in the envelope's cost model when the
@@ -230,10 +231,10 @@ class SparseBackend {
    * one (the solve then starts from it). */
   bool startsStale(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory) const;
 
-  /* The friction rounds one problem took (KeaResult::frictionRounds, a
-   * cold retry's included), which teaches the cost model how many times a
+  /* The friction rounds one solved problem took (KeaResult::frictionRounds,
+   * a cold retry's included), which teaches the cost model how many times a
    * problem solves with its factor: on a stale factor each round is a
-   * stale solve. */
+   * stale solve. A problem whose warm start was kept is not one. */
   void learnFrictionRounds(int rounds);
 
   /* Factorisations since reset(). */

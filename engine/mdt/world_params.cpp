@@ -299,6 +299,8 @@ void checkDirectParamWrites(MdtWorldID world) {
   checkCount(p.maxMatrixSize, ok.maxMatrixSize, "MdtWorldSetMaxMatrixSize", "maxMatrixSize");
   checkCount(p.keaMaxIterations, ok.keaMaxIterations, "MdtWorldSetKeaMaxIterations", "keaMaxIterations");
   checkCount(p.jointProjection, ok.jointProjection, "MdtWorldSetJointProjection", "jointProjection");
+  checkCount(p.keaIterativeRows, ok.keaIterativeRows, "MdtWorldSetKeaIterativeRows", "keaIterativeRows");
+  p.keaAcceptWarmStart = ok.keaAcceptWarmStart = p.keaAcceptWarmStart ? 1 : 0;
   checkKeaMethod(p, ok);
 }
 

@@ -11,7 +11,7 @@ void MEAPI MdtWorldSetKeaIterativeRows(const MdtWorldID world, const int rows) {
   static const char *fn = "MdtWorldSetKeaIterativeRows";
   ME_REQUIRE_ARG(world != nullptr, fn, "world is NULL");
   ME_REQUIRE_ARG(rows >= 0, fn, "row threshold must be >= 0 (0 = never), got %d; ignored", rows);
-  world->params.keaIterativeRows = rows;
+  world->params.keaIterativeRows = world->priv->checked.keaIterativeRows = rows;
 }
 
 int MEAPI MdtWorldGetKeaIterativeRows(const MdtWorldID world) {
@@ -21,7 +21,7 @@ int MEAPI MdtWorldGetKeaIterativeRows(const MdtWorldID world) {
 
 void MEAPI MdtWorldSetKeaAcceptWarmStart(const MdtWorldID world, const MeBool on) {
   ME_REQUIRE_ARG(world != nullptr, "MdtWorldSetKeaAcceptWarmStart", "world is NULL");
-  world->params.keaAcceptWarmStart = on ? 1 : 0;
+  world->params.keaAcceptWarmStart = world->priv->checked.keaAcceptWarmStart = on ? 1 : 0;
 }
 
 MeBool MEAPI MdtWorldGetKeaAcceptWarmStart(const MdtWorldID world) {

@@ -118,7 +118,7 @@ void StepBudget::recordSolve(std::uintptr_t partition, const BudgetChoice &c, in
     sweepsCapped_.add(capped ? 1 : 0, 1);
     if (!capped) sweepsStopped_.add((MeReal)done, 1);
     fewestSweeps_ = fewestSweeps_ == 0 ? c.maxIterations : std::min(fewestSweeps_, c.maxIterations);
-  } else {
+  } else if (solves > 0) {
     exact_.add(learned, exactWork(rows) * (MeReal)done);
     if (c.level == 0) exactSolves_.add((MeReal)done, 1);
   }

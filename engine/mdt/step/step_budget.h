@@ -37,7 +37,9 @@
 // partitions: for exact levels the mean linear solves at level 0;
 // for the iterative level f * k + (1 - f) * s', where f is the share of
 // solves that ran to their cap and s' the mean sweeps of those that
-// stopped short. s never exceeds the level's cap. A partition is known
+// stopped short. s never exceeds the level's cap. An exact solve whose
+// warm start was kept (no linear solve) is not learned from: a partition
+// that keeps it is priced as one that solves once. A partition is known
 // from one step to the next by its identity (problem.h).
 // Each coefficient is the ratio of exponentially weighted sums of measured
 // time and work (weights decay by kDecay per step), started from a prior of
@@ -106,6 +108,10 @@ class StepBudget {
   // The predicted cost of that partition's solve with `choice`.
   MeReal predictedCost(const BudgetChoice &choice, std::uintptr_t partition, int rows) const;
   // What that solve did: `solves` linear solves or sweeps in `microseconds`.
+  // An exact solve that made no linear solve (its warm start kept: one
+  // product with A; or bad input) teaches the exact levels' price and mean
+  // solves nothing: their unit is the linear solve. It still counts as one
+  // solve in its partition's record, and its time as spent this step.
   void recordSolve(std::uintptr_t partition, const BudgetChoice &choice, int rows, int solves, MeReal microseconds);
 
   // This step so far (for the step stats).

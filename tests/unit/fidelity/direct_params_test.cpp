@@ -146,3 +146,22 @@ TEST(DirectParams, SetterValuesAreNotCheckedTwice) {
   MdtWorldStep(p.w, kH);
   EXPECT_EQ(cap.count(), 2u);
 }
+
+TEST(DirectParams, TheSolverChoiceFieldsKeepTheirSettersLastValue) {
+  // A direct write the setter would reject goes back to the setter's last
+  // value (not the default, which it would be if the setter did not store
+  // into the checked copy), and a direct keaAcceptWarmStart is read as a
+  // boolean, as autoDisable is.
+  Pendulum p;
+  WarningCapture cap;
+  MdtWorldSetKeaIterativeRows(p.w, 50);
+  p.w->params.keaIterativeRows = -1;  // before any step: the setter's value is the last valid one
+  p.w->params.keaAcceptWarmStart = 7;
+  MdtWorldStep(p.w, kH);
+  EXPECT_EQ(cap.count(), 1u);
+  EXPECT_TRUE(cap.saw("MdtWorldSetKeaIterativeRows"));
+  EXPECT_EQ(MdtWorldGetKeaIterativeRows(p.w), 50);
+  EXPECT_EQ(p.w->params.keaAcceptWarmStart, 1);
+  MdtWorldStep(p.w, kH);
+  EXPECT_EQ(cap.count(), 1u);  // once
+}

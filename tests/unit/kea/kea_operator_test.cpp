@@ -9,15 +9,21 @@
 // the kept factor agrees with the stored matrix's answer to the tolerance
 // and, when it ends on that factor, assembles nothing; a far problem
 // assembles once; PGS assembles first; an operator that does not vouch for
-// its values is assembled and checked.
+// its values is assembled and checked. A warm start checked on the kept
+// factor (KeaOptions::acceptWarmStart) is scored through the operator: kept,
+// it reads no entry; not kept, it is multiplied once however the solve ends.
 #include "kea_tolerance.h"
 #include "kea_contact_problems.h"
 #include "kea_lcp.h"
+#include "kea_activeset_core.h"
+#include "kea_sparse_backend.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,8 +46,15 @@ class ReversedRows final : public SparseLcpOperator {
     return s;
   }
   int assembled() const { return assembled_; }
+  // Counts from now on the products of every row with `x` (bit for bit).
+  void watch(std::span<const MeReal> x) {
+    watched_.assign(x.begin(), x.end());
+    watchedProducts_ = 0;
+  }
+  int watchedProducts() const { return watchedProducts_; }
 
   void times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const override {
+    if (!rows && count == watched_.size() && std::equal(watched_.begin(), watched_.end(), x)) ++watchedProducts_;
     for (std::size_t a = 0; a < count; ++a) y[a] = rowSum(rows ? rows[a] : (int)a, x, false);
   }
   MeReal absTimesMax(const int *rows, std::size_t count, const MeReal *x) const override {
@@ -70,6 +83,8 @@ class ReversedRows final : public SparseLcpOperator {
   mutable std::vector<MeReal> values_;
   mutable int assembled_ = 0;
   bool entriesFinite_;
+  std::vector<MeReal> watched_;
+  mutable int watchedProducts_ = 0;
 };
 
 std::vector<std::pair<std::string, ContactProblem>> Problems() {
@@ -174,4 +189,88 @@ TEST(KeaOperator, AnUnboundedOperatorIsAssembledAndChecked) {
   KeaSolveSparse(op.problem(), o, *workspace, r2);
   EXPECT_EQ(op.assembled(), 1);
   EXPECT_EQ(r2.status, KeaStatus::BadInput);
+}
+
+namespace {
+
+// A workspace that has solved `problem` with KeaFactorMemory::Always, so
+// that its next solve of that sparsity starts on the kept factor and
+// applies the operator; `answer` is that solve's result.
+kea_test::Workspace SolvedOnce(const ContactProblem &problem, KeaResult &answer) {
+  kea_test::Workspace workspace(KeaWorkspaceCreate());
+  KeaOptions o;
+  o.factorMemory = KeaFactorMemory::Always;
+  KeaSolveSparse(problem.sparse(), o, *workspace, answer);
+  return workspace;
+}
+
+}  // namespace
+
+TEST(KeaOperator, AWarmStartKeptOnTheKeptFactorReadsNoEntry) {
+  // The warm-start check on the kept factor takes its residual through the
+  // operator (the values are NaN until assembled): an answer given back is
+  // kept exactly when that residual is within the solved threshold over
+  // kWarmAcceptDivisor, and then nothing is assembled or solved.
+  int kept = 0;
+  for (const auto &[name, problem] : Problems()) {
+    KeaResult answer, r;
+    kea_test::Workspace workspace = SolvedOnce(problem, answer);
+    ASSERT_EQ(answer.status, KeaStatus::Solved) << name;
+    const ReversedRows reference(problem), op(problem);
+    std::vector<MeReal> w(answer.lambda.size());
+    const MeReal residual = karma::kea::detail::SparseMultiplyResidual(karma::platform::DefaultKernels(),
+                                                                       reference.problem(), 0, answer.lambda, w);
+    const MeReal threshold = KeaDefaultTolerance() * (1 + static_cast<MeReal>(kea_test::MaxAbs(problem.b)));
+    const bool keep = residual <= threshold / karma::kea::detail::kWarmAcceptDivisor;
+    KeaOptions o;
+    o.factorMemory = KeaFactorMemory::Always;
+    o.warmStart = answer.lambda;
+    o.acceptWarmStart = true;
+    KeaSolveSparse(op.problem(), o, *workspace, r);
+    EXPECT_EQ(reference.assembled(), 0) << name;
+    ASSERT_EQ(r.status, KeaStatus::Solved) << name;
+    EXPECT_EQ(r.warmStartAccepted, keep) << name << ": residual " << residual << ", threshold " << threshold;
+    if (!keep) continue;
+    ++kept;
+    EXPECT_EQ(op.assembled(), 0) << name;
+    EXPECT_EQ(r.iterations, 0) << name;
+    EXPECT_EQ(r.factorizations, 0) << name;
+    EXPECT_EQ(r.staleSolves, 0) << name;
+    EXPECT_TRUE(r.lambda == answer.lambda) << name;
+    EXPECT_EQ(r.residual, residual) << name;  // the operator's own residual and w
+    EXPECT_TRUE(r.w == w) << name;
+  }
+  // 10 of the 13: a friction fixed point may stop anywhere within half the
+  // threshold, above its sixteenth.
+  EXPECT_GE(kept, 8);
+}
+
+TEST(KeaOperator, AWarmStartThatFailsItsCheckIsMultipliedOnce) {
+  // A warm start far from the answer fails its check; the solve, capped at
+  // one linear solve, then ends short of the threshold, where the starting
+  // point competes for the best iterate: its residual from the check is
+  // used, not computed again (only its w is, when it is returned).
+  int capped = 0;
+  for (const auto &[name, problem] : Problems()) {
+    KeaResult answer, r;
+    kea_test::Workspace workspace = SolvedOnce(problem, answer);
+    ASSERT_EQ(answer.status, KeaStatus::Solved) << name;
+    const ContactProblem far = Perturbed(problem, 0.3);
+    ReversedRows op(far);
+    KeaOptions o;
+    o.factorMemory = KeaFactorMemory::Always;
+    o.warmStart = answer.lambda;
+    o.acceptWarmStart = true;
+    o.maxIterations = 1;
+    o.warnings = false;
+    op.watch(answer.lambda);
+    KeaSolveSparse(op.problem(), o, *workspace, r);
+    EXPECT_FALSE(r.warmStartAccepted) << name;
+    if (r.status == KeaStatus::Solved) continue;
+    ++capped;
+    // The check's product, and the one that gives w when the start is the
+    // answer returned.
+    EXPECT_EQ(op.watchedProducts(), r.lambda == answer.lambda ? 2 : 1) << name;
+  }
+  EXPECT_GE(capped, 5);  // 7 of the 13 end short of the threshold after one solve
 }

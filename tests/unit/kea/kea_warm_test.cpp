@@ -259,3 +259,57 @@ TEST(KeaWarmStart, AWorkspaceWhoseChecksFailStopsCheckingForAWhile) {
   KeaSolveSparse(problem.sparse(), o, *workspace, r);
   EXPECT_TRUE(r.warmStartAccepted);  // a kept warm start raises the mean again
 }
+
+namespace {
+
+// t's problem with A stored dense (row-major), for KeaSolveActiveSet.
+struct DenseCopy {
+  std::vector<MeReal> A;
+  const ContactProblem &p;
+  explicit DenseCopy(const ContactProblem &problem)
+      : A(static_cast<std::size_t>(problem.n) * static_cast<std::size_t>(problem.n), MeReal(0)), p(problem) {
+    const auto n = static_cast<std::size_t>(p.n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = p.rowStart[i]; k < p.rowStart[i + 1]; ++k)
+        A[i * n + static_cast<std::size_t>(p.col[static_cast<std::size_t>(k)])] = p.val[static_cast<std::size_t>(k)];
+  }
+  LcpProblem problem() const { return {p.n, A, p.b, p.lo, p.hi, p.findex, p.mu}; }
+};
+
+}  // namespace
+
+TEST(KeaWarmStart, TheDenseSolverKeepsAnAnswerAsItIsWhenAskedFor) {
+  // KeaSolveActiveSet's warm-start check: its own answer, given back, is
+  // kept without a solve exactly when its residual (KeaResidual) is within
+  // the solved threshold over kWarmAcceptDivisor; then the answer is the
+  // warm start bit for bit with its own residual and w.
+  int keptCount = 0;
+  for (const Named &t : Problems()) {
+    const DenseCopy dense(t.problem);
+    const KeaResult cold = KeaSolveActiveSet(dense.problem(), KeaOptions{});
+    ASSERT_EQ(cold.status, KeaStatus::Solved) << t.name;
+    std::vector<MeReal> w(cold.lambda.size());
+    const MeReal residual = KeaResidual(dense.problem(), 0, cold.lambda, w);
+    const MeReal threshold = KeaDefaultTolerance() * (1 + static_cast<MeReal>(MaxAbs(t.problem.b)));
+    const bool keep = residual <= threshold / karma::kea::detail::kWarmAcceptDivisor;
+    KeaOptions o;
+    o.warmStart = cold.lambda;
+    o.acceptWarmStart = true;
+    const KeaResult kept = KeaSolveActiveSet(dense.problem(), o);
+    EXPECT_EQ(kept.status, KeaStatus::Solved) << t.name;
+    EXPECT_EQ(kept.warmStartAccepted, keep) << t.name << ": residual " << residual << ", threshold " << threshold;
+    if (!keep) {
+      EXPECT_GE(kept.iterations, 1) << t.name;
+      continue;
+    }
+    ++keptCount;
+    EXPECT_EQ(kept.iterations, 0) << t.name;
+    EXPECT_EQ(kept.factorizations, 0) << t.name;
+    EXPECT_TRUE(kept.lambda == cold.lambda) << t.name;
+    EXPECT_EQ(kept.residual, residual) << t.name;
+    EXPECT_TRUE(kept.w == w) << t.name;
+  }
+  // 13 of the 15: a friction fixed point may stop anywhere within half the
+  // threshold, above its sixteenth.
+  EXPECT_GE(keptCount, 11);
+}

@@ -111,7 +111,17 @@ TEST(SolverChoice, KeptWarmStartsAreOnByDefaultAndCanBeTurnedOff) {
     s.step();
     kept += Stats(s).keaWarmStarts;
   }
-  EXPECT_GT(kept, 0);  // a resting pair of boxes
+  // Measured: 49 of the 120 steps in single precision, 22 in double. The
+  // pair, created touching, settles first (each step solved: the first 29
+  // in single, the first 90 in double, whose tolerance is 1e-10). At rest
+  // about every other warm start is kept: a kept answer is last step's
+  // impulses, which this step's slightly changed problem then rejects, and
+  // the solve that follows ends near rounding and is kept the step after
+  // (double keeps runs of up to a dozen). The bounds leave about a fifth
+  // either side; below them the check has stopped paying, above them a warm
+  // start is kept where it should have been solved.
+  EXPECT_GE(kept, KARMA_DOUBLE ? 16 : 40);
+  EXPECT_LE(kept, KARMA_DOUBLE ? 28 : 60);
   MdtWorldSetKeaAcceptWarmStart(s.u->world, 0);
   EXPECT_EQ(MdtWorldGetKeaAcceptWarmStart(s.u->world), 0);
   for (int i = 0; i < 60; ++i) {

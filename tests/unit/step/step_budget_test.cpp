@@ -104,6 +104,32 @@ TEST(StepBudget, ChoosesTheMostAccurateLevelThatFitsItsShare) {
   EXPECT_EQ(budget.choose(0, rows).maxIterations, StepBudget::kMinSweeps);
 }
 
+TEST(StepBudget, AKeptWarmStartDoesNotCheapenTheExactPrice) {
+  // Every solve exact; every other step partition 1 keeps its warm start (no
+  // linear solve, a hundredth of a solve's time). The exact coefficient and
+  // the mean solves are those of the real solves, and partition 1 is still
+  // priced as a partition that solves once.
+  StepBudget budget;
+  TrueCosts truth;
+  truth.exactSolves = 1;
+  budget.setBudget(1e9);
+  const int rows = 100;
+  const BudgetChoice exact{0, false, 0};
+  const double oneSolve = truth.exactPerWork * rows * std::sqrt((double)rows);
+  for (int step = 0; step < 100; ++step) {
+    budget.beginStep();
+    for (std::uintptr_t partition : {1u, 2u}) {
+      ASSERT_EQ(budget.choose(partition, rows).level, 0);
+      const bool kept = partition == 1 && step % 2 == 1;
+      budget.recordSolve(partition, exact, rows, kept ? 0 : 1, (MeReal)(kept ? oneSolve / 100 : oneSolve));
+    }
+    budget.endStep((MeReal)(truth.overhead + 2 * oneSolve));
+  }
+  EXPECT_NEAR(budget.exactCoefficient(), truth.exactPerWork, 1e-4 * truth.exactPerWork);
+  EXPECT_NEAR(budget.predictedCost(exact, 1, rows), oneSolve, 1e-3 * oneSolve);
+  EXPECT_NEAR(budget.predictedCost(exact, 0, rows), oneSolve, 1e-3 * oneSolve);
+}
+
 // Steps a starved budget (every solve iterative) through partitions 1 and 2
 // of `rows` rows: partition 1 converges after `stopsAfter` sweeps, partition
 // 2 runs to its cap; each solve takes exactly the passes it makes.

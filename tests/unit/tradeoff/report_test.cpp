@@ -128,6 +128,12 @@ bool PngSize(const std::string &path, unsigned &width, unsigned &height) {
   return true;
 }
 
+TEST(TradeoffReport, AColumnIsFoundByItsNameAndAMissingNameStops) {
+  const std::vector<std::string> &columns = CsvColumns();
+  for (size_t i = 0; i < columns.size(); ++i) EXPECT_EQ(CsvColumn(columns[i].c_str()), i) << columns[i];
+  EXPECT_DEATH(CsvColumn("us_per_stepp"), "no CSV column named \"us_per_stepp\"");
+}
+
 TEST(TradeoffReport, ThePlotIsAPngOfTheStatedSize) {
   const std::string gnuplot = FindGnuplot();
   ASSERT_FALSE(gnuplot.empty()) << "gnuplot is missing: scripts/install-deps.sh installs gnuplot-nox";

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace karma::tradeoff {
 
@@ -68,6 +69,16 @@ const std::vector<std::string> &CsvColumns() {
                                                    "front_scene",
                                                    "detail"};
   return columns;
+}
+
+size_t CsvColumn(const char *name) {
+  const std::vector<std::string> &columns = CsvColumns();
+  const auto it = std::find(columns.begin(), columns.end(), name);
+  if (it == columns.end()) {
+    std::fprintf(stderr, "karma-tradeoff: internal error: no CSV column named \"%s\"\n", name);
+    std::abort();
+  }
+  return (size_t)(it - columns.begin());
 }
 
 void WriteCsv(std::FILE *f, const std::vector<ResultRow> &rows) {
@@ -185,10 +196,7 @@ bool ReadCsv(const std::string &path, std::vector<ResultRow> &out, std::string &
   if (!in || !std::getline(in, line)) return error = "cannot read " + path, false;
   const std::vector<std::string> &columns = CsvColumns();
   if (SplitCsvLine(line) != columns) return error = path + " has other columns than this tool writes", false;
-  // The index of a column by its name (every name used below is one of CsvColumns()).
-  auto at = [&columns](const char *name) {
-    return (size_t)(std::find(columns.begin(), columns.end(), name) - columns.begin());
-  };
+  const auto at = CsvColumn;
   while (std::getline(in, line)) {
     const std::vector<std::string> c = SplitCsvLine(line);
     if (c.size() != columns.size()) continue;

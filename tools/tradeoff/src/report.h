@@ -24,6 +24,10 @@ namespace karma::tradeoff {
 
 // The CSV header line's columns, in order.
 const std::vector<std::string> &CsvColumns();
+// The index of the column `name` in CsvColumns(). Every name the tool asks
+// for is one of them: a name that is not stops the program with a message
+// (a bug, not a property of the file read).
+size_t CsvColumn(const char *name);
 void WriteCsv(std::FILE *f, const std::vector<ResultRow> &rows);
 
 // What the Markdown says about a scene besides its rows.
