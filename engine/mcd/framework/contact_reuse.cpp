@@ -2,7 +2,6 @@
 #include "contact_reuse.h"
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace karma::mcd {
@@ -16,16 +15,19 @@ struct KeptContact {
   McdContact contact;
 };
 
+// One MeMemoryAPI block: this header, then `capacity` KeptContacts.
 struct PairMemory {
   const McdGeometry *geometry1, *geometry2;
   unsigned shapeRevision;
   int cap;
-  MeReal tested;      // the tolerance of the full test, t + d
+  MeReal tested;          // the tolerance of the full test, t + d
   MeReal reach1, reach2;  // r_1, r_2
-  RelativePose pose;  // Q0
+  RelativePose pose;      // Q0
   int count, capacity;
-  KeptContact contacts[1];  // `capacity` of them
+  KeptContact *contacts() { return reinterpret_cast<KeptContact *>(this + 1); }
+  const KeptContact *contacts() const { return reinterpret_cast<const KeptContact *>(this + 1); }
 };
+static_assert(sizeof(PairMemory) % alignof(KeptContact) == 0, "the contacts follow the header aligned");
 
 const MeReal kInfinity = std::numeric_limits<MeReal>::infinity();
 
@@ -33,9 +35,9 @@ MeReal Dot3(const MeReal *a, const MeReal *b) { return a[0] * b[0] + a[1] * b[1]
 
 MeMatrix4Ptr TmOf(const McdModel *m) { return m->instance.tm; }
 
-// How far the geometry's surface reaches from its model's origin: half the
-// diagonal of its bounds about the origin, or infinity for an unbounded
-// shape (a plane).
+// How far the geometry's surface reaches from its model's origin at most:
+// the distance to the farthest corner of its bounds about the origin, or
+// infinity for an unbounded shape (a plane).
 MeReal Reach(const McdGeometry *g) {
   static const MeMatrix4 kIdentity = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
   MeVector3 lo, hi;
@@ -89,9 +91,7 @@ bool Served(int type1, int type2) {
 
 PairMemory *MemoryOf(const McdModelPair *pair) { return static_cast<PairMemory *>(pair->m_contactMemory); }
 
-std::size_t BytesFor(int capacity) {
-  return sizeof(PairMemory) + sizeof(KeptContact) * (std::size_t)(capacity > 1 ? capacity - 1 : 0);
-}
+std::size_t BytesFor(int capacity) { return sizeof(PairMemory) + sizeof(KeptContact) * (std::size_t)capacity; }
 
 // The pair's memory with room for `count` contacts, or NULL.
 PairMemory *MemoryWithRoom(McdModelPair *pair, int count) {
@@ -150,7 +150,7 @@ bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tole
   const MeMatrix4Ptr t1 = TmOf(m1), t2 = TmOf(m2);
   int n = 0;
   for (int k = 0; k < m->count; ++k) {
-    const KeptContact &kept = m->contacts[k];
+    const KeptContact &kept = m->contacts()[k];
     MeReal x1[3], x2[3], normal[3], gap[3];
     ToWorld(t1, kept.on1, x1);
     ToWorld(t2, kept.on2, x2);
@@ -202,7 +202,7 @@ void Remember(McdModelPair *pair, const McdIntersectResult *result, MeReal teste
   m->count = count;
   const MeMatrix4Ptr t1 = TmOf(m1), t2 = TmOf(m2);
   for (int k = 0; k < count; ++k) {
-    KeptContact &kept = m->contacts[k];
+    KeptContact &kept = m->contacts()[k];
     const McdContact &c = result->contacts[k];
     kept.contact = c;
     ToLocal(t1, c.position, kept.on1);
