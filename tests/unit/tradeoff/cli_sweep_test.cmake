@@ -16,7 +16,7 @@ endif()
 
 file(STRINGS "${OUT}/tradeoff.csv" lines)
 list(GET lines 0 header)
-set(expected "scene,precision,engine,setting,solver,epsilon,gamma,h,tolerance,cap,projection,warm,repeats,us_per_step,us_min,us_max,us_per_frame,steps,drift_m,joint_error_m,penetration_m,energy_error_J,momentum_error_Ns,residual,unsolved_steps,max_speed_mps,scene_error,held,front_drift,front_scene,detail")
+set(expected "scene,precision,engine,setting,solver,epsilon,gamma,h,tolerance,cap,projection,warm,reuse,repeats,us_per_step,us_min,us_max,us_per_frame,steps,drift_m,joint_error_m,penetration_m,energy_error_J,momentum_error_Ns,residual,unsolved_steps,max_speed_mps,scene_error,held,front_drift,front_scene,detail")
 if(NOT header STREQUAL expected)
   message(FATAL_ERROR "CSV header:\n${header}\nexpected:\n${expected}")
 endif()

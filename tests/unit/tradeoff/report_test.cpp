@@ -56,6 +56,7 @@ TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
                                              "cap",
                                              "projection",
                                              "warm",
+                                             "reuse",
                                              "repeats",
                                              "us_per_step",
                                              "us_min",
@@ -81,6 +82,7 @@ TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
   rows[0].frontDrift = true;
   rows[1].setting.projection = 2;
   rows[1].setting.warm = 0;
+  rows[1].setting.reuse = 0;
   std::FILE *f = std::fopen(path.c_str(), "w");
   ASSERT_NE(f, nullptr);
   WriteCsv(f, rows);
@@ -95,10 +97,11 @@ TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
   EXPECT_EQ(cells[3], "iterative:10 epsilon=0.001 h=1/120");
   EXPECT_EQ(cells[10], "");     // projection: the scene's own
   EXPECT_EQ(cells[11], "");     // warm: the scene's own
-  EXPECT_EQ(cells[13], "100");  // the median of the repetitions
-  EXPECT_EQ(cells[16], "200");  // 1/60 s is two steps of 1/120 s
-  EXPECT_EQ(cells[28], "1");
-  EXPECT_EQ(cells[30], "top box drift 0.00 mm, height \"6.1\" m");  // quotes survive
+  EXPECT_EQ(cells[12], "");     // reuse: the scene's own
+  EXPECT_EQ(cells[14], "100");  // the median of the repetitions
+  EXPECT_EQ(cells[17], "200");  // 1/60 s is two steps of 1/120 s
+  EXPECT_EQ(cells[29], "1");
+  EXPECT_EQ(cells[31], "top box drift 0.00 mm, height \"6.1\" m");  // quotes survive
   std::vector<ResultRow> back;
   std::string error;
   ASSERT_TRUE(ReadCsv(path, back, error)) << error;
@@ -106,6 +109,7 @@ TEST(TradeoffReport, CsvHasTheDocumentedColumnsAndReadsBack) {
   EXPECT_EQ(back[1].setting.label(), rows[1].setting.label());
   EXPECT_EQ(back[1].setting.projection, 2);
   EXPECT_EQ(back[1].setting.warm, 0);
+  EXPECT_EQ(back[1].setting.reuse, 0);
   EXPECT_DOUBLE_EQ(back[1].median(), 50);
   EXPECT_DOUBLE_EQ(back[1].drift, 0.2);
   EXPECT_FALSE(back[1].held);

@@ -86,11 +86,11 @@ TEST(TradeoffSweep, JointProjectionIsAKnob) {
   EXPECT_EQ(s[0].label(), "exact h=1/60 projection=0");
   EXPECT_EQ(s[1].label(), "exact h=1/60 projection=2");
   MdtWorldID world = MdtWorldCreate(1, 1, 1, 1);
-  s[1].apply(world);
+  s[1].apply(world, nullptr);
   EXPECT_EQ(MdtWorldGetJointProjection(world), 2);
-  s[0].apply(world);
+  s[0].apply(world, nullptr);
   EXPECT_EQ(MdtWorldGetJointProjection(world), 0);
-  Setting{}.apply(world);  // left out: the world keeps its own
+  Setting{}.apply(world, nullptr);  // left out: the world keeps its own
   EXPECT_EQ(MdtWorldGetJointProjection(world), 0);
   MdtWorldDestroy(world);
   EXPECT_FALSE(ParseSweep("projection=1.5", s, error));
@@ -110,14 +110,39 @@ TEST(TradeoffSweep, TheWarmKnobKeepsOrSolvesWarmStarts) {
   MdtWorldID world = MdtWorldCreate(4, 4, 1, 1);
   ASSERT_NE(world, nullptr);
   ASSERT_TRUE(ParseSweep("warm=0", s, error)) << error;
-  s[0].apply(world);
+  s[0].apply(world, nullptr);
   EXPECT_EQ(MdtWorldGetKeaAcceptWarmStart(world), 0);
   ASSERT_TRUE(ParseSweep("warm=1", s, error)) << error;
-  s[0].apply(world);
+  s[0].apply(world, nullptr);
   EXPECT_EQ(MdtWorldGetKeaAcceptWarmStart(world), 1);
   MdtWorldDestroy(world);
 }
 
+TEST(TradeoffSweep, TheReuseKnobSetsTheContactReuseDistance) {
+  std::vector<Setting> s;
+  std::string error;
+  ASSERT_TRUE(ParseSweep("reuse=0,1e-3", s, error)) << error;
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].label(), "exact h=1/60 reuse=0");
+  EXPECT_EQ(s[1].label(), "exact h=1/60 reuse=0.001");
+  EXPECT_FALSE(ParseSweep("reuse=-1", s, error));
+  MdtWorldID world = MdtWorldCreate(4, 4, 1, 1);
+  McdFrameworkID framework = McdInit(0, 4, 4, 1);
+  ASSERT_NE(world, nullptr);
+  ASSERT_NE(framework, nullptr);
+  const MeReal initial = McdFrameworkGetContactReuseDistance(framework);
+  Setting{}.apply(world, framework);  // left out: the framework keeps its own
+  EXPECT_EQ(McdFrameworkGetContactReuseDistance(framework), initial);
+  ASSERT_TRUE(ParseSweep("reuse=0,1e-3", s, error)) << error;
+  s[0].apply(world, framework);
+  EXPECT_EQ(McdFrameworkGetContactReuseDistance(framework), 0);
+  s[1].apply(world, framework);
+  EXPECT_EQ(McdFrameworkGetContactReuseDistance(framework), (MeReal)1e-3);
+  s[0].apply(world, nullptr);  // a scene without collision: nothing to set
+  EXPECT_EQ(McdFrameworkGetContactReuseDistance(framework), (MeReal)1e-3);
+  McdTerm(framework);
+  MdtWorldDestroy(world);
+}
 
 TEST(TradeoffSweep, BadSweepsSayWhatIsWrong) {
   std::vector<Setting> s;

@@ -34,7 +34,8 @@ std::string Usage() {
          "               KarmaTradeoffBuildScene (karma/KarmaTradeoffScene.h)\n"
          "  --sweep      e.g. \"solver=exact,exact:8,iterative:10,iterative:50 epsilon=1e-4..1e-1 h=1/60..1/480\"\n"
          "               knobs: solver (exact, exact:N, iterative:N, budget:US), epsilon, gamma, h, tolerance, cap,\n"
-         "               projection, warm (1: keep warm starts that meet tolerance/16, 0: always solve);\n"
+         "               projection, warm (1: keep warm starts that meet tolerance/16, 0: always solve),\n"
+         "               reuse (contact reuse distance, m; 0: test every pair every step);\n"
          "               values a,b,c or lo..hi (geometric: x10 between powers of ten, else x2) or lo..hi:N\n"
          "  --precision  the precisions to run; the other one runs --other-binary (default: this\n"
          "               build's only; this build is " +

@@ -36,6 +36,7 @@ class QuadBikeScene final : public TradeoffScene {
   }
   ~QuadBikeScene() override { QuadBikeDestroy(); }
   MdtWorldID world() const override { return built_ ? ::world : nullptr; }
+  McdFrameworkID framework() const override { return built_ ? ::framework : nullptr; }
   const std::vector<MdtBodyID> &bodies() const override { return bodies_; }
   double jointGap() const override { return QuadBikeRiderJointError(); }
   void observe() override { worstGap_ = std::fmax(worstGap_, jointGap()); }

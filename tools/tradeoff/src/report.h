@@ -3,7 +3,7 @@
 // CSV (one row per scene and setting, peers' points last; units in the
 // column names; empty cell: not measured):
 //   scene, precision, engine, setting, solver, epsilon, gamma, h,
-//   tolerance, cap, projection, warm, repeats, us_per_step (median), us_min, us_max,
+//   tolerance, cap, projection, warm, reuse, repeats, us_per_step (median), us_min, us_max,
 //   us_per_frame (the median's cost of 1/60 s simulated: x (1/60) / h), steps,
 //   drift_m (largest RMS distance of the bodies from the reference run),
 //   joint_error_m, penetration_m (deepest over the run), energy_error_J,

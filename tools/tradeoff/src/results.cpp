@@ -63,6 +63,7 @@ std::string DifferingKnobs(const Setting &a, const Setting &b) {
   if (a.cap != b.cap) knobs.push_back("cap");
   if (a.projection != b.projection) knobs.push_back("joint projection");
   if (a.warm != b.warm) knobs.push_back("kept warm starts");
+  if (!Same(a.reuse, b.reuse)) knobs.push_back("contact reuse");
   if (a.precision != b.precision) knobs.push_back("precision");
   std::string out;
   for (size_t i = 0; i < knobs.size(); ++i) out += (i == 0 ? "" : i + 1 == knobs.size() ? " and " : ", ") + knobs[i];

@@ -80,7 +80,7 @@ bool RunScene(const SceneEntry &entry, const Setting &setting, double seconds, R
   out = RunRecord{};
   std::unique_ptr<TradeoffScene> scene = entry.make();
   if (!scene || !scene->world()) return false;
-  setting.apply(scene->world());
+  setting.apply(scene->world(), scene->framework());
   const MeReal h = (MeReal)setting.h;
   out.steps = std::max(1, (int)std::lround(seconds / setting.h));
   const int frames = (int)std::lround(seconds * kSampleRate);

@@ -31,6 +31,8 @@ class TradeoffScene {
  public:
   virtual ~TradeoffScene() = default;
   virtual MdtWorldID world() const = 0;
+  // The collision framework, or NULL for a scene without collision.
+  virtual McdFrameworkID framework() const { return nullptr; }
   // The scene's drives, then one step of h seconds (collision and dynamics).
   virtual void advance(MeReal h) = 0;
   // After every step, untimed: the scene's own bookkeeping.

@@ -83,6 +83,8 @@ bool Multiply(const std::string &name, const std::string &values, std::vector<Se
         s.projection = (int)v;
       else if (name == "warm" && (v == 0 || v == 1))
         s.warm = (int)v;
+      else if (name == "reuse" && v >= 0)
+        s.reuse = v;
       else {
         error = "bad knob or value: " + name + "=" + FormatValue(v);
         return false;
@@ -195,11 +197,12 @@ std::string Setting::label() const {
   if (cap >= 0) s += " cap=" + std::to_string(cap);
   if (projection >= 0) s += " projection=" + std::to_string(projection);
   if (warm >= 0) s += " warm=" + std::to_string(warm);
+  if (!std::isnan(reuse)) s += " reuse=" + FormatValue(reuse);
   if (!precision.empty()) s += " " + precision;
   return s;
 }
 
-void Setting::apply(MdtWorldID world) const {
+void Setting::apply(MdtWorldID world, McdFrameworkID framework) const {
   MdtWorldSetKeaMethod(world, method);
   MdtWorldSetKeaIterativeRows(world, 0);  // the named solver for every partition, whatever its size
   MdtWorldSetKeaMaxIterations(world, iterations);
@@ -210,6 +213,7 @@ void Setting::apply(MdtWorldID world) const {
   if (cap >= 0) MdtWorldSetMaxMatrixSize(world, cap);
   if (projection >= 0) MdtWorldSetJointProjection(world, projection);
   if (warm >= 0) MdtWorldSetKeaAcceptWarmStart(world, warm);
+  if (!std::isnan(reuse) && framework) McdFrameworkSetContactReuseDistance(framework, (MeReal)reuse);
 }
 
 }  // namespace karma::tradeoff

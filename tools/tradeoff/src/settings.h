@@ -21,6 +21,10 @@
 //              sixteenth of the tolerance, with no solve (the default);
 //              0: it solves every partition
 //              (MdtWorldSetKeaAcceptWarmStart)
+//   reuse      contact reuse distance in metres: a resting pair's contacts
+//              are served from memory while it moves less than this
+//              (McdFrameworkSetContactReuseDistance; 0 = every pair tested
+//              every step; no effect in a scene without collision)
 // Values: a comma list `a,b,c`, or a geometric range `lo..hi` (both ends
 // included; ratio 10 when both ends are powers of ten, otherwise 2), or
 // `lo..hi:N` (N points, geometric). A knob left out keeps the scene's own
@@ -32,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "McdFrame.h"
 #include "MdtWorld.h"
 
 namespace karma::tradeoff {
@@ -49,15 +54,17 @@ struct Setting {
   int cap = -1;         // < 0: the scene's own
   int projection = -1;  // < 0: the scene's own
   int warm = -1;        // < 0: the scene's own; 0 or 1
+  double reuse = kUnset;
   // "single" or "double" when a sweep runs both (--precision); empty
   // otherwise. Not a world setting: the precision of the build that ran.
   std::string precision;
   // "exact", "exact:8", "iterative:50", "budget:300".
   std::string solver() const;
-  // The knobs that are set, e.g. "exact:8 epsilon=1e-3 h=1/120 projection=2 warm=0".
+  // The knobs that are set, e.g. "exact:8 epsilon=1e-3 h=1/120 projection=2 warm=0 reuse=0".
   std::string label() const;
-  // Applies every knob that is set (not h: the runner steps with it).
-  void apply(MdtWorldID world) const;
+  // Applies every knob that is set (not h: the runner steps with it); the
+  // collision knob to `framework` when the scene has one (may be NULL).
+  void apply(MdtWorldID world, McdFrameworkID framework) const;
 };
 
 // "1/120" when 1/h is a whole number, else "%g".

@@ -32,6 +32,7 @@ class SpecScene final : public TradeoffScene {
   }
 
   MdtWorldID world() const override { return scene_.world(); }
+  McdFrameworkID framework() const override { return MstUniverseGetFramework(scene_.universe()); }
   const std::vector<MdtBodyID> &bodies() const override { return bodies_; }
 
   void advance(MeReal h) override {

@@ -57,6 +57,7 @@ class BallmanScene final : public TutorialScene {
   }
   ~BallmanScene() override { BallmanDestroy(b_); }
   MdtWorldID world() const override { return b_ ? b_->universe->world : nullptr; }
+  McdFrameworkID framework() const override { return b_ ? b_->universe->frame : nullptr; }
   void advance(MeReal h) override {
     BallmanCollide(b_);
     MdtWorldStep(b_->universe->world, h);
@@ -75,6 +76,7 @@ class ChainScene final : public TutorialScene {
   }
   ~ChainScene() override { RainbowChainDestroy(c_); }
   MdtWorldID world() const override { return c_ ? c_->universe->world : nullptr; }
+  McdFrameworkID framework() const override { return c_ ? c_->universe->frame : nullptr; }
   void advance(MeReal h) override {
     RainbowChainCollide(c_);
     MdtWorldStep(c_->universe->world, h);

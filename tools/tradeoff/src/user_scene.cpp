@@ -24,6 +24,7 @@ class UserScene final : public TradeoffScene {
     if (s_.destroy) s_.destroy(s_.user);
   }
   MdtWorldID world() const override { return s_.world; }
+  McdFrameworkID framework() const override { return s_.universe ? MstUniverseGetFramework(s_.universe) : nullptr; }
   const std::vector<MdtBodyID> &bodies() const override { return bodies_; }
   double jointGap() const override { return LargestJointGap(joints_); }
   void observe() override { worstGap_ = std::fmax(worstGap_, jointGap()); }
