@@ -62,7 +62,7 @@ scenes, the tutorials' scenes or their own scene.
 ## How to read this
 
 Each scene runs once per setting of the sweep and once as the **reference**: the exact solver
-(Kea's active set, no iteration cap) at a step 8 times smaller than the smallest swept step, in
+(Kea's active set, no iteration cap, every collision pair tested every step) at a step 8 times smaller than the smallest swept step, in
 the same build (single precision: the reference is as exact as this build can be, not a double
 precision run). Every setting is repeated and timed three times, the repetitions interleaved so
 that the machine's drift in speed touches all settings alike; **µs per step** is the median (of
@@ -125,7 +125,7 @@ meshes skip its nearfield test: its last contacts, carried by both models, are r
 pair's relative pose has moved no surface point by more than d. A served contact's position may
 be up to the drift off a full test's; its separation follows the motion. What the distance costs
 and buys on the stacking scenes: \`$reuse_sweep\` (0: every pair tested every step). Errors are
-against the same reference as above (which runs with the default distance).
+against the same reference as above, which tests every pair every step.
 
 TEXT
   sed -e 's#(\([a-z0-9_]*-\(scene\|drift\)\.png\))#(images/accuracy/reuse-\1)#' "$out/reuse/tradeoff.md"

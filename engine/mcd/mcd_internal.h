@@ -92,6 +92,11 @@ void RefreshSpaceSortKey(McdModel *m);
 // positive.
 int EffectiveContactCap(const McdModelPair *pair, int resultCap);
 
+// McdIntersect (checked arguments, a helloed pair) without contact reuse:
+// a full test at the framework's tolerance, memory neither read nor
+// written. For queries at poses of their own (McdSafeTime).
+int IntersectWithoutReuse(McdModelPair *pair, McdIntersectResult *result);
+
 }  // namespace karma::mcd
 
 // Aggregate layout (shared by aggregate.cpp, instance.cpp and mass code).

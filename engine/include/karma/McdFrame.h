@@ -78,13 +78,18 @@ MEPUBLIC int MEAPI McdFrameworkGetModelMaxCount(McdFrameworkID framework);
  * flicker with rounding. Default 1e-5 * lengthScale; >= 0. */
 MEPUBLIC void MEAPI McdFrameworkSetContactTolerance(McdFrameworkID framework, MeReal tolerance);
 MEPUBLIC MeReal MEAPI McdFrameworkGetContactTolerance(McdFrameworkID framework);
-/* Contact reuse (an extension of this engine): McdIntersect remembers a
- * pair's contacts and serves later calls from them, moved with the two
- * models, while their relative pose has moved no surface point by more
- * than `distance` since the full test (and the tolerance asked for leaves
- * room for that motion). Pairs of two boxes, cylinders, sphyls or convex
- * meshes only; every other pair is always tested.
- * Default 1e-4 * lengthScale; 0 tests every call; >= 0. */
+/* Contact reuse (an extension of this engine): McdIntersect tests a pair at
+ * the contact tolerance plus `distance`; when every contact found is within
+ * the tolerance it remembers them (else it tests again at the tolerance).
+ * Later calls are served from that memory, the contacts moved with the two
+ * models to first order, while their relative pose has moved no surface
+ * point by more than `distance` since the test (and the tolerance asked for
+ * leaves room for that motion); a served contact may then be up to
+ * `distance` beyond the tolerance (speculative). Pairs of two boxes,
+ * cylinders, sphyls or convex meshes tested by the engine's own
+ * interactions only; every other pair, and a call with room for no
+ * contact, is always tested. Default 1e-4 * lengthScale; 0 tests every
+ * call at the tolerance alone; >= 0. */
 MEPUBLIC void MEAPI McdFrameworkSetContactReuseDistance(McdFrameworkID framework, MeReal distance);
 MEPUBLIC MeReal MEAPI McdFrameworkGetContactReuseDistance(McdFrameworkID framework);
 /* Geometries alive in the framework (every type). */

@@ -23,6 +23,8 @@ struct PairMemory {
   MeReal tested;          // the tolerance of the full test, t + d
   MeReal reach1, reach2;  // r_1, r_2
   RelativePose pose;      // Q0
+  int touch;              // the full test's
+  MeReal normal2[3];      // its representative normal, in model 2's coordinates
   int count, capacity;
   KeptContact *contacts() { return reinterpret_cast<KeptContact *>(this + 1); }
   const KeptContact *contacts() const { return reinterpret_cast<const KeptContact *>(this + 1); }
@@ -106,9 +108,10 @@ PairMemory *MemoryWithRoom(McdModelPair *pair, int count) {
   return m;
 }
 
-// Model k's TM applied to the point y (its own coordinates).
-void ToWorld(const MeMatrix4Ptr tm, const MeReal *y, MeReal *x) {
-  for (int c = 0; c < 3; ++c) x[c] = tm[3][c] + y[0] * tm[0][c] + y[1] * tm[1][c] + y[2] * tm[2][c];
+// The direction v given in the coordinates of the model with TM tm, in
+// the world's.
+void Turned(const MeMatrix4Ptr tm, const MeReal *v, MeReal *out) {
+  for (int c = 0; c < 3; ++c) out[c] = v[0] * tm[0][c] + v[1] * tm[1][c] + v[2] * tm[2][c];
 }
 
 // The world point x in the coordinates of the model with TM tm.
@@ -134,10 +137,14 @@ MeReal ReuseDistance(const McdModelPair *pair) {
   const McdFramework *fw = pair->model1->framework;
   if (!(fw->contactReuseDistance > 0) || !pair->m_interaction || !pair->m_interaction->m_builtIn) return 0;
   const McdGeometry *g1 = pair->model1->instance.geometry, *g2 = pair->model2->instance.geometry;
-  return Served(g1->m_type, g2->m_type) ? fw->contactReuseDistance : 0;
+  if (!Served(g1->m_type, g2->m_type)) return 0;
+  const PairMemory *m = MemoryOf(pair);
+  const bool known = m && m->geometry1 == g1 && m->geometry2 == g2 && m->shapeRevision == fw->shapeRevision;
+  const MeReal smaller = known ? std::fmin(m->reach1, m->reach2) : std::fmin(Reach(g1), Reach(g2));
+  return std::fmin(fw->contactReuseDistance, kShapeFraction * smaller);
 }
 
-bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tolerance, int cap,
+bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tolerance, int cap, MeReal distance,
                      const RelativePose &now) {
   const PairMemory *m = MemoryOf(pair);
   const McdModel *m1 = pair->model1, *m2 = pair->model2;
@@ -145,35 +152,31 @@ bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tole
       m->shapeRevision != m1->framework->shapeRevision)
     return false;
   // D <= d and D + t' <= t + d.
-  const MeReal limit = std::fmin(m1->framework->contactReuseDistance, m->tested - tolerance);
+  const MeReal limit = std::fmin(distance, m->tested - tolerance);
   if (!(limit >= 0 && DriftWithin(*m, now, limit))) return false;
   const MeMatrix4Ptr t1 = TmOf(m1), t2 = TmOf(m2);
-  int n = 0;
+  // Differences of the carried points taken from the difference of the
+  // origins, so that their rounding is that of the offsets, not of the
+  // world coordinates.
+  const MeReal origins[3] = {t1[3][0] - t2[3][0], t1[3][1] - t2[3][1], t1[3][2] - t2[3][2]};
   for (int k = 0; k < m->count; ++k) {
     const KeptContact &kept = m->contacts()[k];
-    MeReal x1[3], x2[3], normal[3], gap[3];
-    ToWorld(t1, kept.on1, x1);
-    ToWorld(t2, kept.on2, x2);
-    for (int c = 0; c < 3; ++c) {
-      normal[c] = kept.normal2[0] * t2[0][c] + kept.normal2[1] * t2[1][c] + kept.normal2[2] * t2[2][c];
-      gap[c] = x1[c] - x2[c];
-    }
-    const MeReal separation = kept.contact.separation + Dot3(gap, normal);
-    if (!(separation <= tolerance)) continue;
-    McdContact &c = result->contacts[n++];
+    MeReal r1[3], r2[3], normal[3], gap[3];
+    Turned(t1, kept.on1, r1);
+    Turned(t2, kept.on2, r2);
+    Turned(t2, kept.normal2, normal);
+    McdContact &c = result->contacts[k];
     c = kept.contact;
     for (int i = 0; i < 3; ++i) {
-      c.position[i] = (MeReal)0.5 * (x1[i] + x2[i]);
+      gap[i] = origins[i] + r1[i] - r2[i];
+      c.position[i] = t2[3][i] + (MeReal)0.5 * (origins[i] + r1[i] + r2[i]);
       c.normal[i] = normal[i];
     }
-    c.separation = separation;
+    c.separation = kept.contact.separation + Dot3(gap, normal);
   }
-  result->contactCount = n;
-  result->touch = n > 0 ? 1 : 0;
-  if (n > 0)
-    MeVector3Copy(result->normal, result->contacts[0].normal);
-  else
-    MeVector3Set(result->normal, 0, 0, 0);
+  result->contactCount = m->count;
+  result->touch = m->touch;
+  Turned(t2, m->normal2, result->normal);
   return true;
 }
 
@@ -198,6 +201,8 @@ void Remember(McdModelPair *pair, const McdIntersectResult *result, MeReal teste
   }
   m->cap = cap;
   m->tested = tested;
+  m->touch = result->touch;
+  for (int i = 0; i < 3; ++i) m->normal2[i] = Dot3(result->normal, TmOf(m2)[i]);
   m->pose = now;
   m->count = count;
   const MeMatrix4Ptr t1 = TmOf(m1), t2 = TmOf(m2);
@@ -211,18 +216,10 @@ void Remember(McdModelPair *pair, const McdIntersectResult *result, MeReal teste
   }
 }
 
-void DropBeyond(McdIntersectResult *result, MeReal tolerance) {
-  int n = 0;
+bool AllWithin(const McdIntersectResult *result, MeReal tolerance) {
   for (int k = 0; k < result->contactCount; ++k)
-    if (result->contacts[k].separation <= tolerance) {
-      if (n != k) result->contacts[n] = result->contacts[k];
-      ++n;
-    }
-  result->contactCount = n;
-  if (n == 0) {
-    result->touch = 0;
-    MeVector3Set(result->normal, 0, 0, 0);
-  }
+    if (!(result->contacts[k].separation <= tolerance)) return false;
+  return true;
 }
 
 void Forget(McdModelPair *pair) {

@@ -7,7 +7,8 @@
 // (McdFrameworkSetContactReuseDistance), McdIntersect keeps the contacts of
 // a pair's last full test, taken in each model's own frame, and serves a
 // later call from them while the pair's relative pose has moved no surface
-// point by more than d.
+// point by more than d. d is the framework's distance, at most a
+// thousandth of the smaller shape's reach (kShapeFraction).
 //
 // =============================================================================
 // THE REUSE RULE
@@ -24,28 +25,40 @@
 // geometry's bounds). Seen from model 1 the same motion moves model 2's
 // points by at most D_2 (the inverse pose, r_2); the drift is
 //     D = min(D_1, D_2),
-// the most any gap between the shapes can have changed (a plane, whose r
-// is infinite, takes the other side's bound).
+// the most any gap between the shapes can have changed (a shape whose
+// bounds are infinite takes the other side's bound).
 //
-// Slack. The full test runs at the caller's tolerance t plus d, and
-// remembers every contact it finds up to t + d apart; the call itself
-// reports those up to t. A later call at tolerance t' is served from
-// memory iff
-//     D <= d  and  D + t' <= t + d,
-// so a feature the full test did not find (farther than t + d then) is
-// still farther than t' now: nothing within t' is missed. The memory is
-// also dropped when the effective contact cap, either model's geometry,
-// or any shape's size (the framework's shape revision) has changed.
+// Slack. A full test runs at the caller's tolerance t plus d. When every
+// contact it reports is within t, those are the call's answer and they are
+// remembered: every feature within t + d was considered, and none beyond t
+// took the place of one within it when the interaction reduced its points
+// to the cap (then the answer has at least as many contacts as a test at t
+// alone). Otherwise the pair is tested again at t and nothing is
+// remembered. A later call at tolerance t' is served from memory iff
+//     D <= d  and  D + t' <= t + d:
+// a feature within t' now was within t' + D <= t + d at the full test, so
+// the full test considered it (kept it, or reduced it away as a test now
+// could). Nothing within t' is missed, and nothing remembered is left out:
+// a served call reports every remembered contact, moved (up to t + d
+// apart: a speculative contact, positive separation, is harmless). The
+// memory is also ignored (and overwritten by the next full test) when the
+// effective contact cap, either model's geometry, or any shape's size (the
+// framework's shape revision) has changed. A call with room for no contact
+// is always tested: its answer is the interaction's touch alone.
 //
 // Contacts served from memory. Each remembered contact keeps its point
 // in both models' coordinates (y_1, y_2: the same world point then), its
-// normal in model 2's, its separation s0 and its other fields. Now, with
-// x_k = model k's TM applied to y_k and n = model 2's axes applied to the
-// normal:
+// normal in model 2's, its separation s0 and its other fields (feature,
+// dims, elements). Now, with x_k = model k's TM applied to y_k and n =
+// model 2's axes applied to the normal:
 //     position = (x_1 + x_2) / 2,   separation = s0 + (x_1 - x_2) . n
 // (n points from model 2 towards model 1: model 1 moving along n opens the
-// gap). Contacts farther apart than t' are left out; touch is 1 when any
-// contact is reported.
+// gap). This is the first-order update: it is exact for a motion along n,
+// and otherwise off a full test by terms of the drift's size, D <= d: a
+// clipped point that would slide along an edge moves with the bodies
+// instead, and a normal that belongs to model 1's face turns with model 2.
+// touch and the representative normal are the full test's (the normal
+// turned with model 2).
 //
 // Pairs served. Those whose two shapes are each a box, a cylinder, a
 // sphyl or a convex mesh, tested by the engine's own interaction
@@ -66,6 +79,10 @@ namespace karma::mcd {
 
 // The default reuse distance, in units of the framework's length scale.
 inline constexpr MeReal kDefaultContactReuse = (MeReal)1e-4;
+// A pair's reuse distance is at most this fraction of the smaller shape's
+// reach: a served contact is then off a full test by at most a thousandth
+// of the smaller shape (1 cm cubes: 8.7 micrometres, not 0.1 mm).
+inline constexpr MeReal kShapeFraction = (MeReal)1e-3;
 
 // Model 1's pose seen from model 2 (see "Poses" above).
 struct RelativePose {
@@ -74,14 +91,15 @@ struct RelativePose {
 };
 RelativePose PoseOf(const McdModel *m1, const McdModel *m2);
 
-// The reuse distance that applies to the pair: the framework's when both
-// geometry types are served (see above), else 0.
+// The reuse distance d of the pair: the framework's, at most kShapeFraction
+// of the smaller shape's reach, when both geometry types are served by the
+// engine's own interaction (see above); else 0.
 MeReal ReuseDistance(const McdModelPair *pair);
 
 // Fills `result` from the pair's memory when the rule allows it at
-// tolerance `tolerance` and cap `cap`, the pair's pose being `now`; false
-// (result untouched) otherwise.
-bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tolerance, int cap,
+// tolerance `tolerance`, cap `cap` and distance `distance` (ReuseDistance),
+// the pair's pose being `now`; false (result untouched) otherwise.
+bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tolerance, int cap, MeReal distance,
                      const RelativePose &now);
 
 // Remembers a full test's result (contacts in the caller's order) made at
@@ -89,8 +107,8 @@ bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tole
 // failure forgets.
 void Remember(McdModelPair *pair, const McdIntersectResult *result, MeReal tested, int cap, const RelativePose &now);
 
-// Leaves out of `result` the contacts farther apart than `tolerance`.
-void DropBeyond(McdIntersectResult *result, MeReal tolerance);
+// Whether every contact of `result` is at most `tolerance` apart.
+bool AllWithin(const McdIntersectResult *result, MeReal tolerance);
 
 // Frees the pair's memory.
 void Forget(McdModelPair *pair);

@@ -9,9 +9,12 @@
 // The separation and position do not depend on the order.
 //
 // Contact reuse (contact_reuse.h): a pair of served types is tested at the
-// caller's tolerance plus the reuse distance and its contacts remembered;
-// later calls are served from that memory while the reuse rule holds. The
-// memory lives in m_contactMemory from the first test to McdGoodbye.
+// caller's tolerance plus the reuse distance; when every contact found is
+// within the tolerance, that is the answer and it is remembered, else the
+// pair is tested again at the tolerance. Later calls are served from the
+// memory while the reuse rule holds. A call with room for no contact is
+// always tested (its answer is `touch` alone). The memory lives in
+// m_contactMemory from the first test to McdGoodbye.
 #include "contact_reuse.h"
 #include "mcd_internal.h"
 
@@ -103,6 +106,60 @@ MeBool MEAPI McdNearby(McdModelPair *pair) {
   return 1;
 }
 
+}  // extern "C"
+
+namespace {
+
+// McdIntersect after its argument checks; `reuse` false tests every call.
+int Intersect(McdModelPair *pair, McdIntersectResult *result, bool reuse) {
+  const McdInteractions *e = pair->m_interaction;
+  if (!e) return 0;  // no interaction for these types: ignored
+  const int resultCap = result->contactMaxCount;
+  const int cap = karma::mcd::EffectiveContactCap(pair, resultCap);
+  McdFramework *fw = pair->model1->framework;
+  const MeReal tolerance = fw->contactTolerance;
+  const MeReal d = reuse && cap > 0 ? karma::mcd::ReuseDistance(pair) : 0;
+  if (!(d > 0)) {
+    Test(pair, e, result, cap);
+    return result->touch;
+  }
+  const karma::mcd::RelativePose now = karma::mcd::PoseOf(pair->model1, pair->model2);
+  if (karma::mcd::ServeFromMemory(pair, result, tolerance, cap, d, now)) return result->touch;
+  fw->contactTolerance = tolerance + d;
+  Test(pair, e, result, cap);
+  fw->contactTolerance = tolerance;
+  if (karma::mcd::AllWithin(result, tolerance)) {
+    karma::mcd::Remember(pair, result, tolerance + d, cap, now);
+    return result->touch;
+  }
+  // A contact beyond the tolerance may have taken the place of one within
+  // it when the interaction reduced its points: the call's answer is a
+  // test at the tolerance, and nothing is remembered.
+  result->contactCount = 0;
+  result->touch = 0;
+  MeVector3Set(result->normal, 0, 0, 0);
+  Test(pair, e, result, cap);
+  return result->touch;
+}
+
+}  // namespace
+
+namespace karma::mcd {
+
+int IntersectWithoutReuse(McdModelPair *pair, McdIntersectResult *result) {
+  result->contactCount = 0;
+  result->touch = 0;
+  MeVector3Set(result->normal, 0, 0, 0);
+  result->pair = pair;
+  result->model1 = pair->model1;
+  result->model2 = pair->model2;
+  return Intersect(pair, result, false);
+}
+
+}  // namespace karma::mcd
+
+extern "C" {
+
 int MEAPI McdIntersect(McdModelPair *pair, McdIntersectResult *result) {
   static const char *fn = "McdIntersect";
   ME_REQUIRE_ARG_RET(result != nullptr, 0, fn, "result is NULL");
@@ -119,25 +176,7 @@ int MEAPI McdIntersect(McdModelPair *pair, McdIntersectResult *result) {
   ME_REQUIRE_ARG_RET(result->contacts != nullptr || result->contactMaxCount == 0, 0, fn,
                      "result->contacts is NULL but contactMaxCount is %d", result->contactMaxCount);
   ME_REQUIRE_ARG_RET(pair->m_helloed, 0, fn, "call McdHello on the pair first");
-  const McdInteractions *e = pair->m_interaction;
-  if (!e) return 0;  // no interaction for these types: ignored
-  const int resultCap = result->contactMaxCount;
-  const int cap = karma::mcd::EffectiveContactCap(pair, resultCap);
-  McdFramework *fw = pair->model1->framework;
-  const MeReal tolerance = fw->contactTolerance;
-  const MeReal reuse = karma::mcd::ReuseDistance(pair);
-  if (!(reuse > 0)) {
-    Test(pair, e, result, cap);
-    return result->touch;
-  }
-  const karma::mcd::RelativePose now = karma::mcd::PoseOf(pair->model1, pair->model2);
-  if (karma::mcd::ServeFromMemory(pair, result, tolerance, cap, now)) return result->touch;
-  fw->contactTolerance = tolerance + reuse;
-  Test(pair, e, result, cap);
-  fw->contactTolerance = tolerance;
-  karma::mcd::Remember(pair, result, tolerance + reuse, cap, now);
-  karma::mcd::DropBeyond(result, tolerance);
-  return result->touch;
+  return Intersect(pair, result, true);
 }
 
 void MEAPI McdHelloEach(McdModelPairContainer *pairs) {

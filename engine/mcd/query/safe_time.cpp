@@ -92,7 +92,7 @@ bool Touching(McdModelPair *pair) {
   McdIntersectResult r{};
   r.contacts = contacts;
   r.contactMaxCount = 16;
-  McdIntersect(pair, &r);
+  karma::mcd::IntersectWithoutReuse(pair, &r);
   return r.touch != 0;
 }
 

@@ -1,8 +1,12 @@
 // contact_reuse_test.cpp: McdIntersect's contact reuse (contact_reuse.h):
-// a resting pair is served from memory and agrees with a full test; a
-// drift beyond the reuse distance, a turn, a grown tolerance or a resized
-// shape sends the pair back to a full test; pairs the rule does not serve
-// (a sphere, an application's interaction, reuse off) keep no memory.
+// a resting pair is served from memory and agrees with a full test, in
+// both orders of a mirrored interaction; a drift beyond the reuse
+// distance, a turn, a grown tolerance, a resized shape or another cap sends
+// the pair back to a full test; a test that finds contacts between the
+// tolerance and the slack is done again at the tolerance and not
+// remembered; pairs the rule does not serve (a sphere, an application's
+// interaction, reuse off) keep no memory, and a call with room for no
+// contact still reports touch.
 #include <cmath>
 
 #include "contact_reuse.h"
@@ -27,10 +31,10 @@ struct Pair {
   }
   Pair(const Pair &) = delete;
   Pair &operator=(const Pair &) = delete;
-  int intersect() {
+  int intersect(int max = 16) {
     r = McdIntersectResult{};
     r.contacts = c;
-    r.contactMaxCount = 16;
+    r.contactMaxCount = max;
     McdIntersect(pair, &r);
     return r.contactCount;
   }
@@ -43,6 +47,7 @@ struct Pair {
     s.contactMaxCount = 16;
     const McdFrameworkID fw = McdModelGetFramework(pair->model1);
     return karma::mcd::ServeFromMemory(pair, &s, McdFrameworkGetContactTolerance(fw), 16,
+                                       karma::mcd::ReuseDistance(pair),
                                        karma::mcd::PoseOf(pair->model1, pair->model2));
   }
 };
@@ -70,6 +75,22 @@ void expectSameContacts(const McdIntersectResult &a, const McdIntersectResult &b
     EXPECT_NEAR(a.contacts[i].separation, b.contacts[match].separation, eps) << "contact " << i;
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(a.contacts[i].normal[k], b.contacts[match].normal[k], eps);
   }
+}
+
+// The largest distance (summed over the axes) from a contact of `a` to
+// the nearest contact of `b`.
+double largestOffset(const McdIntersectResult &a, const McdIntersectResult &b) {
+  double largest = 0;
+  for (int i = 0; i < a.contactCount; ++i) {
+    double best = 1e30;
+    for (int j = 0; j < b.contactCount; ++j) {
+      double d = 0;
+      for (int k = 0; k < 3; ++k) d += std::fabs((double)a.contacts[i].position[k] - b.contacts[j].position[k]);
+      best = std::fmin(best, d);
+    }
+    largest = std::fmax(largest, best);
+  }
+  return largest;
 }
 
 // A full test of the two models (reuse off for the call).
@@ -115,6 +136,49 @@ TEST(McdContactReuse, ARestingPairIsServedAndAgreesWithAFullTest) {
   const FullTest full(s.fw, s.top.model, s.base.model);
   expectSameContacts(p.r, full.r, 5e-5, 1e-6);
   EXPECT_EQ(p.r.touch, 1);
+  // McdIntersect served it: a full test puts the corners where the top box
+  // moved them (3e-5 m sideways); the served ones are midpoints.
+  EXPECT_GT(largestOffset(p.r, full.r), 1e-5);
+}
+
+TEST(McdContactReuse, BothOrdersOfAMirroredInteractionAreServedInTheirOwnOrder) {
+  Framework fw;
+  Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);
+  // A cylinder (axis z) standing on the base, 5 mm deep.
+  Placed can(McdCylinderCreate(fw, (MeReal)0.5, 2), 0, 0, (MeReal)1.995);
+  Pair boxFirst(base.model, can.model), canFirst(can.model, base.model);
+  ASSERT_GT(boxFirst.intersect(), 0);
+  ASSERT_GT(canFirst.intersect(), 0);
+  can.move(0, 0, (MeReal)1.995 - (MeReal)3e-5);
+  EXPECT_TRUE(boxFirst.servable());
+  EXPECT_TRUE(canFirst.servable());
+  boxFirst.intersect();
+  canFirst.intersect();
+  const FullTest fullBoxFirst(fw, base.model, can.model), fullCanFirst(fw, can.model, base.model);
+  // The convex manifold places its points using the tolerance it runs at:
+  // the remembered test ran at the tolerance plus d, so its points may sit
+  // up to d from a test at the tolerance alone, plus the 3e-5 m motion.
+  expectSameContacts(boxFirst.r, fullBoxFirst.r, kReuse + 4e-5, 1e-6);
+  expectSameContacts(canFirst.r, fullCanFirst.r, kReuse + 4e-5, 1e-6);
+  ASSERT_GT(canFirst.r.contactCount, 0);
+  EXPECT_NEAR(canFirst.c[0].normal[2], 1, 1e-6);  // from the base towards the cylinder
+  EXPECT_NEAR(boxFirst.c[0].normal[2], -1, 1e-6);
+  EXPECT_NEAR(canFirst.c[0].separation, -0.005 - 3e-5, 1e-6);
+}
+
+TEST(McdContactReuse, AnotherCapIsTestedAgainAndRoomForNoContactStillReportsTouch) {
+  Framework fw;
+  Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);
+  Placed can(McdCylinderCreate(fw, (MeReal)0.5, 2), 0, 0, (MeReal)1.995);
+  Pair p(can.model, base.model);
+  const int all = p.intersect();
+  ASSERT_GT(all, 2);
+  EXPECT_EQ(p.intersect(2), 2);  // not the memory's 16: a test with room for 2
+  EXPECT_EQ(p.intersect(), all);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(p.intersect(0), 0);
+    EXPECT_EQ(p.r.touch, 1) << "call " << i;
+  }
 }
 
 TEST(McdContactReuse, AShiftBeyondTheDistanceIsTestedAgainAndRemembered) {
@@ -138,9 +202,9 @@ TEST(McdContactReuse, ATurnMovesTheCornersByItsAngleTimesTheReach) {
   RestingBoxes s;
   Pair p(s.top.model, s.base.model);
   ASSERT_EQ(p.intersect(), 4);
-  // The cube reaches sqrt(3) m from its centre: 2e-5 rad moves its corners
-  // by at most 2 sqrt(2) 2e-5 |R - R0|_F ~ 6e-5 m, within the distance;
-  // 1e-4 rad by about 3e-4 m, beyond it.
+  // The cube reaches sqrt(3) m from its centre and a turn by a small angle
+  // a about z has |R - R0|_F = sqrt(2) a: 2e-5 rad gives D_1 = 4.9e-5 m,
+  // within the distance; another 1e-4 rad about 2.9e-4 m, beyond it.
   s.top.turn({0, 0, 1}, (MeReal)2e-5);
   EXPECT_TRUE(p.servable());
   s.top.turn({0, 0, 1}, (MeReal)1e-4);
@@ -165,22 +229,25 @@ TEST(McdContactReuse, AGrownToleranceOrAResizedShapeIsTestedAgain) {
   EXPECT_FALSE(p.servable());
 }
 
-TEST(McdContactReuse, ContactsWithinTheSlackAreRememberedButReportedOnlyWithinTheTolerance) {
+TEST(McdContactReuse, ContactsBetweenTheToleranceAndTheSlackAreTestedAgainAndNotRemembered) {
   Framework fw;
   Placed base(McdBoxCreate(fw, 4, 4, 2), 0, 0, 0);
   // 50 micrometres above the base: beyond the 10 micrometre tolerance,
-  // within the tolerance plus the 100 micrometre slack.
+  // within the tolerance plus the 100 micrometre slack the test runs at.
   Placed top(McdBoxCreate(fw, 2, 2, 2), 0, 0, (MeReal)2 + (MeReal)5e-5);
   Pair p(top.model, base.model);
-  EXPECT_EQ(p.intersect(), 0);
+  EXPECT_EQ(p.intersect(), 0);  // the answer of a test at the tolerance
   EXPECT_EQ(p.r.touch, 0);
+  EXPECT_EQ(p.pair->m_contactMemory, nullptr);
   top.move(0, 0, (MeReal)2 + (MeReal)5e-6);  // now within the tolerance
+  ASSERT_EQ(p.intersect(), 4);
+  ASSERT_NE(p.pair->m_contactMemory, nullptr);
+  // Lifted 3e-5 m: beyond the tolerance now, still served (a speculative
+  // contact, reported with its separation).
+  top.move(0, 0, (MeReal)2 + (MeReal)3.5e-5);
   EXPECT_TRUE(p.servable());
   ASSERT_EQ(p.intersect(), 4);
-  EXPECT_EQ(p.r.touch, 1);
-  for (int i = 0; i < 4; ++i) EXPECT_NEAR(p.c[i].separation, 5e-6, 1e-6);
-  const FullTest full(fw, top.model, base.model);
-  expectSameContacts(p.r, full.r, 4.5e-5, 1e-6);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(p.c[i].separation, 3.5e-5, 1e-6);
 }
 
 TEST(McdContactReuse, PairsTheRuleDoesNotServeKeepNoMemory) {

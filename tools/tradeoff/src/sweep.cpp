@@ -69,9 +69,12 @@ double ReferenceStep(const SweepPlan &plan) {
   return h / 8;
 }
 
+// The exact solver at the reference step, every collision pair tested
+// every step (no contact reuse).
 Setting ReferenceSetting(const SweepPlan &plan) {
   Setting s;
   s.h = ReferenceStep(plan);
+  s.reuse = 0;
   return s;
 }
 
