@@ -119,10 +119,10 @@ TEXT
 
 ## Contact reuse
 
-\`McdFrameworkSetContactReuseDistance(framework, d)\` (default 1e-4 m at length scale 1;
-engine/mcd/framework/contact_reuse.h) lets a resting pair of boxes, cylinders, sphyls or convex
-meshes skip its nearfield test: its last contacts, carried by both models, are reported while the
-pair's relative pose has moved no surface point by more than d. A served contact's position may
+\`McdFrameworkSetContactReuseDistance(framework, d)\` (default 1e-4 m at length scale 1, at most a
+thousandth of the smaller shape's reach; engine/mcd/framework/contact_reuse.h) lets a resting pair
+of boxes, cylinders, sphyls or convex meshes skip its nearfield test: its last contacts, carried by
+both models, are reported while the pair's relative pose has moved no surface point by more than d. A served contact's position may
 be up to the drift off a full test's; its separation follows the motion. What the distance costs
 and buys on the stacking scenes: \`$reuse_sweep\` (0: every pair tested every step). Errors are
 against the same reference as above, which tests every pair every step.
