@@ -93,6 +93,12 @@ bool Served(int type1, int type2) {
 
 PairMemory *MemoryOf(const McdModelPair *pair) { return static_cast<PairMemory *>(pair->m_contactMemory); }
 
+// Whether the memory was made for the pair's present geometries and sizes.
+bool SameShapes(const PairMemory &m, const McdModelPair *pair) {
+  return m.geometry1 == pair->model1->instance.geometry && m.geometry2 == pair->model2->instance.geometry &&
+         m.shapeRevision == pair->model1->framework->shapeRevision;
+}
+
 std::size_t BytesFor(int capacity) { return sizeof(PairMemory) + sizeof(KeptContact) * (std::size_t)capacity; }
 
 // The pair's memory with room for `count` contacts, or NULL.
@@ -139,8 +145,7 @@ MeReal ReuseDistance(const McdModelPair *pair) {
   const McdGeometry *g1 = pair->model1->instance.geometry, *g2 = pair->model2->instance.geometry;
   if (!Served(g1->m_type, g2->m_type)) return 0;
   const PairMemory *m = MemoryOf(pair);
-  const bool known = m && m->geometry1 == g1 && m->geometry2 == g2 && m->shapeRevision == fw->shapeRevision;
-  const MeReal smaller = known ? std::fmin(m->reach1, m->reach2) : std::fmin(Reach(g1), Reach(g2));
+  const MeReal smaller = m && SameShapes(*m, pair) ? std::fmin(m->reach1, m->reach2) : std::fmin(Reach(g1), Reach(g2));
   return std::fmin(fw->contactReuseDistance, kShapeFraction * smaller);
 }
 
@@ -148,9 +153,7 @@ bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tole
                      const RelativePose &now) {
   const PairMemory *m = MemoryOf(pair);
   const McdModel *m1 = pair->model1, *m2 = pair->model2;
-  if (!m || m->cap != cap || m->geometry1 != m1->instance.geometry || m->geometry2 != m2->instance.geometry ||
-      m->shapeRevision != m1->framework->shapeRevision)
-    return false;
+  if (!m || m->cap != cap || !SameShapes(*m, pair)) return false;
   // D <= d and D + t' <= t + d.
   const MeReal limit = std::fmin(distance, m->tested - tolerance);
   if (!(limit >= 0 && DriftWithin(*m, now, limit))) return false;
@@ -182,17 +185,14 @@ bool ServeFromMemory(McdModelPair *pair, McdIntersectResult *result, MeReal tole
 
 void Remember(McdModelPair *pair, const McdIntersectResult *result, MeReal tested, int cap, const RelativePose &now) {
   const int count = result->contactCount;
-  bool fresh = pair->m_contactMemory == nullptr;
+  const bool newBlock = pair->m_contactMemory == nullptr;
   PairMemory *m = MemoryWithRoom(pair, count);
   if (!m) {
     Forget(pair);
     return;
   }
   const McdModel *m1 = pair->model1, *m2 = pair->model2;
-  if (!fresh && (m->geometry1 != m1->instance.geometry || m->geometry2 != m2->instance.geometry ||
-                 m->shapeRevision != m1->framework->shapeRevision))
-    fresh = true;
-  if (fresh) {
+  if (newBlock || !SameShapes(*m, pair)) {
     m->geometry1 = m1->instance.geometry;
     m->geometry2 = m2->instance.geometry;
     m->shapeRevision = m1->framework->shapeRevision;

@@ -43,6 +43,13 @@ void InOrder(McdModelPair *pair, bool swap, F &&fn) {
   if (swap) Swap(pair);
 }
 
+// No contact, no touch, no normal: what a result holds before a test.
+void Clear(McdIntersectResult *result) {
+  result->contactCount = 0;
+  result->touch = 0;
+  MeVector3Set(result->normal, 0, 0, 0);
+}
+
 // The interaction's test of the pair, at most `cap` contacts, in the
 // caller's order.
 void Test(McdModelPair *pair, const McdInteractions *e, McdIntersectResult *result, int cap) {
@@ -135,9 +142,7 @@ int Intersect(McdModelPair *pair, McdIntersectResult *result, bool reuse) {
   // A contact beyond the tolerance may have taken the place of one within
   // it when the interaction reduced its points: the call's answer is a
   // test at the tolerance, and nothing is remembered.
-  result->contactCount = 0;
-  result->touch = 0;
-  MeVector3Set(result->normal, 0, 0, 0);
+  Clear(result);
   Test(pair, e, result, cap);
   return result->touch;
 }
@@ -147,9 +152,7 @@ int Intersect(McdModelPair *pair, McdIntersectResult *result, bool reuse) {
 namespace karma::mcd {
 
 int IntersectWithoutReuse(McdModelPair *pair, McdIntersectResult *result) {
-  result->contactCount = 0;
-  result->touch = 0;
-  MeVector3Set(result->normal, 0, 0, 0);
+  Clear(result);
   result->pair = pair;
   result->model1 = pair->model1;
   result->model2 = pair->model2;
@@ -163,9 +166,7 @@ extern "C" {
 int MEAPI McdIntersect(McdModelPair *pair, McdIntersectResult *result) {
   static const char *fn = "McdIntersect";
   ME_REQUIRE_ARG_RET(result != nullptr, 0, fn, "result is NULL");
-  result->contactCount = 0;
-  result->touch = 0;
-  MeVector3Set(result->normal, 0, 0, 0);
+  Clear(result);
   ME_REQUIRE_ARG_RET(pair != nullptr, 0, fn, "pair is NULL");
   ME_REQUIRE_ARG_RET(pair->model1 && pair->model2, 0, fn, "the pair has a NULL model");
   result->pair = pair;
