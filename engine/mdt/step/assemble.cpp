@@ -2,7 +2,7 @@
 // (problem.h) of a partition's kept rows.
 //
 //   body side   invMass and the world-frame inverse inertia of each body;
-//   row side    J, softness, and
+//   row side    J (problem.h's layout), softness, and
 //     rhs   = speed - J v*            (v*: the predicted velocities),
 //     lo/hi = force bounds * h        (+-MEINFINITY stay unbounded),
 //     friction: the kept index of its normal row; if capping dropped the
@@ -45,6 +45,18 @@ MeReal rowVelocityPredicted(const Row &row, const MdtConstraint *c) {
   return jv;
 }
 
+// Row k's J in problem.h's layout: as the row gave it, both sides.
+void fillRowSides(const Row &row, size_t k, MeReal *J) {
+  for (int side = 0; side < 2; ++side) {
+    MeReal *j = J + k * kRowValues + (size_t)side * kSideValues;
+    for (int e = 0; e < 3; ++e) {
+      j[e] = row.J[2 * side][e];
+      j[3 + e] = row.J[2 * side + 1][e];
+    }
+    for (size_t e = 6; e < kSideValues; ++e) j[e] = 0;
+  }
+}
+
 }  // namespace
 
 BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const PartitionRows &rows,
@@ -55,7 +67,7 @@ BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const Pa
   p.rowCount = rows.kept;
   std::span<int> body0 = s.arena.take<int>(m), body1 = s.arena.take<int>(m);
   std::span<int> friction = s.arena.take<int>(m);
-  std::span<MeReal> J = s.arena.take<MeReal>(m * 12);
+  std::span<MeReal> J = s.arena.take<MeReal>(m * kRowValues);
   std::span<MeReal> rhs = s.arena.take<MeReal>(m), softness = s.arena.take<MeReal>(m);
   std::span<MeReal> lo = s.arena.take<MeReal>(m), hi = s.arena.take<MeReal>(m);
   std::span<MeReal> mu = s.arena.take<MeReal>(m), warm = s.arena.take<MeReal>(m);
@@ -74,8 +86,7 @@ BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const Pa
       const Row &row = rows.rows[(size_t)r];
       body0[kk] = bodyIndex(c->body[0]);
       body1[kk] = bodyIndex(c->body[1]);
-      for (int q = 0; q < 4; ++q)
-        for (int e = 0; e < 3; ++e) J[kk * 12 + (size_t)(q * 3 + e)] = row.J[q][e];
+      fillRowSides(row, kk, J.data());
       rhs[kk] = row.speed - rowVelocityPredicted(row, c);
       softness[kk] = row.softness;
       lo[kk] = row.lo <= -MEINFINITY ? -MEINFINITY : row.lo * ctx.h;

@@ -34,6 +34,34 @@ inline Lanes magnitudes(Lanes v) {
   return v;
 }
 
+// The running largest |J| and whether all J seen are finite, over the
+// sides with a body, in lanes: a side's two padding zeros change neither.
+struct LargestJ {
+  using Mask = decltype(Lanes{} < Lanes{});
+  Lanes top{};
+  Mask inRange = top == top;  // all lanes true
+
+  void note(const MeReal *J) {
+    const Lanes zero{}, rangeTop = zero + ME_REAL_MAX;
+    for (std::size_t l = 0; l < kSide; l += kPerLanes) {
+      const Lanes v = LoadLanes16(J + l);
+      const Lanes a = v < zero ? -v : v;
+      top = a > top ? a : top;   // a NaN leaves top as it was
+      inRange &= a <= rangeTop;  // false for a NaN or an infinity
+    }
+  }
+  MeReal largest() const {
+    MeReal m = 0;
+    for (std::size_t c = 0; c < kPerLanes; ++c) m = std::max(m, top[c]);
+    return m;
+  }
+  bool finite() const {
+    bool all = true;
+    for (std::size_t c = 0; c < kPerLanes; ++c) all = all && inRange[c] != 0;
+    return all;
+  }
+};
+
 }  // namespace
 
 BodySpaceOperator::BodySpaceOperator(const BodySpaceProblem &p, StepArena &arena) : p_(&p), arena_(&arena) {}
@@ -42,11 +70,10 @@ void BodySpaceOperator::prepare() const {
   if (prepared_) return;
   prepared_ = true;
   const BodySpaceProblem &p = *p_;
-  minvJt_ = arena_->take<MeReal>((size_t)p.rowCount * 2 * kSide);
-  J_ = arena_->take<MeReal>((size_t)p.rowCount * 2 * kSide);
+  minvJt_ = arena_->take<MeReal>((size_t)p.rowCount * kRowValues);
   u_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
   // |M_b^-1 J^T| <= w_b max|J| per component, w_b = max(1/m_b, 3 max|I_b^-1|).
-  MeReal largestJ = 0, largestW = 0, largestSoftness = 0;
+  MeReal largestW = 0, largestSoftness = 0;
   bool finite = true;  // every input; std::max alone would pass a NaN over
   auto note = [&finite](MeReal &largest, MeReal v) {
     finite &= std::isfinite(v);
@@ -56,27 +83,19 @@ void BodySpaceOperator::prepare() const {
     note(largestW, p.invMass[(size_t)b]);
     for (int k = 0; k < 9; ++k) note(largestW, 3 * p.invInertia[(size_t)b * 9 + (size_t)k]);
   }
+  LargestJ largestSideJ;
   for (int r = 0; r < p.rowCount; ++r) {
     note(largestSoftness, p.softness[(size_t)r]);
     for (int side = 0; side < 2; ++side) {
-      // Every lane of both arrays is written: the six values and two zeros,
-      // or eight zeros for a side without a body.
-      MeReal *J = &J_[((size_t)r * 2 + (size_t)side) * kSide];
-      MeReal *minvJt = &minvJt_[((size_t)r * 2 + (size_t)side) * kSide];
-      std::fill(J + 6, J + kSide, MeReal(0));
-      std::fill(minvJt + 6, minvJt + kSide, MeReal(0));
-      if ((side == 0 ? p.body0[(size_t)r] : p.body1[(size_t)r]) < 0) {
-        std::fill(J, J + 6, MeReal(0));
-        std::fill(minvJt, minvJt + 6, MeReal(0));
-        continue;
-      }
+      MeReal *minvJt = &minvJt_[(size_t)r * kRowValues + (size_t)side * kSide];
+      std::fill(minvJt, minvJt + kSide, MeReal(0));
+      if ((side == 0 ? p.body0[(size_t)r] : p.body1[(size_t)r]) < 0) continue;
       sideMinvJt(p, r, side, minvJt);
-      for (int c = 0; c < 6; ++c) {
-        J[c] = p.J[(size_t)r * 12 + (size_t)side * 6 + (size_t)c];
-        note(largestJ, J[c]);
-      }
+      largestSideJ.note(sideJ(p, r, side));
     }
   }
+  const MeReal largestJ = largestSideJ.largest();
+  finite = finite && largestSideJ.finite();
   const double entryBound = 12 * (double)largestJ * (double)largestJ * (double)largestW + (double)largestSoftness;
   const double factorBound = (double)largestJ * (double)largestW;  // |M^-1 J^T|
   entriesFinite_ = finite && entryBound <= (double)ME_REAL_MAX / 2 && factorBound <= (double)ME_REAL_MAX / 2;
@@ -97,7 +116,7 @@ void BodySpaceOperator::gather(const MeReal *x) const {
     for (int side = 0; side < 2; ++side) {
       if (body[side] < 0) continue;
       MeReal *u = &u_[(size_t)body[side] * kSide];
-      const MeReal *m = &minvJt_[((size_t)r * 2 + (size_t)side) * kSide];
+      const MeReal *m = &minvJt_[(size_t)r * kRowValues + (size_t)side * kSide];
       for (std::size_t l = 0; l < kSide; l += kPerLanes)
         StoreLanes16(u + l, LoadLanes16(u + l) + magnitudes<Absolute>(LoadLanes16(m + l)) * xr);
     }
@@ -111,7 +130,7 @@ MeReal BodySpaceOperator::rowDot(int r) const {
   MeReal sum = 0;
   for (int side = 0; side < 2; ++side) {
     if (body[side] < 0) continue;
-    const MeReal *J = &J_[((size_t)r * 2 + (size_t)side) * kSide];
+    const MeReal *J = sideJ(p, r, side);
     const MeReal *u = &u_[(size_t)body[side] * kSide];
     MeReal t[kSide];
     for (std::size_t l = 0; l < kSide; l += kPerLanes)

@@ -47,9 +47,9 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
   // p must outlive the operator; its scratch comes from the arena.
   BodySpaceOperator(const BodySpaceProblem &p, StepArena &arena);
 
-  // Values per row side and per body in the operator's arrays: linear xyz,
-  // angular xyz, two zeros (whole vector lanes).
-  static constexpr std::size_t kSide = 8;
+  // Values per body in the operator's sums: linear xyz, angular xyz, two
+  // zeros (whole vector lanes), as a row side in the problem.
+  static constexpr std::size_t kSide = kSideValues;
 
   void times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const override;
   MeReal absTimesMax(const int *rows, std::size_t count, const MeReal *x) const override;
@@ -60,7 +60,7 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
   ~BodySpaceOperator() = default;
 
  private:
-  // minvJt_ and entriesFinite_, once.
+  // minvJt_, u_ and entriesFinite_, once.
   void prepare() const;
   // u = the per-body sums of the rows' (|M^-1 J^T|) x, of absolute values
   // when Absolute.
@@ -72,8 +72,7 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
 
   const BodySpaceProblem *p_;
   StepArena *arena_;
-  mutable std::span<MeReal> minvJt_;  // 2 kSide per row: side 0, side 1 (zeros for no body)
-  mutable std::span<MeReal> J_;       // the rows' J in the same layout
+  mutable std::span<MeReal> minvJt_;  // per row, as the problem's J (problem.h), zeros for no body
   mutable std::span<MeReal> u_;       // kSide per body
   mutable bool prepared_ = false, entriesFinite_ = false;
 };

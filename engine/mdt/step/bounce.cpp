@@ -20,7 +20,6 @@ namespace {
 
 // M^-1 J^T of kept row k (12 values) and its J v over the bodies' velocities.
 MeReal rowResponse(const BodySpaceProblem &p, StepScratch &s, const Partition &part, int k, MeReal mj[12]) {
-  const MeReal *J = &p.J[(size_t)k * 12];
   const int bodies[2] = {p.body0[(size_t)k], p.body1[(size_t)k]};
   MeReal jv = 0;
   for (int side = 0; side < 2; ++side) {
@@ -29,7 +28,7 @@ MeReal rowResponse(const BodySpaceProblem &p, StepScratch &s, const Partition &p
     const int b = bodies[side];
     if (b < 0) continue;
     const MdtBody *body = s.partBodies[(size_t)(part.bodyStart + b)];
-    const MeReal *lin = J + side * 6, *ang = lin + 3;
+    const MeReal *lin = sideJ(p, k, side), *ang = lin + 3;
     jv += MeVector3Dot(lin, body->velocity) + MeVector3Dot(ang, body->angularVelocity);
     sideMinvJt(p, k, side, out);
   }
@@ -55,9 +54,11 @@ void bounceTogether(const BodySpaceProblem &p, StepScratch &s, const Partition &
   for (int i = 0; i < n; ++i) q[i] = b[i] - rowResponse(p, s, part, ks[i], mj[i]);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const MeReal *J = &p.J[(size_t)ks[i] * 12];
       MeReal a = 0;
-      for (int e = 0; e < 12; ++e) a += J[e] * mj[j][e];
+      for (int side = 0; side < 2; ++side) {
+        const MeReal *J = sideJ(p, ks[i], side);
+        for (int e = 0; e < 6; ++e) a += J[e] * mj[j][side * 6 + e];
+      }
       A[i * kSmallLcpMax + j] = a;
     }
   if (SolveSmallLcp(A, q, lo, n, x)) {

@@ -15,8 +15,14 @@
 // impulses (force bounds times h), +-MEINFINITY for none. `warm` is where a
 // solver should start: last step's impulses, 0 for new rows.
 // The arrays are spans into the step arena, valid during the solve.
+//
+// J is stored per row side in kSideValues values (linear xyz, angular xyz,
+// two zeros: whole 16-byte lanes), side 0 then side 1. It holds what the
+// row gave on both sides, a side without a body included (no reader uses
+// that side).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -37,7 +43,7 @@ struct BodySpaceProblem {
   std::span<const MeReal> invInertia;  // 9 * bodyCount
   // Per row.
   std::span<const int> body0, body1;  // body index or -1
-  std::span<const MeReal> J;          // 12 * rowCount: lin0 ang0 lin1 ang1
+  std::span<const MeReal> J;          // kRowValues * rowCount (see above)
   std::span<const MeReal> rhs, softness, lo, hi;
   std::span<const int> friction;  // normal row index or -1
   std::span<const MeReal> mu;
@@ -53,15 +59,27 @@ struct BodySpaceProblem {
   bool anyWarm = false;  // a warm value is nonzero
 };
 
-// M^-1 J^T of one side of row `row` for body b (6 values: linear, angular):
-// invMass[b] J_lin and invInertia[b] J_ang.
+// Values per row side and per row in J.
+inline constexpr std::size_t kSideValues = 8;
+inline constexpr std::size_t kRowValues = 2 * kSideValues;
+
+// Row `row`'s J on `side` (six values: linear, angular).
+inline const MeReal *sideJ(const BodySpaceProblem &p, int row, int side) {
+  return &p.J[(size_t)row * kRowValues + (size_t)side * kSideValues];
+}
+
+// M_b^-1 J^T of one row side on body b: invMass J_lin and invInertia J_ang
+// (3 x 3, row-major), each component summed left to right.
+inline void SideMinvJt(MeReal invMass, const MeReal invInertia[9], const MeReal J[6], MeReal out[6]) {
+  for (int k = 0; k < 3; ++k) out[k] = invMass * J[k];
+  for (int r = 0; r < 3; ++r)
+    out[3 + r] = invInertia[r * 3] * J[3] + invInertia[r * 3 + 1] * J[4] + invInertia[r * 3 + 2] * J[5];
+}
+
+// SideMinvJt of row `row`'s `side`, which must have a body.
 inline void sideMinvJt(const BodySpaceProblem &p, int row, int side, MeReal out[6]) {
   const int b = side == 0 ? p.body0[(size_t)row] : p.body1[(size_t)row];
-  const MeReal *J = &p.J[(size_t)row * 12 + (size_t)(side * 6)];
-  const MeReal m = p.invMass[(size_t)b];
-  const MeReal *I = &p.invInertia[(size_t)b * 9];
-  for (int k = 0; k < 3; ++k) out[k] = m * J[k];
-  for (int r = 0; r < 3; ++r) out[3 + r] = I[r * 3] * J[3] + I[r * 3 + 1] * J[4] + I[r * 3 + 2] * J[5];
+  SideMinvJt(p.invMass[(size_t)b], &p.invInertia[(size_t)b * 9], sideJ(p, row, side), out);
 }
 
 }  // namespace karma::mdt

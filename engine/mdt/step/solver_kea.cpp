@@ -11,8 +11,8 @@
 //     A_ij += J_i,b . (M_b^-1 J_j,b^T)
 // Per row, the columns are found by walking the rows of its (at most two)
 // bodies and stored in ascending order, diagonal always present. The values
-// are summed body by body: for each body, its rows' M^-1 J^T (reference_
-// inline.h's BodyMinvJt) are laid out side by side, and every pair of its
+// are summed body by body: for each body, its rows' M^-1 J^T (problem.h's
+// SideMinvJt) are laid out side by side, and every pair of its
 // rows (j <= i) gets its share S_ij = J_i,b . (M_b^-1 J_j,b^T) as one small
 // block product. Each share is added at (i, j) and, off the diagonal, at
 // (j, i), so A is exactly symmetric. The places are kept with the layout as
@@ -33,7 +33,6 @@
 #include "body_space_operator.h"
 #include "kea_lcp.h"
 #include "partition_solver.h"
-#include "reference_inline.h"
 
 namespace karma::mdt {
 
@@ -214,19 +213,16 @@ void updateLayout(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &
   ++memory.layoutStamp;
 }
 
-// Body b's rows' M_b^-1 J^T, one row of `mj` per component (lin xyz, ang
-// xyz) and one column per row of b: mj[c * stride + q].
+// Body b's rows' M_b^-1 J^T (problem.h's SideMinvJt), one row of `mj` per
+// component (lin xyz, ang xyz) and one column per row of b:
+// mj[c * stride + q].
 void bodyMinvJt(const BodySpaceProblem &p, int b, std::span<const int> rows, MeReal *mj, int stride) {
-  const auto *inertia = reinterpret_cast<const MeReal(*)[3]>(&p.invInertia[(size_t)b * 9]);
+  const MeReal invMass = p.invMass[(size_t)b], *invInertia = &p.invInertia[(size_t)b * 9];
   for (size_t q = 0; q < rows.size(); ++q) {
     const int row = rows[q];
-    const MeReal *J = &p.J[(size_t)row * 12 + (p.body0[(size_t)row] == b ? 0 : 6)];
-    MeReal lin[3], ang[3];
-    platform::reference::BodyMinvJt(p.invMass[(size_t)b], inertia, J, J + 3, lin, ang);
-    for (int c = 0; c < 3; ++c) {
-      mj[(size_t)c * (size_t)stride + q] = lin[c];
-      mj[(size_t)(c + 3) * (size_t)stride + q] = ang[c];
-    }
+    MeReal side[6];
+    SideMinvJt(invMass, invInertia, sideJ(p, row, p.body0[(size_t)row] == b ? 0 : 1), side);
+    for (int c = 0; c < 6; ++c) mj[(size_t)c * (size_t)stride + q] = side[c];
   }
 }
 
@@ -240,7 +236,7 @@ void bodyShares(const BodySpaceProblem &p, int b, std::span<const int> rows, con
   const MeReal *m3 = mj + 3 * stride, *m4 = mj + 4 * stride, *m5 = mj + 5 * stride;
   for (size_t i = 0; i < rows.size(); ++i) {
     const int row = rows[i];
-    const MeReal *J = &p.J[(size_t)row * 12 + (p.body0[(size_t)row] == b ? 0 : 6)];
+    const MeReal *J = sideJ(p, row, p.body0[(size_t)row] == b ? 0 : 1);
     const MeReal j0 = J[0], j1 = J[1], j2 = J[2], j3 = J[3], j4 = J[4], j5 = J[5];
     MeReal *out = share + i * (size_t)stride;
     for (size_t q = 0; q <= i; ++q)

@@ -365,7 +365,7 @@ PgsRow gatherRow(const BodySpaceProblem &p, int i) {
   MeReal d = p.softness[k];
   const int bodies[2] = {r.body0, r.body1};
   for (int side = 0; side < 2; ++side) {
-    const MeReal *J = &p.J[k * 12 + (size_t)side * 6];
+    const MeReal *J = sideJ(p, i, side);
     toLanes(J, r.J + 2 * side);
     if (bodies[side] < 0) continue;  // mj stays zero
     MeReal mj[6];
