@@ -11,6 +11,8 @@
 //             constraint's row-by-row memory when it wrote as many rows
 //             last step, else 0;
 //   blocks    each constraint's kept contact normal rows.
+#include <cstring>
+
 #include "reference_inline.h"
 #include "step.h"
 
@@ -35,13 +37,11 @@ void fillBodies(StepScratch &s, const Partition &part, BodySpaceProblem &p) {
   p.invInertia = invInertia;
 }
 
-// J v* of one row.
-MeReal rowVelocityPredicted(const Row &row, const MdtConstraint *c) {
+// J v* of one row, on the constraint's bodies with an index (body[side] >= 0).
+MeReal rowVelocityPredicted(const Row &row, const MdtConstraint *c, const int body[2]) {
   MeReal jv = 0;
-  if (bodyIndex(c->body[0]) >= 0)
-    jv += platform::reference::RowPairEntry(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
-  if (bodyIndex(c->body[1]) >= 0)
-    jv += platform::reference::RowPairEntry(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
+  if (body[0] >= 0) jv += platform::reference::RowPairEntry(row.J[0], row.J[1], c->body[0]->vPred, c->body[0]->wPred);
+  if (body[1] >= 0) jv += platform::reference::RowPairEntry(row.J[2], row.J[3], c->body[1]->vPred, c->body[1]->wPred);
   return jv;
 }
 
@@ -49,10 +49,8 @@ MeReal rowVelocityPredicted(const Row &row, const MdtConstraint *c) {
 void fillRowSides(const Row &row, size_t k, MeReal *J) {
   for (int side = 0; side < 2; ++side) {
     MeReal *j = J + k * kRowValues + (size_t)side * kSideValues;
-    for (int e = 0; e < 3; ++e) {
-      j[e] = row.J[2 * side][e];
-      j[3 + e] = row.J[2 * side + 1][e];
-    }
+    static_assert(sizeof row.J == 12 * sizeof(MeReal), "a side's lin and ang are six consecutive values");
+    std::memcpy(j, row.J[2 * side], 6 * sizeof(MeReal));
     for (size_t e = 6; e < kSideValues; ++e) j[e] = 0;
   }
 }
@@ -79,15 +77,16 @@ BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const Pa
     const MdtConstraint *c = s.partConstraints[(size_t)(part.constraintStart + i)];
     const int r0 = rows.constraintRowStart[(size_t)i], r1 = rows.constraintRowStart[(size_t)i + 1];
     const bool memoryFits = c->warmRows == r1 - r0;
+    const int body[2] = {bodyIndex(c->body[0]), bodyIndex(c->body[1])};
     for (int r = r0; r < r1; ++r) {
       const int k = rows.solveIndex[(size_t)r];
       if (k < 0) continue;
       const size_t kk = (size_t)k;
       const Row &row = rows.rows[(size_t)r];
-      body0[kk] = bodyIndex(c->body[0]);
-      body1[kk] = bodyIndex(c->body[1]);
+      body0[kk] = body[0];
+      body1[kk] = body[1];
       fillRowSides(row, kk, J.data());
-      rhs[kk] = row.speed - rowVelocityPredicted(row, c);
+      rhs[kk] = row.speed - rowVelocityPredicted(row, c, body);
       softness[kk] = row.softness;
       lo[kk] = row.lo <= -MEINFINITY ? -MEINFINITY : row.lo * ctx.h;
       hi[kk] = row.hi >= MEINFINITY ? MEINFINITY : row.hi * ctx.h;
