@@ -224,7 +224,7 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   buildRhs(rows, set, lambda);
   x_.resize(m);
   if (stale_) {
-    if (solveStaleAndLearn(rows)) {
+    if (solveStaleAndLearn(rows, chooseStaleStart(rows, lambda))) {
       for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
       return;
     }
@@ -305,6 +305,36 @@ MeReal SparseBackend::productScale(const std::vector<int> &rows, std::span<const
   return scale;
 }
 
+namespace {
+
+/* The expected cost of a stale solve, in products with A
+ * (kSolveProducts): the factor's start costs a solve, the impulses' none;
+ * the first residual a product; each iteration a solve and a product; and
+ * a solve that iterates two products more (the rounding scale, and the
+ * true residual that accepts it). */
+MeReal StaleStartCost(bool fromFactor, MeReal iterations) {
+  constexpr MeReal kSolve = SparseBackend::kSolveProducts;
+  return (fromFactor ? kSolve : 0) + 1 + iterations * (kSolve + 1) + 2 * std::min(iterations, MeReal(1));
+}
+
+}  // namespace
+
+/* The start of a stale solve (kStartProbe). From the impulses, x_ holds
+ * the free rows' lambda in the order `rows`. */
+SparseBackend::StaleStart SparseBackend::chooseStaleStart(const std::vector<int> &rows,
+                                                         const std::vector<MeReal> &lambda) {
+  bool anyImpulse = false;
+  for (std::size_t a = 0; a < rows.size(); ++a) {
+    x_[a] = lambda[U(rows[a])];
+    anyImpulse = anyImpulse || x_[a] != 0;
+  }
+  if (!anyImpulse) return StaleStart::Factor;
+  const bool impulsesCheaper =
+      StaleStartCost(false, iterationsFromImpulses_) < StaleStartCost(true, iterationsFromFactor_);
+  const bool probe = ++startChoices_ % kStartProbe == 0;
+  return impulsesCheaper != probe ? StaleStart::Impulses : StaleStart::Factor;
+}
+
 /* x_ solving (A + eps I)_FF x = rhs_ with the stale factor as the
  * preconditioner of conjugate gradients (Saad, "Iterative Methods for
  * Sparse Linear Systems", alg. 9.1), restarted from the true residual
@@ -312,8 +342,9 @@ MeReal SparseBackend::productScale(const std::vector<int> &rows, std::span<const
  * component of the true residual rhs - A_FF x is within target_, or within
  * the rounding of its own computation (4 eps (|A_FF||x| + |rhs|), what a
  * direct solve leaves too). False after kMaxRefine iterations without
- * that: the caller refactorises. */
-bool SparseBackend::solveStale(const std::vector<int> &rows) {
+ * that: the caller refactorises. It starts from the factor's solve of
+ * rhs_, or from x_ as it is (kStartProbe). */
+bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start) {
   const std::size_t m = rows.size();
   cgR_.resize(m);
   cgZ_.resize(m);
@@ -350,7 +381,7 @@ bool SparseBackend::solveStale(const std::vector<int> &rows) {
     return !(residual > accept);
   };
   ++staleSolves_;
-  solveWithFactor(rhs_, x_);
+  if (start == StaleStart::Factor) solveWithFactor(rhs_, x_);
   int budget = kMaxRefine;
   while (!converged()) {
     if (budget == 0 || !std::isfinite(largest(x_))) return false;
@@ -385,11 +416,13 @@ void SparseBackend::learnFrictionRounds(int rounds) {
 
 /* solveStale, and what it took teaches the expected iteration count (a
  * failure counts as every iteration allowed). */
-bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows) {
+bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleStart start) {
   const int before = staleIterations_;
-  const bool solved = solveStale(rows);
+  const bool solved = solveStale(rows, start);
   const MeReal taken = static_cast<MeReal>(solved ? staleIterations_ - before : kMaxRefine);
   staleIterationsExpected_ += kStaleLearningRate * (taken - staleIterationsExpected_);
+  MeReal &startMean = start == StaleStart::Factor ? iterationsFromFactor_ : iterationsFromImpulses_;
+  startMean += kStaleLearningRate * (taken - startMean);
   staleFailureRate_ += kStaleLearningRate * ((solved ? MeReal(0) : MeReal(1)) - staleFailureRate_);
   return solved;
 }

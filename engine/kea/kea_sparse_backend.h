@@ -198,6 +198,22 @@ class SparseBackend {
    * then applies A through the operator, so it saves the assembly as well
    * as the factorisation (docs/NOTES.md, "Stale solves without A"). */
   static constexpr MeReal kDenseStaleIterations = 2;
+  /* Where a stale solve's conjugate gradients start (solveStale): from the
+   * stale factor's solve of the right-hand side, or from the free rows'
+   * current impulses (the warm start, or the last pivot's answer) when
+   * one of them is nonzero. The first suits a factor that is nearly this
+   * problem's (made a step ago: its solve is accepted as it is); the
+   * second impulses that are nearer the answer than the factor is to A (a
+   * heap at rest on a factor made when it landed). Each start's
+   * iterations are learnt as running means (kStaleLearningRate; from 0 for
+   * the factor, which is tried first, and kStaleIterationsPrior for the
+   * impulses), and the start whose expected cost (StaleStartCost) is lower
+   * is taken; every kStartProbe-th choice takes the other one, so that
+   * both means follow the scene. */
+  static constexpr int kStartProbe = 16;
+  /* A solve with a factor, in the cost of a product with A (envelope
+   * solves against operator products, pile1000 under callgrind). */
+  static constexpr MeReal kSolveProducts = 2;
 
   /* Starts a solve of `p` (which must outlive it) with eps on the diagonal;
    * forgets the previous problem's ordering and factorisation, keeps the
@@ -256,8 +272,10 @@ class SparseBackend {
   MeReal productScale(const std::vector<int> &rows, std::span<const MeReal> x) const;
   bool productOf(std::span<const MeReal> lambda) const;
   std::span<const MeReal> values() const;
-  bool solveStale(const std::vector<int> &rows);
-  bool solveStaleAndLearn(const std::vector<int> &rows);
+  enum class StaleStart { Factor, Impulses };
+  StaleStart chooseStaleStart(const std::vector<int> &rows, const std::vector<MeReal> &lambda);
+  bool solveStale(const std::vector<int> &rows, StaleStart start);
+  bool solveStaleAndLearn(const std::vector<int> &rows, StaleStart start);
   void factorise(const std::vector<unsigned char> &set);
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   template <class Visit>
@@ -354,6 +372,10 @@ class SparseBackend {
   MeReal staleIterationsExpected_ = kStaleIterationsPrior; /* running mean, kept across problems */
   MeReal staleFailureRate_ = 0;                             /* running mean of failures (1) and successes (0) */
   MeReal frictionRoundsExpected_ = 0;                       /* running mean per problem (learnFrictionRounds) */
+  /* kStartProbe: each start's running mean of iterations, and the choices
+   * made, kept across problems. */
+  MeReal iterationsFromFactor_ = 0, iterationsFromImpulses_ = kStaleIterationsPrior;
+  unsigned startChoices_ = 0;
 };
 
 }  // namespace karma::kea::detail
