@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace karma::mdt {
 
@@ -32,6 +33,39 @@ inline Lanes magnitudes(Lanes v) {
     for (std::size_t c = 0; c < kPerLanes; ++c) v[c] = std::fabs(v[c]);
   }
   return v;
+}
+
+// Four MeReal values in one vector (two 16-byte lanes in double precision):
+// element-wise operations, rounded as the scalar ones. Kept local (loaded
+// and stored through memcpy, never passed or returned), so that its width
+// never reaches a function's calling convention.
+using Lanes4 = MeReal __attribute__((vector_size(4 * sizeof(MeReal))));
+
+// A body's world inverse inertia by columns, each padded to four values:
+// column c is (I_0c, I_1c, I_2c, 0).
+void inertiaColumns(const MeReal invInertia[9], MeReal columns[12]) {
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) columns[c * 4 + r] = invInertia[r * 3 + c];
+    columns[c * 4 + 3] = 0;
+  }
+}
+
+// SideMinvJt (problem.h) of one row side into all kSide values of `out`
+// (two zeros after the six): the linear part invMass J_lin, and the
+// angular part as the sum of the inertia's columns weighted by J_ang,
+// ((col0 J_3 + col1 J_4) + col2 J_5), element by element the order
+// SideMinvJt sums each row of I J_ang in: the same bits.
+void sideMinvJtLanes(MeReal invMass, const MeReal columns[12], const MeReal J[kSide], MeReal out[kSide]) {
+  Lanes4 j, c0, c1, c2;
+  std::memcpy(&j, J, sizeof j);
+  std::memcpy(&c0, columns, sizeof c0);
+  std::memcpy(&c1, columns + 4, sizeof c1);
+  std::memcpy(&c2, columns + 8, sizeof c2);
+  const Lanes4 linear = j * invMass;  // its fourth value is overwritten below
+  std::memcpy(out, &linear, sizeof linear);
+  const Lanes4 angular = (c0 * J[3] + c1 * J[4]) + c2 * J[5];
+  std::memcpy(out + 3, &angular, sizeof angular);
+  out[6] = out[7] = 0;
 }
 
 // The running largest |J| and whether all J seen are finite, over the
@@ -79,19 +113,25 @@ void BodySpaceOperator::prepare() const {
     finite &= std::isfinite(v);
     largest = std::max(largest, std::fabs(v));
   };
+  std::span<MeReal> columns = arena_->take<MeReal>((size_t)p.bodyCount * 12);
   for (int b = 0; b < p.bodyCount; ++b) {
     note(largestW, p.invMass[(size_t)b]);
     for (int k = 0; k < 9; ++k) note(largestW, 3 * p.invInertia[(size_t)b * 9 + (size_t)k]);
+    inertiaColumns(&p.invInertia[(size_t)b * 9], &columns[(size_t)b * 12]);
   }
   LargestJ largestSideJ;
   for (int r = 0; r < p.rowCount; ++r) {
     note(largestSoftness, p.softness[(size_t)r]);
     for (int side = 0; side < 2; ++side) {
       MeReal *minvJt = &minvJt_[(size_t)r * kRowValues + (size_t)side * kSide];
-      std::fill(minvJt, minvJt + kSide, MeReal(0));
-      if ((side == 0 ? p.body0[(size_t)r] : p.body1[(size_t)r]) < 0) continue;
-      sideMinvJt(p, r, side, minvJt);
-      largestSideJ.note(sideJ(p, r, side));
+      const int b = side == 0 ? p.body0[(size_t)r] : p.body1[(size_t)r];
+      if (b < 0) {
+        std::fill(minvJt, minvJt + kSide, MeReal(0));
+        continue;
+      }
+      const MeReal *J = sideJ(p, r, side);
+      sideMinvJtLanes(p.invMass[(size_t)b], &columns[(size_t)b * 12], J, minvJt);
+      largestSideJ.note(J);
     }
   }
   const MeReal largestJ = largestSideJ.largest();
