@@ -163,8 +163,10 @@ void BodySpaceOperator::gather(const MeReal *x) const {
   }
 }
 
+// Inlined into the loops over rows that call it (a call per row cost as
+// much as the row's arithmetic).
 template <bool Absolute>
-MeReal BodySpaceOperator::rowDot(int r) const {
+[[gnu::always_inline]] inline MeReal BodySpaceOperator::rowDot(int r) const {
   const BodySpaceProblem &p = *p_;
   const int body[2] = {p.body0[(size_t)r], p.body1[(size_t)r]};
   MeReal sum = 0;
