@@ -69,24 +69,26 @@ void sideMinvJtLanes(MeReal invMass, const MeReal columns[12], const MeReal J[kS
 }
 
 // The running largest |J| and whether all J seen are finite, over the
-// sides with a body, in lanes: a side's two padding zeros change neither.
+// sides with a body, in lanes: the largest and the smallest value seen
+// (a side's two padding zeros change neither bound of |J|), and whether
+// every value lay within the finite range.
 struct LargestJ {
   using Mask = decltype(Lanes{} < Lanes{});
-  Lanes top{};
+  Lanes top{}, bottom{};
   Mask inRange = top == top;  // all lanes true
 
   void note(const MeReal *J) {
-    const Lanes zero{}, rangeTop = zero + ME_REAL_MAX;
+    const Lanes rangeTop = Lanes{} + ME_REAL_MAX;
     for (std::size_t l = 0; l < kSide; l += kPerLanes) {
       const Lanes v = LoadLanes16(J + l);
-      const Lanes a = v < zero ? -v : v;
-      top = a > top ? a : top;   // a NaN leaves top as it was
-      inRange &= a <= rangeTop;  // false for a NaN or an infinity
+      top = v > top ? v : top;  // a NaN leaves both as they were
+      bottom = v < bottom ? v : bottom;
+      inRange &= (v <= rangeTop) & (-v <= rangeTop);  // false for a NaN or an infinity
     }
   }
   MeReal largest() const {
     MeReal m = 0;
-    for (std::size_t c = 0; c < kPerLanes; ++c) m = std::max(m, top[c]);
+    for (std::size_t c = 0; c < kPerLanes; ++c) m = std::max(m, std::max(top[c], -bottom[c]));
     return m;
   }
   bool finite() const {
