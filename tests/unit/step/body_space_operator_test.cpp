@@ -1,0 +1,202 @@
+// The body-space operator (body_space_operator.h) on random problems with
+// the step's structure (rows on two bodies, rows on one body and the
+// world): its product is the sum that header documents, bit for bit, with
+// M^-1 J^T as problem.h's SideMinvJt gives it and the rows' J read in
+// problem.h's layout; absTimesMax bounds every row of it; and its
+// finiteness verdict refuses a non-finite or huge J or softness on a side
+// with a body, and ignores J on a side without one (no reader uses it).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "arena.h"
+#include "body_space_operator.h"
+#include "problem.h"
+
+namespace {
+
+using karma::mdt::BodySpaceOperator;
+using karma::mdt::BodySpaceProblem;
+using karma::mdt::kRowValues;
+using karma::mdt::kSideValues;
+using karma::mdt::SideMinvJt;
+using karma::mdt::StepArena;
+
+// The operator's destructor is protected: Kea holds it through its base.
+class Operator final : public BodySpaceOperator {
+ public:
+  using BodySpaceOperator::BodySpaceOperator;
+  void assemble() const override {}
+};
+
+// A problem's arrays, owned; problem() views them.
+struct Arrays {
+  int bodies = 0, rows = 0;
+  std::vector<MeReal> invMass, invInertia, J, rhs, softness, lo, hi, mu, warm;
+  std::vector<int> body0, body1, friction;
+
+  BodySpaceProblem problem() const {
+    BodySpaceProblem p;
+    p.bodyCount = bodies;
+    p.rowCount = rows;
+    p.invMass = invMass;
+    p.invInertia = invInertia;
+    p.body0 = body0;
+    p.body1 = body1;
+    p.J = J;
+    p.rhs = rhs;
+    p.softness = softness;
+    p.lo = lo;
+    p.hi = hi;
+    p.friction = friction;
+    p.mu = mu;
+    p.warm = warm;
+    return p;
+  }
+};
+
+// `rows` rows on `bodies` bodies: every row on a random body, a third of
+// them against the world (body1 = -1, whose J is junk that must not be
+// read), the rest on a second, different body.
+Arrays RandomProblem(std::mt19937 &rng, int bodies, int rows) {
+  std::uniform_real_distribution<double> u(-1, 1), positive(0.1, 2);
+  std::uniform_int_distribution<int> body(0, bodies - 1), third(0, 2);
+  Arrays a;
+  a.bodies = bodies;
+  a.rows = rows;
+  for (int b = 0; b < bodies; ++b) {
+    a.invMass.push_back((MeReal)positive(rng));
+    for (int k = 0; k < 9; ++k) a.invInertia.push_back((MeReal)u(rng));
+  }
+  a.J.assign((size_t)rows * kRowValues, 0);
+  for (int r = 0; r < rows; ++r) {
+    const int b0 = body(rng);
+    int b1 = third(rng) == 0 ? -1 : body(rng);
+    if (b1 == b0) b1 = (b0 + 1) % bodies;
+    a.body0.push_back(b0);
+    a.body1.push_back(b1);
+    for (int side = 0; side < 2; ++side)
+      for (int c = 0; c < 6; ++c) a.J[(size_t)r * kRowValues + (size_t)side * kSideValues + (size_t)c] = (MeReal)u(rng);
+    a.softness.push_back((MeReal)(0.01 * positive(rng)));
+  }
+  a.rhs.assign((size_t)rows, 0);
+  a.lo.assign((size_t)rows, -1);
+  a.hi.assign((size_t)rows, 1);
+  a.mu.assign((size_t)rows, 0);
+  a.warm.assign((size_t)rows, 0);
+  a.friction.assign((size_t)rows, -1);
+  return a;
+}
+
+// The product as body_space_operator.h defines it, in scalars: u_b summed
+// over b's rows in ascending order, each row's six-term dots as (linear)
+// + (angular), side 0 then side 1, then + softness x.
+std::vector<MeReal> DocumentedProduct(const Arrays &a, const std::vector<MeReal> &x) {
+  std::vector<MeReal> u((size_t)a.bodies * 6, 0);
+  auto sideJ = [&](int r, int side) { return &a.J[(size_t)r * kRowValues + (size_t)side * kSideValues]; };
+  for (int r = 0; r < a.rows; ++r)
+    for (int side = 0; side < 2; ++side) {
+      const int b = side == 0 ? a.body0[(size_t)r] : a.body1[(size_t)r];
+      if (b < 0) continue;
+      MeReal mj[6];
+      SideMinvJt(a.invMass[(size_t)b], &a.invInertia[(size_t)b * 9], sideJ(r, side), mj);
+      for (int c = 0; c < 6; ++c) u[(size_t)b * 6 + (size_t)c] += mj[c] * x[(size_t)r];
+    }
+  std::vector<MeReal> y((size_t)a.rows);
+  for (int r = 0; r < a.rows; ++r) {
+    MeReal sum = 0;
+    for (int side = 0; side < 2; ++side) {
+      const int b = side == 0 ? a.body0[(size_t)r] : a.body1[(size_t)r];
+      if (b < 0) continue;
+      const MeReal *J = sideJ(r, side), *ub = &u[(size_t)b * 6];
+      const MeReal d = (J[0] * ub[0] + J[1] * ub[1] + J[2] * ub[2]) + (J[3] * ub[3] + J[4] * ub[4] + J[5] * ub[5]);
+      sum = side == 0 ? d : sum + d;
+    }
+    y[(size_t)r] = sum + a.softness[(size_t)r] * x[(size_t)r];
+  }
+  return y;
+}
+
+bool SameBits(MeReal a, MeReal b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool EntriesFinite(const Arrays &a) {
+  StepArena arena;
+  const BodySpaceProblem p = a.problem();
+  const Operator op(p, arena);
+  return op.entriesFinite();
+}
+
+}  // namespace
+
+TEST(BodySpaceOperator, TheProductIsTheDocumentedSumBitForBit) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Arrays a = RandomProblem(rng, 2 + trial % 7, 1 + trial % 23);
+    std::vector<MeReal> x((size_t)a.rows);
+    for (MeReal &v : x) v = (MeReal)u(rng);
+    const std::vector<MeReal> expected = DocumentedProduct(a, x);
+
+    StepArena arena;
+    const BodySpaceProblem p = a.problem();
+    const Operator op(p, arena);
+    std::vector<MeReal> y((size_t)a.rows);
+    op.times(nullptr, (size_t)a.rows, x.data(), y.data());
+    for (int r = 0; r < a.rows; ++r)
+      EXPECT_TRUE(SameBits(y[(size_t)r], expected[(size_t)r]))
+          << "trial " << trial << " row " << r << ": " << y[(size_t)r] << " vs " << expected[(size_t)r];
+
+    // Every other row, by index: the same values.
+    std::vector<int> some;
+    for (int r = a.rows - 1; r >= 0; r -= 2) some.push_back(r);
+    std::vector<MeReal> ySome(some.size());
+    op.times(some.data(), some.size(), x.data(), ySome.data());
+    for (size_t k = 0; k < some.size(); ++k) EXPECT_TRUE(SameBits(ySome[k], expected[(size_t)some[k]])) << trial;
+
+    // absTimesMax bounds every row of the product.
+    MeReal largest = 0;
+    for (MeReal v : y) largest = std::max(largest, std::fabs(v));
+    EXPECT_GE(op.absTimesMax(nullptr, (size_t)a.rows, x.data()), largest) << trial;
+    EXPECT_TRUE(op.entriesFinite()) << trial;
+  }
+}
+
+TEST(BodySpaceOperator, EntriesAreFiniteOnlyWhenEveryReadInputIsFiniteAndBounded) {
+  std::mt19937 rng(5);
+  const Arrays base = RandomProblem(rng, 4, 12);
+  ASSERT_TRUE(EntriesFinite(base));
+  int worldRow = -1, bodyRow = -1;
+  for (int r = 0; r < base.rows; ++r) (base.body1[(size_t)r] < 0 ? worldRow : bodyRow) = r;
+  ASSERT_GE(worldRow, 0);
+  ASSERT_GE(bodyRow, 0);
+  auto at = [](int r, int side, int c) { return (size_t)r * kRowValues + (size_t)side * kSideValues + (size_t)c; };
+  const MeReal nan = std::numeric_limits<MeReal>::quiet_NaN();
+  const MeReal inf = std::numeric_limits<MeReal>::infinity();
+
+  for (const MeReal bad : {nan, inf, -inf}) {
+    for (int side = 0; side < 2; ++side)
+      for (int c = 0; c < 6; ++c) {
+        Arrays a = base;
+        a.J[at(bodyRow, side, c)] = bad;
+        EXPECT_FALSE(EntriesFinite(a)) << "side " << side << " component " << c;
+      }
+    Arrays world = base;  // the side without a body is never read
+    for (int c = 0; c < 6; ++c) world.J[at(worldRow, 1, c)] = bad;
+    EXPECT_TRUE(EntriesFinite(world));
+    Arrays soft = base;
+    soft.softness[(size_t)bodyRow] = bad;
+    EXPECT_FALSE(EntriesFinite(soft));
+    Arrays mass = base;
+    mass.invMass[0] = bad;
+    EXPECT_FALSE(EntriesFinite(mass));
+  }
+  // Finite but so large that an entry of A could overflow: 12 |J|^2 w
+  // beyond half the range.
+  Arrays huge = base;
+  huge.J[at(bodyRow, 0, 4)] = -std::sqrt(std::numeric_limits<MeReal>::max());
+  EXPECT_FALSE(EntriesFinite(huge));
+}
