@@ -321,18 +321,18 @@ MeReal StaleStartCost(bool fromFactor, MeReal iterations) {
 
 /* The start of a stale solve (kStartProbe). From the impulses, x_ holds
  * the free rows' lambda in the order `rows`. */
-SparseBackend::StaleStart SparseBackend::chooseStaleStart(const std::vector<int> &rows,
-                                                         const std::vector<MeReal> &lambda) {
+SparseBackend::StaleChoice SparseBackend::chooseStaleStart(const std::vector<int> &rows,
+                                                          const std::vector<MeReal> &lambda) {
   bool anyImpulse = false;
   for (std::size_t a = 0; a < rows.size(); ++a) {
     x_[a] = lambda[U(rows[a])];
     anyImpulse = anyImpulse || x_[a] != 0;
   }
-  if (!anyImpulse) return StaleStart::Factor;
+  if (!anyImpulse) return {StaleStart::Factor, false};
   const bool impulsesCheaper =
       StaleStartCost(false, iterationsFromImpulses_) < StaleStartCost(true, iterationsFromFactor_);
   const bool probe = ++startChoices_ % kStartProbe == 0;
-  return impulsesCheaper != probe ? StaleStart::Impulses : StaleStart::Factor;
+  return {impulsesCheaper != probe ? StaleStart::Impulses : StaleStart::Factor, probe};
 }
 
 /* x_ solving (A + eps I)_FF x = rhs_ with the stale factor as the
@@ -414,15 +414,17 @@ void SparseBackend::learnFrictionRounds(int rounds) {
   frictionRoundsExpected_ += kStaleLearningRate * (static_cast<MeReal>(rounds) - frictionRoundsExpected_);
 }
 
-/* solveStale, and what it took teaches the expected iteration count (a
- * failure counts as every iteration allowed). */
-bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleStart start) {
+/* solveStale, and what it took teaches its start's mean and, unless it was
+ * a probe, the keep rule's iteration count and failure rate (a failure
+ * counts as every iteration allowed). */
+bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice) {
   const int before = staleIterations_;
-  const bool solved = solveStale(rows, start);
+  const bool solved = solveStale(rows, choice.start);
   const MeReal taken = static_cast<MeReal>(solved ? staleIterations_ - before : kMaxRefine);
-  staleIterationsExpected_ += kStaleLearningRate * (taken - staleIterationsExpected_);
-  MeReal &startMean = start == StaleStart::Factor ? iterationsFromFactor_ : iterationsFromImpulses_;
+  MeReal &startMean = choice.start == StaleStart::Factor ? iterationsFromFactor_ : iterationsFromImpulses_;
   startMean += kStaleLearningRate * (taken - startMean);
+  if (choice.probe) return solved;
+  staleIterationsExpected_ += kStaleLearningRate * (taken - staleIterationsExpected_);
   staleFailureRate_ += kStaleLearningRate * ((solved ? MeReal(0) : MeReal(1)) - staleFailureRate_);
   return solved;
 }

@@ -126,7 +126,9 @@ struct StaleRecord {
  * A stale solve costs about (passes + iterations) S: passes = 2 for its
  * first solve with the factor and the residual that accepts it, and 3
  * with an operator, whose preparation (M^-1 J^T of every row, once a
- * problem) is counted once a solve, an approximation; `iterations` counts
+ * problem) is counted once a solve, an approximation (a solve that starts
+ * from the impulses, kStartProbe, makes no first solve: for it the rule
+ * errs on the side of refactorising); `iterations` counts
  * a failure as all it was allowed. A problem takes `solves` of them (each
  * friction round solves again; the two triangular solves a round costs on
  * a fresh factor are left out), and a failure, at rate `failures`, costs a
@@ -209,7 +211,10 @@ class SparseBackend {
    * the factor, which is tried first, and kStaleIterationsPrior for the
    * impulses), and the start whose expected cost (StaleStartCost) is lower
    * is taken; every kStartProbe-th choice takes the other one, so that
-   * both means follow the scene. */
+   * both means follow the scene. A probe teaches only its start's mean:
+   * the keep rule's expectations (StaleSolveWorthIt, kDenseStaleIterations)
+   * learn from the chosen starts alone, so that a probe of the worse start
+   * never drops a factor the better one would keep. */
   static constexpr int kStartProbe = 16;
   /* A solve with a factor, in the cost of a product with A (envelope
    * solves against operator products, pile1000 under callgrind). */
@@ -273,9 +278,15 @@ class SparseBackend {
   bool productOf(std::span<const MeReal> lambda) const;
   std::span<const MeReal> values() const;
   enum class StaleStart { Factor, Impulses };
-  StaleStart chooseStaleStart(const std::vector<int> &rows, const std::vector<MeReal> &lambda);
+  /* A start, and whether it is the probe of the start expected to cost
+   * more (kStartProbe). */
+  struct StaleChoice {
+    StaleStart start;
+    bool probe;
+  };
+  StaleChoice chooseStaleStart(const std::vector<int> &rows, const std::vector<MeReal> &lambda);
   bool solveStale(const std::vector<int> &rows, StaleStart start);
-  bool solveStaleAndLearn(const std::vector<int> &rows, StaleStart start);
+  bool solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice);
   void factorise(const std::vector<unsigned char> &set);
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   template <class Visit>

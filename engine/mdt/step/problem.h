@@ -18,8 +18,8 @@
 //
 // J is stored per row side in kSideValues values (linear xyz, angular xyz,
 // two zeros: whole 16-byte lanes), side 0 then side 1. It holds what the
-// row gave on both sides, a side without a body included (no reader uses
-// that side).
+// row gave on both sides, a side without a body included: no reader takes
+// a value from that side (PGS and the bounces multiply it by zeros).
 #pragma once
 
 #include <cstddef>

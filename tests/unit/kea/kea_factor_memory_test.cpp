@@ -256,9 +256,11 @@ TEST(KeaWarmStart, ACyclingWarmStartIsRetriedCold) {
 // step warm-started from the last answer (a heap settling on a factor made
 // when it landed): the factor's start carries the whole drift, the
 // impulses only one step's change. Every answer agrees with a fresh solve;
-// over the second half the stale solves take at most 1.65 iterations on
-// average (1.27-1.43 for these seeds; from the factor's start alone they
-// took 1.89-2.54, docs/NOTES.md, "Where a stale solve starts").
+// over the second half the stale solves take few iterations on average:
+// at most 1.65 in single precision (1.27-1.43 for these seeds; from the
+// factor's start alone they took 1.89-2.54) and 4 in double, whose target
+// is far smaller (3.24-3.44; 4.95-5.10 from the factor's start). Figures
+// in docs/NOTES.md, "Where a stale solve starts".
 TEST(KeaFactorMemory, ADriftingProblemIsSolvedFromItsImpulses) {
   for (unsigned seed = 1; seed <= 3; ++seed) {
     const ContactProblem first = kea_test::Stack(20, seed);
@@ -283,7 +285,8 @@ TEST(KeaFactorMemory, ADriftingProblemIsSolvedFromItsImpulses) {
       }
     }
     ASSERT_GE(staleSolves, kSteps / 2) << "seed " << seed;
-    EXPECT_LE((double)staleIterations / staleSolves, 1.65) << "seed " << seed;
+    const double bound = sizeof(MeReal) == sizeof(float) ? 1.65 : 4.0;
+    EXPECT_LE((double)staleIterations / staleSolves, bound) << "seed " << seed;
   }
 }
 

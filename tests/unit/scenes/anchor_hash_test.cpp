@@ -35,7 +35,7 @@ struct PinnedHash {
 constexpr PinnedHash kPinned[] = {
     {"car",      300,  "0xac8e1fea8938895b", "0xf86235ce2ce39eee"},
     {"topple",   600,  "0x3f1954263c8da3b3", "0x9a37a8914458c301"},
-    {"ragdoll",  600,  "0xad3ed715d67c848e", "0x22b831db3d2e9875"},
+    {"ragdoll",  600,  "0x3fbde210448da5e6", "0x22b831db3d2e9875"},
     {"stack21",  1200, "0xfc53ae29bc740452", "0x30b995fb8faa1b45"},
     {"pile1000", 60,   "0xeebe68a632b8f9ea", "0xcfa7a4fc509cc017"},
 };
