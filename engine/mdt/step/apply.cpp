@@ -4,9 +4,24 @@
 // its warm-start memory for the next step (row by row, up to kMaxWarmRows;
 // contacts keep theirs in their own frame through afterSolve). Rows that
 // capping dropped count as zero impulse.
+#include "lanes16.h"
 #include "step.h"
 
 namespace karma::mdt {
+
+namespace {
+
+// imp += lambda J (12 values each: lin0, ang0, lin1, ang1), element by
+// element in 16-byte lanes: each element rounds as MeVector3MultiplyAdd's
+// v + s a does.
+void addScaledJ(MeReal imp[12], MeReal lambda, const MeReal J[12]) {
+  using platform::LoadLanes16;
+  static_assert(12 % platform::kPerLanes16 == 0);
+  for (std::size_t l = 0; l < 12; l += platform::kPerLanes16)
+    platform::StoreLanes16(imp + l, LoadLanes16(imp + l) + lambda * LoadLanes16(J + l));
+}
+
+}  // namespace
 
 void applyImpulses(StepScratch &s, const Partition &part, const PartitionRows &rows, std::span<const MeReal> lambda,
                    const StepContext &ctx) {
@@ -19,8 +34,8 @@ void applyImpulses(StepScratch &s, const Partition &part, const PartitionRows &r
     MdtConstraint *c = s.partConstraints[(size_t)(part.constraintStart + i)];
     const int r0 = rows.constraintRowStart[(size_t)i], r1 = rows.constraintRowStart[(size_t)i + 1];
     MeVector3 imp[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    for (int r = r0; r < r1; ++r)
-      for (int q = 0; q < 4; ++q) MeVector3MultiplyAdd(imp[q], all[(size_t)r], rows.rows[(size_t)r].J[q]);
+    static_assert(sizeof imp == 12 * sizeof(MeReal) && sizeof(Row::J) == 12 * sizeof(MeReal));
+    for (int r = r0; r < r1; ++r) addScaledJ(&imp[0][0], all[(size_t)r], &rows.rows[(size_t)r].J[0][0]);
     for (int k = 0; k < 2; ++k) {
       MeVector3MultiplyScalar(c->force[k], imp[2 * k], ctx.invH);
       MeVector3MultiplyScalar(c->torque[k], imp[2 * k + 1], ctx.invH);
