@@ -224,7 +224,7 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   buildRhs(rows, set, lambda);
   x_.resize(m);
   if (stale_) {
-    if (solveStaleAndLearn(rows, chooseStaleStart(rows, lambda))) {
+    if (solveStaleAndLearn(rows, chooseStaleStart(rows, lambda), lambda)) {
       for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
       return;
     }
@@ -319,15 +319,11 @@ MeReal StaleStartCost(bool fromFactor, MeReal iterations) {
 
 }  // namespace
 
-/* The start of a stale solve (kStartProbe). From the impulses, x_ holds
- * the free rows' lambda in the order `rows`. */
+/* The start of a stale solve (kStartProbe): the factor's when no free
+ * row has an impulse. */
 SparseBackend::StaleChoice SparseBackend::chooseStaleStart(const std::vector<int> &rows,
                                                           const std::vector<MeReal> &lambda) {
-  bool anyImpulse = false;
-  for (std::size_t a = 0; a < rows.size(); ++a) {
-    x_[a] = lambda[U(rows[a])];
-    anyImpulse = anyImpulse || x_[a] != 0;
-  }
+  const bool anyImpulse = std::any_of(rows.begin(), rows.end(), [&](int r) { return lambda[U(r)] != 0; });
   if (!anyImpulse) return {StaleStart::Factor, false};
   const bool impulsesCheaper =
       StaleStartCost(false, iterationsFromImpulses_) < StaleStartCost(true, iterationsFromFactor_);
@@ -343,8 +339,8 @@ SparseBackend::StaleChoice SparseBackend::chooseStaleStart(const std::vector<int
  * the rounding of its own computation (4 eps (|A_FF||x| + |rhs|), what a
  * direct solve leaves too). False after kMaxRefine iterations without
  * that: the caller refactorises. It starts from the factor's solve of
- * rhs_, or from x_ as it is (kStartProbe). */
-bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start) {
+ * rhs_, or from the free rows' impulses in `lambda` (kStartProbe). */
+bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda) {
   const std::size_t m = rows.size();
   cgR_.resize(m);
   cgZ_.resize(m);
@@ -381,7 +377,10 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start) {
     return !(residual > accept);
   };
   ++staleSolves_;
-  if (start == StaleStart::Factor) solveWithFactor(rhs_, x_);
+  if (start == StaleStart::Factor)
+    solveWithFactor(rhs_, x_);
+  else
+    for (std::size_t a = 0; a < m; ++a) x_[a] = lambda[U(rows[a])];
   int budget = kMaxRefine;
   while (!converged()) {
     if (budget == 0 || !std::isfinite(largest(x_))) return false;
@@ -417,9 +416,10 @@ void SparseBackend::learnFrictionRounds(int rounds) {
 /* solveStale, and what it took teaches its start's mean and, unless it was
  * a probe, the keep rule's iteration count and failure rate (a failure
  * counts as every iteration allowed). */
-bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice) {
+bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice,
+                                       const std::vector<MeReal> &lambda) {
   const int before = staleIterations_;
-  const bool solved = solveStale(rows, choice.start);
+  const bool solved = solveStale(rows, choice.start, lambda);
   const MeReal taken = static_cast<MeReal>(solved ? staleIterations_ - before : kMaxRefine);
   MeReal &startMean = choice.start == StaleStart::Factor ? iterationsFromFactor_ : iterationsFromImpulses_;
   startMean += kStaleLearningRate * (taken - startMean);

@@ -285,8 +285,8 @@ class SparseBackend {
     bool probe;
   };
   StaleChoice chooseStaleStart(const std::vector<int> &rows, const std::vector<MeReal> &lambda);
-  bool solveStale(const std::vector<int> &rows, StaleStart start);
-  bool solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice);
+  bool solveStale(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda);
+  bool solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice, const std::vector<MeReal> &lambda);
   void factorise(const std::vector<unsigned char> &set);
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   template <class Visit>

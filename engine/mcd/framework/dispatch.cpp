@@ -50,6 +50,13 @@ void Clear(McdIntersectResult *result) {
   MeVector3Set(result->normal, 0, 0, 0);
 }
 
+// The result names the pair and its models.
+void Name(McdIntersectResult *result, McdModelPair *pair) {
+  result->pair = pair;
+  result->model1 = pair->model1;
+  result->model2 = pair->model2;
+}
+
 // The interaction's test of the pair, at most `cap` contacts, in the
 // caller's order.
 void Test(McdModelPair *pair, const McdInteractions *e, McdIntersectResult *result, int cap) {
@@ -153,9 +160,7 @@ namespace karma::mcd {
 
 int IntersectWithoutReuse(McdModelPair *pair, McdIntersectResult *result) {
   Clear(result);
-  result->pair = pair;
-  result->model1 = pair->model1;
-  result->model2 = pair->model2;
+  Name(result, pair);
   return Intersect(pair, result, false);
 }
 
@@ -169,9 +174,7 @@ int MEAPI McdIntersect(McdModelPair *pair, McdIntersectResult *result) {
   Clear(result);
   ME_REQUIRE_ARG_RET(pair != nullptr, 0, fn, "pair is NULL");
   ME_REQUIRE_ARG_RET(pair->model1 && pair->model2, 0, fn, "the pair has a NULL model");
-  result->pair = pair;
-  result->model1 = pair->model1;
-  result->model2 = pair->model2;
+  Name(result, pair);
   ME_REQUIRE_ARG_RET(result->contactMaxCount >= 0, 0, fn, "result->contactMaxCount is negative (%d)",
                      result->contactMaxCount);
   ME_REQUIRE_ARG_RET(result->contacts != nullptr || result->contactMaxCount == 0, 0, fn,

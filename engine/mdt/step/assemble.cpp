@@ -46,10 +46,10 @@ MeReal rowVelocityPredicted(const Row &row, const MdtConstraint *c, const int bo
 }
 
 // Row k's J in problem.h's layout: as the row gave it, both sides.
+static_assert(sizeof(Row::J) == 12 * sizeof(MeReal), "a side's lin and ang are six consecutive values");
 void fillRowSides(const Row &row, size_t k, MeReal *J) {
   for (int side = 0; side < 2; ++side) {
     MeReal *j = J + k * kRowValues + (size_t)side * kSideValues;
-    static_assert(sizeof row.J == 12 * sizeof(MeReal), "a side's lin and ang are six consecutive values");
     std::memcpy(j, row.J[2 * side], 6 * sizeof(MeReal));
     for (size_t e = 6; e < kSideValues; ++e) j[e] = 0;
   }
