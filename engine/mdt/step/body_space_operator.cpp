@@ -50,20 +50,29 @@ void inertiaColumns(const MeReal invInertia[9], MeReal columns[12]) {
   }
 }
 
-// SideMinvJt (problem.h) of one row side into all kSide values of `out`
-// (two zeros after the six): the linear part invMass J_lin, and the
-// angular part as the sum of the inertia's columns weighted by J_ang,
-// ((col0 J_3 + col1 J_4) + col2 J_5), element by element the order
-// SideMinvJt sums each row of I J_ang in: the same bits.
-void sideMinvJtLanes(MeReal invMass, const MeReal columns[12], const MeReal J[kSide], MeReal out[kSide]) {
-  Lanes4 j, c0, c1, c2;
-  std::memcpy(&j, J, sizeof j);
+// M_b^-1 g for a body's gathered sum g (kSide values) into all kSide
+// values of `out` (two zeros after the six): the linear part invMass g_lin,
+// and the angular part as the sum of the inertia's columns weighted by
+// g_ang, ((col0 g_3 + col1 g_4) + col2 g_5), element by element the order
+// SideMinvJt (problem.h) sums each row of I g_ang in. With Absolute, the
+// same with |invMass| and |I|.
+template <bool Absolute>
+void applyInverseMass(MeReal invMass, const MeReal columns[12], const MeReal g[kSide], MeReal out[kSide]) {
+  Lanes4 v, c0, c1, c2;
+  std::memcpy(&v, g, sizeof v);
   std::memcpy(&c0, columns, sizeof c0);
   std::memcpy(&c1, columns + 4, sizeof c1);
   std::memcpy(&c2, columns + 8, sizeof c2);
-  const Lanes4 linear = j * invMass;  // its fourth value is overwritten below
+  if constexpr (Absolute) {
+    for (int k = 0; k < 4; ++k) {
+      c0[k] = std::fabs(c0[k]);
+      c1[k] = std::fabs(c1[k]);
+      c2[k] = std::fabs(c2[k]);
+    }
+  }
+  const Lanes4 linear = v * magnitude<Absolute>(invMass);  // its fourth value is overwritten below
   std::memcpy(out, &linear, sizeof linear);
-  const Lanes4 angular = (c0 * J[3] + c1 * J[4]) + c2 * J[5];
+  const Lanes4 angular = (c0 * g[3] + c1 * g[4]) + c2 * g[5];
   std::memcpy(out + 3, &angular, sizeof angular);
   out[6] = out[7] = 0;
 }
@@ -106,8 +115,9 @@ void BodySpaceOperator::prepare() const {
   if (prepared_) return;
   prepared_ = true;
   const BodySpaceProblem &p = *p_;
-  minvJt_ = arena_->take<MeReal>((size_t)p.rowCount * kRowValues);
+  g_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
   u_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
+  columns_ = arena_->take<MeReal>((size_t)p.bodyCount * 12);
   // |M_b^-1 J^T| <= w_b max|J| per component, w_b = max(1/m_b, 3 max|I_b^-1|).
   MeReal largestW = 0, largestSoftness = 0;
   bool finite = true;  // every input; std::max alone would pass a NaN over
@@ -115,26 +125,16 @@ void BodySpaceOperator::prepare() const {
     finite &= std::isfinite(v);
     largest = std::max(largest, std::fabs(v));
   };
-  std::span<MeReal> columns = arena_->take<MeReal>((size_t)p.bodyCount * 12);
   for (int b = 0; b < p.bodyCount; ++b) {
     note(largestW, p.invMass[(size_t)b]);
     for (int k = 0; k < 9; ++k) note(largestW, 3 * p.invInertia[(size_t)b * 9 + (size_t)k]);
-    inertiaColumns(&p.invInertia[(size_t)b * 9], &columns[(size_t)b * 12]);
+    inertiaColumns(&p.invInertia[(size_t)b * 9], &columns_[(size_t)b * 12]);
   }
   LargestJ largestSideJ;
   for (int r = 0; r < p.rowCount; ++r) {
     note(largestSoftness, p.softness[(size_t)r]);
-    for (int side = 0; side < 2; ++side) {
-      MeReal *minvJt = &minvJt_[(size_t)r * kRowValues + (size_t)side * kSide];
-      const int b = side == 0 ? p.body0[(size_t)r] : p.body1[(size_t)r];
-      if (b < 0) {
-        std::fill(minvJt, minvJt + kSide, MeReal(0));
-        continue;
-      }
-      const MeReal *J = sideJ(p, r, side);
-      sideMinvJtLanes(p.invMass[(size_t)b], &columns[(size_t)b * 12], J, minvJt);
-      largestSideJ.note(J);
-    }
+    if (p.body0[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 0));
+    if (p.body1[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 1));
   }
   const MeReal largestJ = largestSideJ.largest();
   finite = finite && largestSideJ.finite();
@@ -151,18 +151,21 @@ bool BodySpaceOperator::entriesFinite() const {
 template <bool Absolute>
 void BodySpaceOperator::gather(const MeReal *x) const {
   const BodySpaceProblem &p = *p_;
-  std::fill(u_.begin(), u_.end(), MeReal(0));
+  std::fill(g_.begin(), g_.end(), MeReal(0));
   for (int r = 0; r < p.rowCount; ++r) {
     const MeReal xr = magnitude<Absolute>(x[r]);
     const int body[2] = {p.body0[(size_t)r], p.body1[(size_t)r]};
     for (int side = 0; side < 2; ++side) {
       if (body[side] < 0) continue;
-      MeReal *u = &u_[(size_t)body[side] * kSide];
-      const MeReal *m = &minvJt_[(size_t)r * kRowValues + (size_t)side * kSide];
+      MeReal *g = &g_[(size_t)body[side] * kSide];
+      const MeReal *J = sideJ(p, r, side);
       for (std::size_t l = 0; l < kSide; l += kPerLanes)
-        StoreLanes16(u + l, LoadLanes16(u + l) + magnitudes<Absolute>(LoadLanes16(m + l)) * xr);
+        StoreLanes16(g + l, LoadLanes16(g + l) + magnitudes<Absolute>(LoadLanes16(J + l)) * xr);
     }
   }
+  for (int b = 0; b < p.bodyCount; ++b)
+    applyInverseMass<Absolute>(p.invMass[(size_t)b], &columns_[(size_t)b * 12], &g_[(size_t)b * kSide],
+                               &u_[(size_t)b * kSide]);
 }
 
 // Inlined into the loops over rows that call it (a call per row cost as

@@ -4,20 +4,23 @@
 // (kea_lcp.h). Not installed.
 //
 // A product goes through the bodies: each body gathers its rows'
-//     u_b = sum over rows r on b, ascending, of (M_b^-1 J_r,b^T) x_r
-// (six values; M^-1 J^T per row side as sideMinvJt gives it, made once per
-// problem), and each asked-for row reads its bodies back:
+//     g_b = sum over rows r on b, ascending, of J_r,b^T x_r
+// (six values), takes u_b = M_b^-1 g_b (the linear part invMass g_lin,
+// the angular part as SideMinvJt in problem.h multiplies I^-1 by a
+// vector), and each asked-for row reads its bodies back:
 //     y_r = (J_r,b0 . u_b0 + J_r,b1 . u_b1) + softness_r x_r,
 // each six-term dot as (three linear terms) + (three angular terms), a
-// side without a body left out. That is about 24 multiply-adds a row where
-// the assembled matrix's row holds one entry per row sharing a body (36 in
-// a stacked box's contact row), and it needs no entry of A: a solve that
-// ends on a kept factor (Kea's stale solves) never assembles A.
+// side without a body left out. That is about 24 multiply-adds a row and
+// a dozen a body, where the assembled matrix's row holds one entry per row
+// sharing a body (36 in a stacked box's contact row), and it needs no
+// entry of A: a solve that ends on a kept factor (Kea's stale solves)
+// never assembles A. M^-1 is applied once per body and product, not once
+// per row side: nothing per row is made before the first product.
 //
-// absTimesMax is the same computation on absolute values, (|J| |M^-1 J^T|
-// |x|)_r + |softness_r x_r|: it bounds sum_j |A_ij| |x_j| (each |A_ij| is
-// at most the sum over the shared bodies of |J_i,b| |M_b^-1 J_j,b^T|) and
-// the rounding of times, which rounds those same terms.
+// absTimesMax is the same computation on absolute values, (|J| (|M^-1|
+// (|J|^T |x|)))_r + |softness_r x_r|: it bounds sum_j |A_ij| |x_j| (each
+// |A_ij| is at most the sum over the shared bodies of |J_i,b| |M_b^-1|
+// |J_j,b|^T) and the rounding of times, which rounds those same terms.
 //
 // Finite entries (entriesFinite, kea_lcp.h): every input is finite, and
 //     12 max|J| (max|J| max_b w_b) + max softness <= half the largest MeReal,
@@ -28,8 +31,9 @@
 // rounding. A body flung to the edge of the range breaks it, and Kea then
 // assembles A and checks it.
 //
-// Lazy: M^-1 J^T and the bound are made at the first call that needs them,
-// so a solve that assembles A first (no kept factor) pays nothing here.
+// Lazy: the bodies' inverse inertia by columns and the bound are made at
+// the first call that needs them, so a solve that assembles A first (no
+// kept factor) pays nothing here.
 //
 // assemble() is the caller's: the operator does not own A's layout.
 #pragma once
@@ -60,9 +64,9 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
   ~BodySpaceOperator() = default;
 
  private:
-  // minvJt_, u_ and entriesFinite_, once.
+  // The scratch, columns_ and entriesFinite_, once.
   void prepare() const;
-  // u = the per-body sums of the rows' (|M^-1 J^T|) x, of absolute values
+  // u = M^-1 (the per-body sums of the rows' J^T x), of absolute values
   // when Absolute.
   template <bool Absolute>
   void gather(const MeReal *x) const;
@@ -72,8 +76,8 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
 
   const BodySpaceProblem *p_;
   StepArena *arena_;
-  mutable std::span<MeReal> minvJt_;  // per row, as the problem's J (problem.h), zeros for no body
-  mutable std::span<MeReal> u_;       // kSide per body
+  mutable std::span<MeReal> columns_;  // per body, its I^-1 by columns, each padded to four values
+  mutable std::span<MeReal> g_, u_;    // kSide per body: the sums J^T x, and M^-1 times them
   mutable bool prepared_ = false, entriesFinite_ = false;
 };
 

@@ -34,10 +34,10 @@ struct PinnedHash {
 // clang-format off
 constexpr PinnedHash kPinned[] = {
     {"car",      300,  "0xac8e1fea8938895b", "0xf86235ce2ce39eee"},
-    {"topple",   600,  "0x3f1954263c8da3b3", "0x9a37a8914458c301"},
-    {"ragdoll",  600,  "0x3fbde210448da5e6", "0x22b831db3d2e9875"},
-    {"stack21",  1200, "0xfc53ae29bc740452", "0x30b995fb8faa1b45"},
-    {"pile1000", 60,   "0xeebe68a632b8f9ea", "0xcfa7a4fc509cc017"},
+    {"topple",   600,  "0xea99e98187883904", "0x6b9444b9263e59a9"},
+    {"ragdoll",  600,  "0x3ac1afe1f9df0bb7", "0x22b831db3d2e9875"},
+    {"stack21",  1200, "0x260d13f2e6cfa06e", "0xcb17dc142a24693f"},
+    {"pile1000", 60,   "0x66d2ba7970761e30", "0xf83e22ca2cdf5ac1"},
 };
 // clang-format on
 

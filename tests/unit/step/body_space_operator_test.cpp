@@ -1,8 +1,9 @@
 // The body-space operator (body_space_operator.h) on random problems with
 // the step's structure (rows on two bodies, rows on one body and the
 // world): its product is the sum that header documents, bit for bit, with
-// M^-1 J^T as problem.h's SideMinvJt gives it and the rows' J read in
-// problem.h's layout; absTimesMax bounds every row of it; and its
+// M^-1 applied to each body's sum as problem.h's SideMinvJt applies it and
+// the rows' J read in problem.h's layout; absTimesMax bounds every row of
+// |A| |x|, A formed entry by entry; and its
 // finiteness verdict refuses a non-finite or huge J or softness on a side
 // with a body, and ignores J on a side without one (no reader uses it).
 #include <gtest/gtest.h>
@@ -92,33 +93,62 @@ Arrays RandomProblem(std::mt19937 &rng, int bodies, int rows) {
   return a;
 }
 
-// The product as body_space_operator.h defines it, in scalars: u_b summed
-// over b's rows in ascending order, each row's six-term dots as (linear)
-// + (angular), side 0 then side 1, then + softness x.
+const MeReal *SideJ(const Arrays &a, int r, int side) {
+  return &a.J[(size_t)r * kRowValues + (size_t)side * kSideValues];
+}
+
+int BodyOf(const Arrays &a, int r, int side) { return side == 0 ? a.body0[(size_t)r] : a.body1[(size_t)r]; }
+
+// The product as body_space_operator.h defines it, in scalars: g_b summed
+// over b's rows in ascending order, u_b = M_b^-1 g_b as SideMinvJt
+// multiplies, each row's six-term dots as (linear) + (angular), side 0
+// then side 1, then + softness x.
 std::vector<MeReal> DocumentedProduct(const Arrays &a, const std::vector<MeReal> &x) {
-  std::vector<MeReal> u((size_t)a.bodies * 6, 0);
-  auto sideJ = [&](int r, int side) { return &a.J[(size_t)r * kRowValues + (size_t)side * kSideValues]; };
+  std::vector<MeReal> g((size_t)a.bodies * 6, 0), u((size_t)a.bodies * 6);
   for (int r = 0; r < a.rows; ++r)
     for (int side = 0; side < 2; ++side) {
-      const int b = side == 0 ? a.body0[(size_t)r] : a.body1[(size_t)r];
+      const int b = BodyOf(a, r, side);
       if (b < 0) continue;
-      MeReal mj[6];
-      SideMinvJt(a.invMass[(size_t)b], &a.invInertia[(size_t)b * 9], sideJ(r, side), mj);
-      for (int c = 0; c < 6; ++c) u[(size_t)b * 6 + (size_t)c] += mj[c] * x[(size_t)r];
+      for (int c = 0; c < 6; ++c) g[(size_t)b * 6 + (size_t)c] += SideJ(a, r, side)[c] * x[(size_t)r];
     }
+  for (int b = 0; b < a.bodies; ++b)
+    SideMinvJt(a.invMass[(size_t)b], &a.invInertia[(size_t)b * 9], &g[(size_t)b * 6], &u[(size_t)b * 6]);
   std::vector<MeReal> y((size_t)a.rows);
   for (int r = 0; r < a.rows; ++r) {
     MeReal sum = 0;
     for (int side = 0; side < 2; ++side) {
-      const int b = side == 0 ? a.body0[(size_t)r] : a.body1[(size_t)r];
+      const int b = BodyOf(a, r, side);
       if (b < 0) continue;
-      const MeReal *J = sideJ(r, side), *ub = &u[(size_t)b * 6];
+      const MeReal *J = SideJ(a, r, side), *ub = &u[(size_t)b * 6];
       const MeReal d = (J[0] * ub[0] + J[1] * ub[1] + J[2] * ub[2]) + (J[3] * ub[3] + J[4] * ub[4] + J[5] * ub[5]);
       sum = side == 0 ? d : sum + d;
     }
     y[(size_t)r] = sum + a.softness[(size_t)r] * x[(size_t)r];
   }
   return y;
+}
+
+// max_i sum_j |A_ij| |x_j| with A = J M^-1 J^T + diag(softness) formed
+// entry by entry in double precision.
+double LargestAbsProduct(const Arrays &a, const std::vector<MeReal> &x) {
+  double largest = 0;
+  for (int i = 0; i < a.rows; ++i) {
+    double sum = std::fabs((double)a.softness[(size_t)i] * (double)x[(size_t)i]);
+    for (int j = 0; j < a.rows; ++j) {
+      double entry = 0;
+      for (int si = 0; si < 2; ++si)
+        for (int sj = 0; sj < 2; ++sj) {
+          const int b = BodyOf(a, i, si);
+          if (b < 0 || b != BodyOf(a, j, sj)) continue;
+          MeReal mj[6];
+          SideMinvJt(a.invMass[(size_t)b], &a.invInertia[(size_t)b * 9], SideJ(a, j, sj), mj);
+          for (int c = 0; c < 6; ++c) entry += (double)SideJ(a, i, si)[c] * (double)mj[c];
+        }
+      sum += std::fabs(entry) * std::fabs((double)x[(size_t)j]);
+    }
+    largest = std::max(largest, sum);
+  }
+  return largest;
 }
 
 bool SameBits(MeReal a, MeReal b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -157,10 +187,10 @@ TEST(BodySpaceOperator, TheProductIsTheDocumentedSumBitForBit) {
     op.times(some.data(), some.size(), x.data(), ySome.data());
     for (size_t k = 0; k < some.size(); ++k) EXPECT_TRUE(SameBits(ySome[k], expected[(size_t)some[k]])) << trial;
 
-    // absTimesMax bounds every row of the product.
-    MeReal largest = 0;
-    for (MeReal v : y) largest = std::max(largest, std::fabs(v));
-    EXPECT_GE(op.absTimesMax(nullptr, (size_t)a.rows, x.data()), largest) << trial;
+    // absTimesMax bounds every row of |A| |x| (up to its own rounding, a
+    // few units in the last place), hence every row of the product.
+    const double bound = op.absTimesMax(nullptr, (size_t)a.rows, x.data());
+    EXPECT_GE(bound * (1 + 16 * (double)ME_REAL_EPSILON), LargestAbsProduct(a, x)) << trial;
     EXPECT_TRUE(op.entriesFinite()) << trial;
   }
 }
