@@ -253,6 +253,10 @@ struct KeaResult {
  *  - absTimesMax: the largest over those rows of a bound B_i >= sum_j
  *    |A_ij| |x_j| that also bounds times' rounding, as sum_j |A_ij x_j|
  *    does for a row sum (for a product J W J^T: (|J| |W| |J^T| |x|)_i).
+ *  - timesAndAbsTimesMax: times(rows, count, x, y), returning
+ *    absTimesMax(rows, count, x), bit for bit as the two calls; an
+ *    operator may override it to do both in one pass (the default makes
+ *    the two calls).
  *  - assemble: fills the problem's val with A's entries in the CSR layout
  *    (exactly symmetric); idempotent. Until it is called val may hold
  *    anything, and the solve does not read it.
@@ -265,6 +269,10 @@ class SparseLcpOperator {
  public:
   virtual void times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const = 0;
   virtual MeReal absTimesMax(const int *rows, std::size_t count, const MeReal *x) const = 0;
+  virtual MeReal timesAndAbsTimesMax(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const {
+    times(rows, count, x, y);
+    return absTimesMax(rows, count, x);
+  }
   virtual void assemble() const = 0;
   virtual bool entriesFinite() const = 0;
 

@@ -18,6 +18,13 @@ using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
 
 std::size_t U(int i) { return static_cast<std::size_t>(i); }
 
+/* max_a |x_a| (0 for none; a NaN is passed over, as std::max passes it). */
+MeReal LargestMagnitude(std::span<const MeReal> x) {
+  MeReal largest = 0;
+  for (MeReal e : x) largest = std::max(largest, std::fabs(e));
+  return largest;
+}
+
 /* y[a] = (A x)_i for i = rows[a] (i = a when rows is null), a < count:
  * through the problem's operator when it has one, else the stored entries
  * of CSR row i. */
@@ -256,9 +263,12 @@ const std::vector<int> &SparseBackend::factorOrder() const {
   return factor_ == Factor::Envelope ? naturalRows_ : factor_ == Factor::BandEnvelope ? bandRows_ : orderedRows_;
 }
 
-/* y = (A + eps I)_FF x, the free rows in the order `rows`. Leaves x
+/* y = (A + eps I)_FF x, the free rows in the order `rows`; with `scale`,
+ * also *scale = productScale(rows, x), in the same pass as the product
+ * when an operator can (SparseLcpOperator::timesAndAbsTimesMax). Leaves x
  * scattered in cgFull_ (for productScale). */
-void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y) {
+void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y,
+                                 MeReal *scale) {
   /* y = (A + eps I)_FF x (y must not overlap x). x scattered to all n rows
    * (zero on the clamped ones): then every stored entry multiplies without
    * a test. */
@@ -266,7 +276,13 @@ void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const M
   const std::size_t m = rows.size();
   cgFull_.assign(static_cast<std::size_t>(p.n), MeReal(0));
   for (std::size_t a = 0; a < m; ++a) cgFull_[U(rows[a])] = x[a];
-  RowsTimes(*kernels_, p, rows.data(), m, cgFull_.data(), y.data());
+  if (scale && p.op) {
+    const MeReal bound = p.op->timesAndAbsTimesMax(rows.data(), m, cgFull_.data(), y.data());
+    *scale = bound + std::fabs(eps_) * LargestMagnitude(x);
+  } else {
+    RowsTimes(*kernels_, p, rows.data(), m, cgFull_.data(), y.data());
+    if (scale) *scale = productScale(rows, x);
+  }
   /* Every row free: the product is A times the whole vector, which the
    * residual of the same lambda reuses (productOf). */
   productValid_ = p.op && m == U(p.n);
@@ -283,11 +299,7 @@ void SparseBackend::multiplyFree(const std::vector<int> &rows, std::span<const M
  * which scattered x into cgFull_. */
 MeReal SparseBackend::productScale(const std::vector<int> &rows, std::span<const MeReal> x) const {
   const SparseLcpProblem &p = *p_;
-  if (p.op) {
-    MeReal largestX = 0;
-    for (MeReal e : x) largestX = std::max(largestX, std::fabs(e));
-    return p.op->absTimesMax(rows.data(), rows.size(), cgFull_.data()) + std::fabs(eps_) * largestX;
-  }
+  if (p.op) return p.op->absTimesMax(rows.data(), rows.size(), cgFull_.data()) + std::fabs(eps_) * LargestMagnitude(x);
   MeReal scale = 0;
   for (std::size_t a = 0; a < rows.size(); ++a) {
     const auto i = U(rows[a]);
@@ -366,13 +378,19 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, c
   /* The true residual into cgR_; whether it is accepted. The rounding
    * scale is only needed when the residual is above the target, and is
    * taken once, at the first such iterate: the later ones differ from it
-   * by a correction far below its size. */
+   * by a correction far below its size. A start from the impulses is
+   * almost never within the target, so its scale is taken with its
+   * product, in one pass; any other start's only when needed. */
+  bool first = true;
   auto converged = [&]() {
-    multiplyFree(rows, x_, cgQ_);
+    MeReal scale = 0;
+    const bool scaleNow = first && start == StaleStart::Impulses;
+    first = false;
+    multiplyFree(rows, x_, cgQ_, scaleNow ? &scale : nullptr);
     for (std::size_t a = 0; a < m; ++a) cgR_[a] = rhs_[a] - cgQ_[a];
     const MeReal residual = largest(cgR_);
     if (!(residual > target_)) return true;
-    if (!scaled) accept = std::max(target_, 4 * ME_REAL_EPSILON * (productScale(rows, x_) + rhsSize));
+    if (!scaled) accept = std::max(target_, 4 * ME_REAL_EPSILON * ((scaleNow ? scale : productScale(rows, x_)) + rhsSize));
     scaled = true;
     return !(residual > accept);
   };

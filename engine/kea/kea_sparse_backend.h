@@ -273,7 +273,8 @@ class SparseBackend {
   void rememberFactor();
   void keepDenseFactor();
   const std::vector<int> &factorOrder() const;
-  void multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y);
+  void multiplyFree(const std::vector<int> &rows, std::span<const MeReal> x, std::span<MeReal> y,
+                    MeReal *scale = nullptr);
   MeReal productScale(const std::vector<int> &rows, std::span<const MeReal> x) const;
   bool productOf(std::span<const MeReal> lambda) const;
   std::span<const MeReal> values() const;

@@ -168,20 +168,51 @@ void BodySpaceOperator::gather(const MeReal *x) const {
                                &u_[(size_t)b * kSide]);
 }
 
+// Each sum as gather<false> and gather<true> make it: the same terms added
+// in the same order.
+void BodySpaceOperator::gatherBoth(const MeReal *x) const {
+  const BodySpaceProblem &p = *p_;
+  if (gAbs_.empty() && p.bodyCount > 0) {
+    gAbs_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
+    uAbs_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
+  }
+  std::fill(g_.begin(), g_.end(), MeReal(0));
+  std::fill(gAbs_.begin(), gAbs_.end(), MeReal(0));
+  for (int r = 0; r < p.rowCount; ++r) {
+    const MeReal xr = x[r], xrAbs = std::fabs(x[r]);
+    const int body[2] = {p.body0[(size_t)r], p.body1[(size_t)r]};
+    for (int side = 0; side < 2; ++side) {
+      if (body[side] < 0) continue;
+      MeReal *g = &g_[(size_t)body[side] * kSide], *gAbs = &gAbs_[(size_t)body[side] * kSide];
+      const MeReal *J = sideJ(p, r, side);
+      for (std::size_t l = 0; l < kSide; l += kPerLanes) {
+        const Lanes j = LoadLanes16(J + l);
+        StoreLanes16(g + l, LoadLanes16(g + l) + j * xr);
+        StoreLanes16(gAbs + l, LoadLanes16(gAbs + l) + magnitudes<true>(j) * xrAbs);
+      }
+    }
+  }
+  for (int b = 0; b < p.bodyCount; ++b) {
+    const MeReal *columns = &columns_[(size_t)b * 12];
+    applyInverseMass<false>(p.invMass[(size_t)b], columns, &g_[(size_t)b * kSide], &u_[(size_t)b * kSide]);
+    applyInverseMass<true>(p.invMass[(size_t)b], columns, &gAbs_[(size_t)b * kSide], &uAbs_[(size_t)b * kSide]);
+  }
+}
+
 // Inlined into the loops over rows that call it (a call per row cost as
 // much as the row's arithmetic).
 template <bool Absolute>
-[[gnu::always_inline]] inline MeReal BodySpaceOperator::rowDot(int r) const {
+[[gnu::always_inline]] inline MeReal BodySpaceOperator::rowDot(int r, const MeReal *u) const {
   const BodySpaceProblem &p = *p_;
   const int body[2] = {p.body0[(size_t)r], p.body1[(size_t)r]};
   MeReal sum = 0;
   for (int side = 0; side < 2; ++side) {
     if (body[side] < 0) continue;
     const MeReal *J = sideJ(p, r, side);
-    const MeReal *u = &u_[(size_t)body[side] * kSide];
+    const MeReal *ub = &u[(size_t)body[side] * kSide];
     MeReal t[kSide];
     for (std::size_t l = 0; l < kSide; l += kPerLanes)
-      StoreLanes16(t + l, magnitudes<Absolute>(LoadLanes16(J + l)) * LoadLanes16(u + l));
+      StoreLanes16(t + l, magnitudes<Absolute>(LoadLanes16(J + l)) * LoadLanes16(ub + l));
     const MeReal d = (t[0] + t[1] + t[2]) + (t[3] + t[4] + t[5]);
     sum = side == 0 ? d : sum + d;
   }
@@ -193,7 +224,7 @@ void BodySpaceOperator::times(const int *rows, std::size_t count, const MeReal *
   gather<false>(x);
   for (std::size_t a = 0; a < count; ++a) {
     const int r = rows ? rows[a] : (int)a;
-    y[a] = rowDot<false>(r) + p_->softness[(size_t)r] * x[r];
+    y[a] = rowDot<false>(r, u_.data()) + p_->softness[(size_t)r] * x[r];
   }
 }
 
@@ -203,7 +234,20 @@ MeReal BodySpaceOperator::absTimesMax(const int *rows, std::size_t count, const 
   MeReal largest = 0;
   for (std::size_t a = 0; a < count; ++a) {
     const int r = rows ? rows[a] : (int)a;
-    largest = std::max(largest, rowDot<true>(r) + std::fabs(p_->softness[(size_t)r] * x[r]));
+    largest = std::max(largest, rowDot<true>(r, u_.data()) + std::fabs(p_->softness[(size_t)r] * x[r]));
+  }
+  return largest;
+}
+
+MeReal BodySpaceOperator::timesAndAbsTimesMax(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const {
+  prepare();
+  gatherBoth(x);
+  MeReal largest = 0;
+  for (std::size_t a = 0; a < count; ++a) {
+    const int r = rows ? rows[a] : (int)a;
+    const MeReal softX = p_->softness[(size_t)r] * x[r];
+    y[a] = rowDot<false>(r, u_.data()) + softX;
+    largest = std::max(largest, rowDot<true>(r, uAbs_.data()) + std::fabs(softX));
   }
   return largest;
 }

@@ -57,6 +57,8 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
 
   void times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const override;
   MeReal absTimesMax(const int *rows, std::size_t count, const MeReal *x) const override;
+  // Both in one pass over the rows and bodies: the same bits as the two.
+  MeReal timesAndAbsTimesMax(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const override;
   bool entriesFinite() const override;
 
  protected:
@@ -70,14 +72,19 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
   // when Absolute.
   template <bool Absolute>
   void gather(const MeReal *x) const;
-  // Row r's (|J|) . u over its bodies.
+  // gather<false> into u_ and gather<true> into uAbs_, in one pass over
+  // the rows.
+  void gatherBoth(const MeReal *x) const;
+  // Row r's (|J|) . u over its bodies, u kSide values per body (u_ or
+  // uAbs_).
   template <bool Absolute>
-  MeReal rowDot(int r) const;
+  MeReal rowDot(int r, const MeReal *u) const;
 
   const BodySpaceProblem *p_;
   StepArena *arena_;
   mutable std::span<MeReal> columns_;  // per body, its I^-1 by columns, each padded to four values
   mutable std::span<MeReal> g_, u_;    // kSide per body: the sums J^T x, and M^-1 times them
+  mutable std::span<MeReal> gAbs_, uAbs_;  // the same of absolute values (gatherBoth), made when first needed
   mutable bool prepared_ = false, entriesFinite_ = false;
 };
 

@@ -192,6 +192,16 @@ TEST(BodySpaceOperator, TheProductIsTheDocumentedSumBitForBit) {
     const double bound = op.absTimesMax(nullptr, (size_t)a.rows, x.data());
     EXPECT_GE(bound * (1 + 16 * (double)ME_REAL_EPSILON), LargestAbsProduct(a, x)) << trial;
     EXPECT_TRUE(op.entriesFinite()) << trial;
+
+    // Both in one pass: the same bits as the two calls.
+    std::vector<MeReal> yBoth((size_t)a.rows);
+    const MeReal both = op.timesAndAbsTimesMax(nullptr, (size_t)a.rows, x.data(), yBoth.data());
+    EXPECT_TRUE(SameBits(both, op.absTimesMax(nullptr, (size_t)a.rows, x.data()))) << trial;
+    for (int r = 0; r < a.rows; ++r) EXPECT_TRUE(SameBits(yBoth[(size_t)r], y[(size_t)r])) << trial << " row " << r;
+    std::vector<MeReal> ySomeBoth(some.size());
+    const MeReal someBoth = op.timesAndAbsTimesMax(some.data(), some.size(), x.data(), ySomeBoth.data());
+    EXPECT_TRUE(SameBits(someBoth, op.absTimesMax(some.data(), some.size(), x.data()))) << trial;
+    for (size_t k = 0; k < some.size(); ++k) EXPECT_TRUE(SameBits(ySomeBoth[k], ySome[k])) << trial;
   }
 }
 
