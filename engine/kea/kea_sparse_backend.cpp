@@ -3,6 +3,7 @@
 #include "kea_sparse_backend.h"
 
 #include "kea_activeset_core.h"
+#include "lanes16.h"
 
 #include <Eigen/OrderingMethods>
 
@@ -17,6 +18,35 @@ namespace {
 using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
 
 std::size_t U(int i) { return static_cast<std::size_t>(i); }
+
+/* max_a |v_a|, or infinity when some v_a is not finite (so that a
+ * non-finite residual is never accepted). A maximum is exact in any order,
+ * so lanes give the scalar loop's value. */
+MeReal LargestOrInfinite(std::span<const MeReal> v) {
+  using platform::Lanes16;
+  constexpr std::size_t kLanes = platform::kPerLanes16;
+  const Lanes16 limit = Lanes16{} + ME_REAL_MAX;
+  Lanes16 big{};
+  auto finite = big == big; /* all lanes true; false for a NaN or an infinity seen */
+  std::size_t a = 0;
+  for (; a + kLanes <= v.size(); a += kLanes) {
+    Lanes16 x = platform::LoadLanes16(v.data() + a);
+    x = x < 0 ? -x : x;
+    finite &= x <= limit;
+    big = x > big ? x : big;
+  }
+  MeReal largest = 0;
+  bool allFinite = true;
+  for (std::size_t c = 0; c < kLanes; ++c) {
+    largest = std::max(largest, big[c]);
+    allFinite = allFinite && finite[c] != 0;
+  }
+  for (; a < v.size(); ++a) {
+    allFinite = allFinite && std::isfinite(v[a]);
+    largest = std::max(largest, std::fabs(v[a]));
+  }
+  return allFinite ? largest : std::numeric_limits<MeReal>::infinity();
+}
 
 /* max_a |x_a| (0 for none; a NaN is passed over, as std::max passes it). */
 MeReal LargestMagnitude(std::span<const MeReal> x) {
@@ -358,17 +388,7 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, c
   cgZ_.resize(m);
   cgD_.resize(m);
   cgQ_.resize(m);
-  /* The largest |component|, infinite when one is not finite (so that a
-   * non-finite residual is never accepted). */
-  auto largest = [](const std::vector<MeReal> &v) {
-    MeReal big = 0;
-    bool finite = true;
-    for (MeReal e : v) {
-      finite &= std::isfinite(e);
-      big = std::max(big, std::fabs(e));
-    }
-    return finite ? big : std::numeric_limits<MeReal>::infinity();
-  };
+  auto largest = [](const std::vector<MeReal> &v) { return LargestOrInfinite(v); };
   auto dot = [this, m](const std::vector<MeReal> &a, const std::vector<MeReal> &b) {
     return platform::Dot(*kernels_, a.data(), b.data(), static_cast<int>(m));
   };
