@@ -46,6 +46,10 @@ void ComputeBounds(const RowView &p, std::span<const MeReal> lambda, std::vector
  * no allocation). */
 MeReal ComplementarityResidual(const RowView &p, std::span<const MeReal> lambda, std::span<const MeReal> w);
 
+/* max_a |v_a| (0 for none), or infinity when some v_a is NaN or infinite:
+ * a residual's size that a non-finite component never passes. */
+MeReal LargestOrInfinite(std::span<const MeReal> v);
+
 /* lambda (resized to n) = the warm start, or zeros without one. The warm
  * start may be lambda itself (a caller re-solving from its last result). */
 inline void InitialLambda(const KeaOptions &o, std::size_t n, std::vector<MeReal> &lambda) {

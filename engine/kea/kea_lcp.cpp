@@ -2,6 +2,7 @@
  * validation, bounds (including friction coupling), the residual, and the
  * dispatching entry point. */
 #include "kea_internal.h"
+#include "lanes16.h"
 
 #include "MeMessage.h"
 
@@ -48,6 +49,34 @@ bool AllFinite(std::span<const MeReal> v) {
 }
 
 }  // namespace
+
+/* See kea_internal.h. A maximum is exact in any order, so lanes give the
+ * scalar loop's value. */
+MeReal LargestOrInfinite(std::span<const MeReal> v) {
+  using platform::Lanes16;
+  constexpr std::size_t kLanes = platform::kPerLanes16;
+  const Lanes16 limit = Lanes16{} + ME_REAL_MAX;
+  Lanes16 big{};
+  auto finite = big == big; /* all lanes true; false for a NaN or an infinity seen */
+  std::size_t a = 0;
+  for (; a + kLanes <= v.size(); a += kLanes) {
+    Lanes16 x = platform::LoadLanes16(v.data() + a);
+    x = x < MeReal(0) ? -x : x;
+    finite &= x <= limit;
+    big = x > big ? x : big;
+  }
+  MeReal largest = 0;
+  bool allFinite = true;
+  for (std::size_t c = 0; c < kLanes; ++c) {
+    largest = std::max(largest, big[c]);
+    allFinite = allFinite && finite[c] != 0;
+  }
+  for (; a < v.size(); ++a) {
+    allFinite = allFinite && std::isfinite(v[a]);
+    largest = std::max(largest, std::fabs(v[a]));
+  }
+  return allFinite ? largest : std::numeric_limits<MeReal>::infinity();
+}
 
 MeReal ComplementarityResidual(const RowView &p, std::span<const MeReal> lambda, std::span<const MeReal> w) {
   const auto n = static_cast<std::size_t>(p.n);

@@ -240,9 +240,10 @@ struct KeaResult {
  * (active-set method) decides once per call: when the solve starts on a
  * kept factor (factor memory, the same sparsity) and entriesFinite() holds,
  * every product with A in that call (a cold retry included) goes through
- * times and absTimesMax, and A's entries are read only after assemble(),
- * when the solve factorises. Otherwise it calls assemble() first and solves
- * with the stored values, checked as usual. One call never mixes the two.
+ * times, absTimesMax and timesAndAbsTimesMax, and A's entries are read
+ * only after assemble(), when the solve factorises. Otherwise it calls
+ * assemble() first and solves with the stored values, checked as usual.
+ * One call never mixes the two.
  * Contract:
  *  - times: y[a] = (A x)_i with i = rows[a] (i = a when rows is null) for
  *    a < count; x holds n values; y does not overlap x. Deterministic: the

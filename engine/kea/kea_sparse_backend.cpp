@@ -3,7 +3,6 @@
 #include "kea_sparse_backend.h"
 
 #include "kea_activeset_core.h"
-#include "lanes16.h"
 
 #include <Eigen/OrderingMethods>
 
@@ -18,35 +17,6 @@ namespace {
 using Vec = Eigen::Matrix<MeReal, Eigen::Dynamic, 1>;
 
 std::size_t U(int i) { return static_cast<std::size_t>(i); }
-
-/* max_a |v_a|, or infinity when some v_a is not finite (so that a
- * non-finite residual is never accepted). A maximum is exact in any order,
- * so lanes give the scalar loop's value. */
-MeReal LargestOrInfinite(std::span<const MeReal> v) {
-  using platform::Lanes16;
-  constexpr std::size_t kLanes = platform::kPerLanes16;
-  const Lanes16 limit = Lanes16{} + ME_REAL_MAX;
-  Lanes16 big{};
-  auto finite = big == big; /* all lanes true; false for a NaN or an infinity seen */
-  std::size_t a = 0;
-  for (; a + kLanes <= v.size(); a += kLanes) {
-    Lanes16 x = platform::LoadLanes16(v.data() + a);
-    x = x < 0 ? -x : x;
-    finite &= x <= limit;
-    big = x > big ? x : big;
-  }
-  MeReal largest = 0;
-  bool allFinite = true;
-  for (std::size_t c = 0; c < kLanes; ++c) {
-    largest = std::max(largest, big[c]);
-    allFinite = allFinite && finite[c] != 0;
-  }
-  for (; a < v.size(); ++a) {
-    allFinite = allFinite && std::isfinite(v[a]);
-    largest = std::max(largest, std::fabs(v[a]));
-  }
-  return allFinite ? largest : std::numeric_limits<MeReal>::infinity();
-}
 
 /* max_a |x_a| (0 for none; a NaN is passed over, as std::max passes it). */
 MeReal LargestMagnitude(std::span<const MeReal> x) {
@@ -353,7 +323,9 @@ namespace {
  * (kSolveProducts): the factor's start costs a solve, the impulses' none;
  * the first residual a product; each iteration a solve and a product; and
  * a solve that iterates two products more (the rounding scale, and the
- * true residual that accepts it). */
+ * true residual that accepts it). The scale of a start from the impulses
+ * is taken with its first product, for less than a product; the model
+ * still counts a whole one. */
 MeReal StaleStartCost(bool fromFactor, MeReal iterations) {
   constexpr MeReal kSolve = SparseBackend::kSolveProducts;
   return (fromFactor ? kSolve : 0) + 1 + iterations * (kSolve + 1) + 2 * std::min(iterations, MeReal(1));
@@ -399,18 +371,22 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, c
    * scale is only needed when the residual is above the target, and is
    * taken once, at the first such iterate: the later ones differ from it
    * by a correction far below its size. A start from the impulses is
-   * almost never within the target, so its scale is taken with its
-   * product, in one pass; any other start's only when needed. */
+   * almost never within the target, so through an operator its scale is
+   * taken with its product, in one pass (timesAndAbsTimesMax); any other
+   * start's only when needed. */
   bool first = true;
   auto converged = [&]() {
     MeReal scale = 0;
-    const bool scaleNow = first && start == StaleStart::Impulses;
+    const bool scaleNow = first && start == StaleStart::Impulses && p_->op;
     first = false;
     multiplyFree(rows, x_, cgQ_, scaleNow ? &scale : nullptr);
     for (std::size_t a = 0; a < m; ++a) cgR_[a] = rhs_[a] - cgQ_[a];
     const MeReal residual = largest(cgR_);
     if (!(residual > target_)) return true;
-    if (!scaled) accept = std::max(target_, 4 * ME_REAL_EPSILON * ((scaleNow ? scale : productScale(rows, x_)) + rhsSize));
+    if (!scaled) {
+      const MeReal productSize = scaleNow ? scale : productScale(rows, x_);
+      accept = std::max(target_, 4 * ME_REAL_EPSILON * (productSize + rhsSize));
+    }
     scaled = true;
     return !(residual > accept);
   };

@@ -24,9 +24,10 @@
 //
 // Finite entries (entriesFinite, kea_lcp.h): every input is finite, and
 //     12 max|J| (max|J| max_b w_b) + max softness <= half the largest MeReal,
-// with w_b = max(1/m_b, 3 max|I_b^-1|): each component of M_b^-1 J^T is
-// at most w_b max|J| (also kept within half the range), and an entry of A
-// sums at most 12 products |J_i,b,c| |(M_b^-1 J_j,b^T)_c| (two shared
+// with w_b = max(1/m_b, 3 max|I_b^-1|): each component of M_b^-1 J^T (as
+// the assembly of A forms it) is at most w_b max|J| (also kept within half
+// the range), and an entry of A sums at most 12 products |J_i,b,c|
+// |(M_b^-1 J_j,b^T)_c| (two shared
 // bodies, six components) and the softness; the half leaves room for
 // rounding. A body flung to the edge of the range breaks it, and Kea then
 // assembles A and checks it.
@@ -66,7 +67,8 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
   ~BodySpaceOperator() = default;
 
  private:
-  // The scratch, columns_ and entriesFinite_, once.
+  // g_, u_, columns_ and entriesFinite_, once (gAbs_ and uAbs_ are taken
+  // by the first gatherBoth).
   void prepare() const;
   // u = M^-1 (the per-body sums of the rows' J^T x), of absolute values
   // when Absolute.
@@ -82,8 +84,8 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
 
   const BodySpaceProblem *p_;
   StepArena *arena_;
-  mutable std::span<MeReal> columns_;  // per body, its I^-1 by columns, each padded to four values
-  mutable std::span<MeReal> g_, u_;    // kSide per body: the sums J^T x, and M^-1 times them
+  mutable std::span<MeReal> columns_;      // per body, its I^-1 by columns, each padded to four values
+  mutable std::span<MeReal> g_, u_;        // kSide per body: the sums J^T x, and M^-1 times them
   mutable std::span<MeReal> gAbs_, uAbs_;  // the same of absolute values (gatherBoth), made when first needed
   mutable bool prepared_ = false, entriesFinite_ = false;
 };

@@ -1,6 +1,7 @@
 // Tests of the Kea boxed-LCP contract (engine/kea/kea_lcp.h).
 #include "kea_tolerance.h"
 #include "kea_lcp.h"
+#include "kea_internal.h"
 #include "kea_enumerate.h"
 #include "support/warning_capture.h"
 
@@ -9,6 +10,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -417,4 +419,37 @@ TEST(KeaLcp, CycleInTheActiveSetIsDetected) {
   EXPECT_TRUE(capture.saw("cycle has been detected"));
   ASSERT_EQ(r.lambda.size(), 1u);
   EXPECT_TRUE(std::isfinite(r.lambda[0]));
+}
+
+// The size of a residual (kea_internal.h): the largest |value|, exactly the
+// scalar loop's, or infinity once a value is NaN or infinite, at every
+// length (whole vector lanes and the rest).
+TEST(LargestOrInfinite, IsTheLargestMagnitudeOrInfinityWhenOneIsNotFinite) {
+  using karma::kea::detail::LargestOrInfinite;
+  const MeReal inf = std::numeric_limits<MeReal>::infinity();
+  const MeReal nan = std::numeric_limits<MeReal>::quiet_NaN();
+  EXPECT_EQ(LargestOrInfinite({}), MeReal(0));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-10, 10);
+  for (int n = 1; n <= 19; ++n) {
+    std::vector<MeReal> v((size_t)n);
+    for (MeReal &e : v) e = (MeReal)u(rng);
+    MeReal expected = 0;
+    for (MeReal e : v) expected = std::max(expected, std::fabs(e));
+    EXPECT_EQ(LargestOrInfinite(v), expected) << n;
+    for (int at = 0; at < n; ++at) {
+      for (MeReal bad : {nan, inf, -inf}) {
+        std::vector<MeReal> w = v;
+        w[(size_t)at] = bad;
+        EXPECT_EQ(LargestOrInfinite(w), inf) << n << " at " << at;
+      }
+      std::vector<MeReal> w = v;  // the largest magnitude, negative, at any place
+      w[(size_t)at] = -std::numeric_limits<MeReal>::max();
+      EXPECT_EQ(LargestOrInfinite(w), std::numeric_limits<MeReal>::max()) << n << " at " << at;
+    }
+    const std::vector<MeReal> zeros((size_t)n, -MeReal(0));  // -0 gives +0, as fabs does
+    const MeReal zero = LargestOrInfinite(zeros);
+    EXPECT_EQ(zero, MeReal(0));
+    EXPECT_FALSE(std::signbit(zero)) << n;
+  }
 }

@@ -61,8 +61,8 @@ struct Arrays {
 };
 
 // `rows` rows on `bodies` bodies: every row on a random body, a third of
-// them against the world (body1 = -1, whose J is junk that must not be
-// read), the rest on a second, different body.
+// them against the world (body1 = -1, whose J is NaN: any read of it
+// shows), the rest on a second, different body.
 Arrays RandomProblem(std::mt19937 &rng, int bodies, int rows) {
   std::uniform_real_distribution<double> u(-1, 1), positive(0.1, 2);
   std::uniform_int_distribution<int> body(0, bodies - 1), third(0, 2);
@@ -81,7 +81,9 @@ Arrays RandomProblem(std::mt19937 &rng, int bodies, int rows) {
     a.body0.push_back(b0);
     a.body1.push_back(b1);
     for (int side = 0; side < 2; ++side)
-      for (int c = 0; c < 6; ++c) a.J[(size_t)r * kRowValues + (size_t)side * kSideValues + (size_t)c] = (MeReal)u(rng);
+      for (int c = 0; c < 6; ++c)
+        a.J[(size_t)r * kRowValues + (size_t)side * kSideValues + (size_t)c] =
+            side == 1 && b1 < 0 ? std::numeric_limits<MeReal>::quiet_NaN() : (MeReal)u(rng);
     a.softness.push_back((MeReal)(0.01 * positive(rng)));
   }
   a.rhs.assign((size_t)rows, 0);
@@ -128,11 +130,43 @@ std::vector<MeReal> DocumentedProduct(const Arrays &a, const std::vector<MeReal>
   return y;
 }
 
-// max_i sum_j |A_ij| |x_j| with A = J M^-1 J^T + diag(softness) formed
+// absTimesMax as body_space_operator.h defines it, in scalars: the
+// product's sums on |J|, |x|, |M^-1| (SideMinvJt on |invMass|, |I^-1|), then
+// + |softness x|, the largest over the rows.
+MeReal DocumentedAbsTimesMax(const Arrays &a, const std::vector<MeReal> &x) {
+  std::vector<MeReal> g((size_t)a.bodies * 6, 0), u((size_t)a.bodies * 6);
+  for (int r = 0; r < a.rows; ++r)
+    for (int side = 0; side < 2; ++side) {
+      const int b = BodyOf(a, r, side);
+      if (b < 0) continue;
+      for (int c = 0; c < 6; ++c)
+        g[(size_t)b * 6 + (size_t)c] += std::fabs(SideJ(a, r, side)[c]) * std::fabs(x[(size_t)r]);
+    }
+  for (int b = 0; b < a.bodies; ++b) {
+    MeReal inertia[9];
+    for (int k = 0; k < 9; ++k) inertia[k] = std::fabs(a.invInertia[(size_t)b * 9 + (size_t)k]);
+    SideMinvJt(std::fabs(a.invMass[(size_t)b]), inertia, &g[(size_t)b * 6], &u[(size_t)b * 6]);
+  }
+  MeReal largest = 0;
+  for (int r = 0; r < a.rows; ++r) {
+    MeReal sum = 0;
+    for (int side = 0; side < 2; ++side) {
+      const int b = BodyOf(a, r, side);
+      if (b < 0) continue;
+      MeReal t[6];
+      for (int c = 0; c < 6; ++c) t[c] = std::fabs(SideJ(a, r, side)[c]) * u[(size_t)b * 6 + (size_t)c];
+      const MeReal d = (t[0] + t[1] + t[2]) + (t[3] + t[4] + t[5]);
+      sum = side == 0 ? d : sum + d;
+    }
+    largest = std::max(largest, sum + std::fabs(a.softness[(size_t)r] * x[(size_t)r]));
+  }
+  return largest;
+}
+
+// sum_j |A_ij| |x_j| of row i, with A = J M^-1 J^T + diag(softness) formed
 // entry by entry in double precision.
-double LargestAbsProduct(const Arrays &a, const std::vector<MeReal> &x) {
-  double largest = 0;
-  for (int i = 0; i < a.rows; ++i) {
+double AbsProductRow(const Arrays &a, const std::vector<MeReal> &x, int i) {
+  {
     double sum = std::fabs((double)a.softness[(size_t)i] * (double)x[(size_t)i]);
     for (int j = 0; j < a.rows; ++j) {
       double entry = 0;
@@ -146,9 +180,8 @@ double LargestAbsProduct(const Arrays &a, const std::vector<MeReal> &x) {
         }
       sum += std::fabs(entry) * std::fabs((double)x[(size_t)j]);
     }
-    largest = std::max(largest, sum);
+    return sum;
   }
-  return largest;
 }
 
 bool SameBits(MeReal a, MeReal b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -187,10 +220,15 @@ TEST(BodySpaceOperator, TheProductIsTheDocumentedSumBitForBit) {
     op.times(some.data(), some.size(), x.data(), ySome.data());
     for (size_t k = 0; k < some.size(); ++k) EXPECT_TRUE(SameBits(ySome[k], expected[(size_t)some[k]])) << trial;
 
-    // absTimesMax bounds every row of |A| |x| (up to its own rounding, a
-    // few units in the last place), hence every row of the product.
-    const double bound = op.absTimesMax(nullptr, (size_t)a.rows, x.data());
-    EXPECT_GE(bound * (1 + 16 * (double)ME_REAL_EPSILON), LargestAbsProduct(a, x)) << trial;
+    EXPECT_TRUE(SameBits(op.absTimesMax(nullptr, (size_t)a.rows, x.data()), DocumentedAbsTimesMax(a, x))) << trial;
+
+    // absTimesMax of each row alone bounds that row of |A| |x| (up to its
+    // own rounding, a few units in the last place), hence of the product.
+    for (int r = 0; r < a.rows; ++r) {
+      const double bound = op.absTimesMax(&r, 1, x.data());
+      EXPECT_GE(bound * (1 + 16 * (double)ME_REAL_EPSILON), AbsProductRow(a, x, r)) << trial << " row " << r;
+      EXPECT_GE(bound, std::fabs(y[(size_t)r])) << trial << " row " << r;
+    }
     EXPECT_TRUE(op.entriesFinite()) << trial;
 
     // Both in one pass: the same bits as the two calls.
@@ -203,6 +241,46 @@ TEST(BodySpaceOperator, TheProductIsTheDocumentedSumBitForBit) {
     EXPECT_TRUE(SameBits(someBoth, op.absTimesMax(some.data(), some.size(), x.data()))) << trial;
     for (size_t k = 0; k < some.size(); ++k) EXPECT_TRUE(SameBits(ySomeBoth[k], ySome[k])) << trial;
   }
+}
+
+// The fused call on the values where the two computations could part: x
+// with NaN, infinities and -0, and rows with no body on side 0.
+TEST(BodySpaceOperator, BothInOnePassAreTheTwoCallsOnSpecialValues) {
+  std::mt19937 rng(23);
+  Arrays a = RandomProblem(rng, 5, 17);
+  for (int r : {2, 9}) {  // side 0 without a body: its J is NaN, never read
+    a.body0[(size_t)r] = -1;
+    for (int c = 0; c < 6; ++c) a.J[(size_t)r * kRowValues + (size_t)c] = std::numeric_limits<MeReal>::quiet_NaN();
+  }
+  const MeReal inf = std::numeric_limits<MeReal>::infinity();
+  const std::vector<std::vector<MeReal>> specials = {
+      {-MeReal(0), MeReal(0), -MeReal(0)},  // the rest of x is random
+      {std::numeric_limits<MeReal>::quiet_NaN()},
+      {inf, -inf},
+      {std::numeric_limits<MeReal>::max(), -std::numeric_limits<MeReal>::denorm_min()}};
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (const std::vector<MeReal> &head : specials) {
+    std::vector<MeReal> x((size_t)a.rows);
+    for (MeReal &v : x) v = (MeReal)u(rng);
+    for (size_t k = 0; k < head.size(); ++k) x[3 * k + 1] = head[k];
+    StepArena arena;
+    const BodySpaceProblem p = a.problem();
+    const Operator op(p, arena);
+    std::vector<MeReal> y((size_t)a.rows), yBoth((size_t)a.rows);
+    op.times(nullptr, (size_t)a.rows, x.data(), y.data());
+    const MeReal separate = op.absTimesMax(nullptr, (size_t)a.rows, x.data());
+    const MeReal both = op.timesAndAbsTimesMax(nullptr, (size_t)a.rows, x.data(), yBoth.data());
+    EXPECT_TRUE(SameBits(both, separate)) << both << " vs " << separate;
+    for (int r = 0; r < a.rows; ++r) EXPECT_TRUE(SameBits(yBoth[(size_t)r], y[(size_t)r])) << "row " << r;
+  }
+  // With finite x, the rows without a body on side 0 read none of its NaN.
+  std::vector<MeReal> x((size_t)a.rows, (MeReal)0.5), y((size_t)a.rows);
+  StepArena arena;
+  const BodySpaceProblem p = a.problem();
+  const Operator op(p, arena);
+  op.times(nullptr, (size_t)a.rows, x.data(), y.data());
+  for (int r = 0; r < a.rows; ++r) EXPECT_TRUE(std::isfinite(y[(size_t)r])) << "row " << r;
+  EXPECT_TRUE(std::isfinite(op.timesAndAbsTimesMax(nullptr, (size_t)a.rows, x.data(), y.data())));
 }
 
 TEST(BodySpaceOperator, EntriesAreFiniteOnlyWhenEveryReadInputIsFiniteAndBounded) {
