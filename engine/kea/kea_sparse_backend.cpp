@@ -374,11 +374,10 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, c
    * almost never within the target, so through an operator its scale is
    * taken with its product, in one pass (timesAndAbsTimesMax); any other
    * start's only when needed. */
-  bool first = true;
   auto converged = [&]() {
+    /* !scaled: the first call (a later one follows a first that failed). */
     MeReal scale = 0;
-    const bool scaleNow = first && start == StaleStart::Impulses && p_->op;
-    first = false;
+    const bool scaleNow = !scaled && start == StaleStart::Impulses && p_->op;
     multiplyFree(rows, x_, cgQ_, scaleNow ? &scale : nullptr);
     for (std::size_t a = 0; a < m; ++a) cgR_[a] = rhs_[a] - cgQ_[a];
     const MeReal residual = largest(cgR_);

@@ -115,8 +115,7 @@ void BodySpaceOperator::prepare() const {
   if (prepared_) return;
   prepared_ = true;
   const BodySpaceProblem &p = *p_;
-  g_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
-  u_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
+  for (std::span<MeReal> *sums : {&g_, &u_, &gAbs_, &uAbs_}) *sums = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
   columns_ = arena_->take<MeReal>((size_t)p.bodyCount * 12);
   // |M_b^-1 J^T| <= w_b max|J| per component, w_b = max(1/m_b, 3 max|I_b^-1|).
   MeReal largestW = 0, largestSoftness = 0;
@@ -148,54 +147,33 @@ bool BodySpaceOperator::entriesFinite() const {
   return entriesFinite_;
 }
 
-template <bool Absolute>
+// The plain sums (Plain: g_, then u_) and the absolute ones (Absolute:
+// gAbs_, then uAbs_), each asked-for kind in one pass over the rows: the
+// same terms added in the same order whichever kinds are asked for.
+template <bool Plain, bool Absolute>
 void BodySpaceOperator::gather(const MeReal *x) const {
   const BodySpaceProblem &p = *p_;
-  std::fill(g_.begin(), g_.end(), MeReal(0));
-  for (int r = 0; r < p.rowCount; ++r) {
-    const MeReal xr = magnitude<Absolute>(x[r]);
-    const int body[2] = {p.body0[(size_t)r], p.body1[(size_t)r]};
-    for (int side = 0; side < 2; ++side) {
-      if (body[side] < 0) continue;
-      MeReal *g = &g_[(size_t)body[side] * kSide];
-      const MeReal *J = sideJ(p, r, side);
-      for (std::size_t l = 0; l < kSide; l += kPerLanes)
-        StoreLanes16(g + l, LoadLanes16(g + l) + magnitudes<Absolute>(LoadLanes16(J + l)) * xr);
-    }
-  }
-  for (int b = 0; b < p.bodyCount; ++b)
-    applyInverseMass<Absolute>(p.invMass[(size_t)b], &columns_[(size_t)b * 12], &g_[(size_t)b * kSide],
-                               &u_[(size_t)b * kSide]);
-}
-
-// Each sum as gather<false> and gather<true> make it: the same terms added
-// in the same order.
-void BodySpaceOperator::gatherBoth(const MeReal *x) const {
-  const BodySpaceProblem &p = *p_;
-  if (gAbs_.empty() && p.bodyCount > 0) {
-    gAbs_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
-    uAbs_ = arena_->take<MeReal>((size_t)p.bodyCount * kSide);
-  }
-  std::fill(g_.begin(), g_.end(), MeReal(0));
-  std::fill(gAbs_.begin(), gAbs_.end(), MeReal(0));
+  if constexpr (Plain) std::fill(g_.begin(), g_.end(), MeReal(0));
+  if constexpr (Absolute) std::fill(gAbs_.begin(), gAbs_.end(), MeReal(0));
   for (int r = 0; r < p.rowCount; ++r) {
     const MeReal xr = x[r], xrAbs = std::fabs(x[r]);
     const int body[2] = {p.body0[(size_t)r], p.body1[(size_t)r]};
     for (int side = 0; side < 2; ++side) {
       if (body[side] < 0) continue;
-      MeReal *g = &g_[(size_t)body[side] * kSide], *gAbs = &gAbs_[(size_t)body[side] * kSide];
+      MeReal *g = g_.data() + (size_t)body[side] * kSide, *gAbs = gAbs_.data() + (size_t)body[side] * kSide;
       const MeReal *J = sideJ(p, r, side);
       for (std::size_t l = 0; l < kSide; l += kPerLanes) {
         const Lanes j = LoadLanes16(J + l);
-        StoreLanes16(g + l, LoadLanes16(g + l) + j * xr);
-        StoreLanes16(gAbs + l, LoadLanes16(gAbs + l) + magnitudes<true>(j) * xrAbs);
+        if constexpr (Plain) StoreLanes16(g + l, LoadLanes16(g + l) + j * xr);
+        if constexpr (Absolute) StoreLanes16(gAbs + l, LoadLanes16(gAbs + l) + magnitudes<true>(j) * xrAbs);
       }
     }
   }
   for (int b = 0; b < p.bodyCount; ++b) {
     const MeReal *columns = &columns_[(size_t)b * 12];
-    applyInverseMass<false>(p.invMass[(size_t)b], columns, &g_[(size_t)b * kSide], &u_[(size_t)b * kSide]);
-    applyInverseMass<true>(p.invMass[(size_t)b], columns, &gAbs_[(size_t)b * kSide], &uAbs_[(size_t)b * kSide]);
+    const size_t at = (size_t)b * kSide;
+    if constexpr (Plain) applyInverseMass<false>(p.invMass[(size_t)b], columns, &g_[at], &u_[at]);
+    if constexpr (Absolute) applyInverseMass<true>(p.invMass[(size_t)b], columns, &gAbs_[at], &uAbs_[at]);
   }
 }
 
@@ -221,7 +199,7 @@ template <bool Absolute>
 
 void BodySpaceOperator::times(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const {
   prepare();
-  gather<false>(x);
+  gather<true, false>(x);
   for (std::size_t a = 0; a < count; ++a) {
     const int r = rows ? rows[a] : (int)a;
     y[a] = rowDot<false>(r, u_.data()) + p_->softness[(size_t)r] * x[r];
@@ -230,18 +208,18 @@ void BodySpaceOperator::times(const int *rows, std::size_t count, const MeReal *
 
 MeReal BodySpaceOperator::absTimesMax(const int *rows, std::size_t count, const MeReal *x) const {
   prepare();
-  gather<true>(x);
+  gather<false, true>(x);
   MeReal largest = 0;
   for (std::size_t a = 0; a < count; ++a) {
     const int r = rows ? rows[a] : (int)a;
-    largest = std::max(largest, rowDot<true>(r, u_.data()) + std::fabs(p_->softness[(size_t)r] * x[r]));
+    largest = std::max(largest, rowDot<true>(r, uAbs_.data()) + std::fabs(p_->softness[(size_t)r] * x[r]));
   }
   return largest;
 }
 
 MeReal BodySpaceOperator::timesAndAbsTimesMax(const int *rows, std::size_t count, const MeReal *x, MeReal *y) const {
   prepare();
-  gatherBoth(x);
+  gather<true, true>(x);
   MeReal largest = 0;
   for (std::size_t a = 0; a < count; ++a) {
     const int r = rows ? rows[a] : (int)a;

@@ -67,16 +67,12 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
   ~BodySpaceOperator() = default;
 
  private:
-  // g_, u_, columns_ and entriesFinite_, once (gAbs_ and uAbs_ are taken
-  // by the first gatherBoth).
+  // The scratch, columns_ and entriesFinite_, once.
   void prepare() const;
-  // u = M^-1 (the per-body sums of the rows' J^T x), of absolute values
-  // when Absolute.
-  template <bool Absolute>
+  // u_ = M^-1 (the per-body sums of the rows' J^T x) when Plain, uAbs_ the
+  // same of absolute values when Absolute, in one pass over the rows.
+  template <bool Plain, bool Absolute>
   void gather(const MeReal *x) const;
-  // gather<false> into u_ and gather<true> into uAbs_, in one pass over
-  // the rows.
-  void gatherBoth(const MeReal *x) const;
   // Row r's (|J|) . u over its bodies, u kSide values per body (u_ or
   // uAbs_).
   template <bool Absolute>
@@ -86,7 +82,7 @@ class BodySpaceOperator : public kea::SparseLcpOperator {
   StepArena *arena_;
   mutable std::span<MeReal> columns_;      // per body, its I^-1 by columns, each padded to four values
   mutable std::span<MeReal> g_, u_;        // kSide per body: the sums J^T x, and M^-1 times them
-  mutable std::span<MeReal> gAbs_, uAbs_;  // the same of absolute values (gatherBoth), made when first needed
+  mutable std::span<MeReal> gAbs_, uAbs_;  // the same of absolute values
   mutable bool prepared_ = false, entriesFinite_ = false;
 };
 
