@@ -6,7 +6,9 @@
 // naming the platform backend the scene's world steps on (KARMA_PLATFORM
 // chooses it). `--iterative-rows N` (anywhere after the scene) sets the
 // world's MdtWorldSetKeaIterativeRows (1: every partition iterative); the
-// solves column then counts the iterative solver's sweeps too.
+// solves column then counts the iterative solver's sweeps too. `--sleep`
+// turns the world's auto-disable on at its default thresholds (the anchor
+// scenes turn it off); the bodies column counts the bodies stepped.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -18,9 +20,12 @@ int main(int argc, char **argv) {
   using namespace karma::scenes;
   std::vector<char *> args;
   int iterativeRows = -1;
+  bool sleep = false;
   for (int i = 0; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--iterative-rows") && i + 1 < argc)
       iterativeRows = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--sleep"))
+      sleep = true;
     else
       args.push_back(argv[i]);
   }
@@ -35,25 +40,26 @@ int main(int argc, char **argv) {
                                        : !std::strcmp(name, "pile10k")  ? MakePile10k()
                                                                         : nullptr;
   if (!scene) {
-    std::fprintf(stderr, "usage: %s car|topple|stack21|ragdoll|pile1000|pile10k [FIRST [LAST]] [--iterative-rows N]\n",
+    std::fprintf(stderr, "usage: %s car|topple|stack21|ragdoll|pile1000|pile10k [FIRST [LAST]] [--iterative-rows N] [--sleep]\n",
                  argv[0]);
     return 2;
   }
   if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene->world(), iterativeRows);
+  if (sleep) MdtWorldSetAutoDisable(scene->world(), 1);
   const int first = argc > 2 ? std::atoi(argv[2]) : 0;
   const int last = argc > 3 ? std::atoi(argv[3]) : scene->steps();
   std::printf("# platform backend: %s\n", MdtWorldGetPlatformName(scene->world()));
   std::printf(
       "step partitions rows solves factorizations stale_solves friction_rounds unsolved cycles residual "
-      "iterative_partitions warm_starts\n");
+      "iterative_partitions warm_starts bodies\n");
   for (int i = 0; i < last; ++i) {
     scene->step();
     if (i < first) continue;
     MdtWorldStepStats s;
     MdtWorldGetStepStats(scene->world(), &s);
-    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d %d\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
+    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d %d %d\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
                 s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual,
-                s.iterativePartitions, s.keaWarmStarts);
+                s.iterativePartitions, s.keaWarmStarts, s.bodies);
   }
   return 0;
 }

@@ -6,7 +6,8 @@
 //
 // The mapping of the description:
 // - mass and the principal inertia from UniformInertia (Bullet's own
-//   capsule inertia is a box approximation), no damping, sleeping off;
+//   capsule inertia is a box approximation), no damping, sleeping off
+//   (SetPeersSleep: Bullet's default deactivation);
 // - btBoxShape, btSphereShape, btCapsuleShapeZ (cylinder length as in the
 //   description) with Bullet's default collision margins; the ground a
 //   static box whose top face is y = 0 (kGroundHalfWidth);
@@ -156,7 +157,7 @@ class BulletEngine final : public PeerEngine {
       for (int j = 0; j < 3; ++j) basis[i][j] = (btScalar)b.axes[j][i];  // columns: the body axes
     info.m_startWorldTransform = btTransform(basis, ToBullet(p));
     auto body = std::make_unique<btRigidBody>(info);
-    body->setActivationState(DISABLE_DEACTIVATION);
+    if (!PeersSleep()) body->setActivationState(DISABLE_DEACTIVATION);
     body->setUserIndex((int)bodies_.size());
     world_.addRigidBody(body.get());
     bodies_.push_back(std::move(body));

@@ -2,7 +2,9 @@
 // scene as scenes/anchor_scene.h builds it (Mst, defaults: the exact Kea
 // solver, unless SetKarmaIterativeRows sends large partitions to the
 // iterative one; SetKarmaMaxIterations caps the solver's iterations, the
-// sweeps of the iterative one), stepped without the scene's own bookkeeping.
+// sweeps of the iterative one; SetPeersSleep turns on the auto-disable the
+// anchor scenes turn off, at the guide's default thresholds), stepped
+// without the scene's own bookkeeping.
 #include "anchor_scene.h"
 #include "peer_engine.h"
 
@@ -12,12 +14,14 @@ namespace {
 
 int iterativeRows = -1;  // < 0: the engine's default
 int maxIterations = 0;   // MdtWorldSetKeaMaxIterations; 0: the engine's default
+bool sleep = false;      // SetPeersSleep, for every engine
 
 class KarmaEngine final : public PeerEngine {
  public:
   explicit KarmaEngine(const SceneSpec &spec) : scene_(spec) {
     if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene_.world(), iterativeRows);
     if (maxIterations > 0) MdtWorldSetKeaMaxIterations(scene_.world(), maxIterations);
+    if (PeersSleep()) MdtWorldSetAutoDisable(scene_.world(), 1);
   }
   void step() override { scene_.advance(); }
   void states(std::vector<BodyState> &out) const override { scene_.states(out); }
@@ -31,6 +35,8 @@ class KarmaEngine final : public PeerEngine {
 
 void SetKarmaIterativeRows(int rows) { iterativeRows = rows; }
 void SetKarmaMaxIterations(int count) { maxIterations = count; }
+void SetPeersSleep(bool on) { sleep = on; }
+bool PeersSleep() { return sleep; }
 
 std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec) { return std::make_unique<KarmaEngine>(spec); }
 

@@ -56,7 +56,7 @@ class OdeEngine final : public PeerEngine {
     space_ = dHashSpaceCreate(nullptr);
     contacts_ = dJointGroupCreate(0);
     dWorldSetGravity(world_, 0, -scenes::kGravity, 0);
-    dWorldSetAutoDisableFlag(world_, 0);
+    dWorldSetAutoDisableFlag(world_, PeersSleep() ? 1 : 0);  // ODE's default thresholds
     if (quick_) dWorldSetQuickStepNumIterations(world_, kQuickStepIterations);
     groundMu_ = spec.friction[(size_t)spec.groundMaterial];
     dGeomSetData(dCreatePlane(space_, 0, 1, 0, 0), nullptr);

@@ -18,6 +18,9 @@
 // bodies); give both the same step count (--pile-steps, --pile10k-steps)
 // for a like-for-like ratio.
 //
+// --sleep lets every engine's resting bodies sleep by its own rule at its
+// default thresholds (SetPeersSleep); the line above the table says so.
+//
 // --platform NAME picks Karma's platform backend (MdtPlatform.h) for the
 // whole run, with the usual fallback and warning when the CPU lacks it; the
 // line above the table names the backend Karma's worlds ran on.
@@ -25,7 +28,7 @@
 //   peer_bench [--scenes car,topple,...] [--engines karma,ode-step,...]
 //              [--reps N] [--steps N] [--pile-steps N] [--pile10k-steps N]
 //              [--ode-contacts N] [--iterative-rows N] [--max-iterations N]
-//              [--platform reference|sse4|avx2|avx512]
+//              [--platform reference|sse4|avx2|avx512] [--sleep]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -61,6 +64,7 @@ struct Options {
   int iterativeRows = -1;          // Karma's MdtWorldSetKeaIterativeRows; < 0: the engine's default
   int maxIterations = 0;           // Karma's MdtWorldSetKeaMaxIterations (the iterative solver's sweeps); 0: default
   const char *platform = nullptr;  // Karma's platform backend; nullptr: the process default
+  bool sleep = false;              // every engine's sleeping on (SetPeersSleep)
 };
 
 bool KnownPlatform(const char *name) {
@@ -119,6 +123,8 @@ bool Parse(int argc, char **argv, Options &o) {
       o.maxIterations = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--platform") && hasValue && KnownPlatform(argv[i + 1]))
       o.platform = argv[++i];
+    else if (!std::strcmp(argv[i], "--sleep"))
+      o.sleep = true;
     else
       return false;
   }
@@ -275,6 +281,7 @@ int main(int argc, char **argv) {
         "  [--max-iterations N (Karma's iteration cap: the iterative solver's sweeps; default: the engine's)]\n"
         "  [--platform reference|sse4|avx2|avx512 (Karma's platform backend; default: KARMA_PLATFORM, else the "
         "best the CPU runs)]\n"
+        "  [--sleep (every engine's resting bodies sleep by its own rule and default thresholds; default: off)]\n"
         "  scenes: the five anchor scenes (the default) and pile10k (only when named)\n",
         argv[0], kDefaultPileSteps, kDefaultPile10kSteps);
     return 2;
@@ -284,6 +291,7 @@ int main(int argc, char **argv) {
 #endif
   karma::peers::SetKarmaIterativeRows(o.iterativeRows);
   karma::peers::SetKarmaMaxIterations(o.maxIterations);
+  karma::peers::SetPeersSleep(o.sleep);
   if (o.platform) MdtPlatformSetDefault(o.platform);
   std::vector<EngineKind> engines;
   for (const EngineKind &e : AllEngines())
@@ -297,7 +305,8 @@ int main(int argc, char **argv) {
     return 2;
   }
   // Every Karma world of the run is created after this and takes the default.
-  std::printf("Karma platform backend: %s\n\n", MdtPlatformGetDefaultName());
+  std::printf("Karma platform backend: %s\n", MdtPlatformGetDefaultName());
+  std::printf("Sleeping: %s\n\n", o.sleep ? "on in every engine, by its own rule and default thresholds" : "off");
   std::printf(
       "| scene (steps) | engine | µs/step, median [range] | × ODE step | × ODE QuickStep | stable "
       "| scene figures | max speed (m/s) | penetration (mm) |\n");

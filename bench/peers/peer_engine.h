@@ -34,6 +34,13 @@ struct EngineKind {
   std::unique_ptr<PeerEngine> (*make)(const SceneSpec &spec);
 };
 
+// Whether the engines built after the call let resting bodies sleep, each
+// by its own rule at its own default thresholds (Karma's auto-disable,
+// ODE's auto-disable, Bullet's deactivation). Off by default: the
+// comparison is of the solvers, and ODE's own default is off.
+void SetPeersSleep(bool on);
+bool PeersSleep();
+
 std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec);
 // MdtWorldSetKeaIterativeRows for the Karma engines built after the call
 // (0: every partition solved exactly); negative, the default: the engine's
