@@ -51,15 +51,15 @@ int main(int argc, char **argv) {
   std::printf("# platform backend: %s\n", MdtWorldGetPlatformName(scene->world()));
   std::printf(
       "step partitions rows solves factorizations stale_solves friction_rounds unsolved cycles residual "
-      "iterative_partitions warm_starts bodies\n");
+      "iterative_partitions warm_starts bodies factor_updates\n");
   for (int i = 0; i < last; ++i) {
     scene->step();
     if (i < first) continue;
     MdtWorldStepStats s;
     MdtWorldGetStepStats(scene->world(), &s);
-    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d %d %d\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
+    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d %d %d %d\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
                 s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual,
-                s.iterativePartitions, s.keaWarmStarts, s.bodies);
+                s.iterativePartitions, s.keaWarmStarts, s.bodies, s.keaFactorUpdates);
   }
   return 0;
 }

@@ -67,6 +67,8 @@ struct DenseBackend {
   int factorizations = 0;
 
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w) { return KeaResidual(p, eps, lambda, w); }
+  /* The factorisation's solve is direct: nothing to refine. */
+  bool refine(std::vector<MeReal> &, std::span<const MeReal>) { return false; }
 
   /* Solves for the free rows with the clamped rows at their (frozen)
    * bounds; writes the whole lambda. */

@@ -16,7 +16,13 @@
  *       sets the clamped rows to their bounds and solves the free block
  *       (A + eps I)_FF lambda_F = b_F - A_FC lambda_C (a backend keeps the
  *       factorisation of the last free set and only re-solves when the set
- *       is unchanged, as in the friction fixed point).
+ *       is unchanged, as in the friction fixed point);
+ *   bool refine(std::vector<MeReal> &lambda, std::span<const MeReal> w);
+ *       called after each solveFree with w = (A + eps I) lambda - b of its
+ *       answer: a backend whose solve may have missed its accuracy (a
+ *       Schur-complement update, kea_schur_update.h) corrects the free rows
+ *       of lambda from w and returns true (w is then out of date); false
+ *       leaves lambda as it is.
  *
  * Everything else is per row and costs O(n) per pivot step. */
 #ifndef KARMA_KEA_ACTIVESET_CORE_H
@@ -262,6 +268,7 @@ class ActiveSetRun {
       backend_.solveFree(set, s_.lo, s_.hi, r_.lambda);
       ++solves_;
       score();
+      if (backend_.refine(r_.lambda, r_.w)) score();
       std::size_t infeasible = 0, last = n_;
       for (std::size_t i = 0; i < n_; ++i)
         if (wanted(i, s_.lo, s_.hi) != set[i]) {

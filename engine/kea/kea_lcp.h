@@ -212,6 +212,13 @@ struct KeaOptions {
    * workspace that sees its checks fail makes them rarely (ActiveSetScratch::
    * warmAccepted). Off: the warm start only chooses the initial sets. */
   bool acceptWarmStart = false;
+  /* KeaSolveSparse, active set: a pivot whose free set differs by at most
+   * this many rows (freed and clamped together) from the rows of the dense
+   * factor made for this problem solves the new block through that factor
+   * and a capacitance matrix of that size instead of refactorising
+   * (kea_schur_update.h); 0: every new free set is factorised. The answer
+   * meets the same contract; only rounding and cost differ. */
+  int factorUpdateRows = 8;
 };
 
 struct KeaResult {
@@ -230,6 +237,9 @@ struct KeaResult {
    * conjugate-gradient iterations. */
   int staleSolves = 0;
   int staleIterations = 0;
+  /* Pivots served by a Schur-complement update of a factor instead of a
+   * factorisation (KeaOptions::factorUpdateRows). */
+  int factorUpdates = 0;
   /* Whether the answer is the warm start itself, accepted by
    * KeaOptions::acceptWarmStart without a linear solve. */
   bool warmStartAccepted = false;

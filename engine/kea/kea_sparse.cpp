@@ -65,7 +65,7 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   r.factorizations = 0;
   r.frictionRounds = 0;
   r.warmStartAccepted = false;
-  r.staleSolves = r.staleIterations = 0;
+  r.staleSolves = r.staleIterations = r.factorUpdates = 0;
 
   detail::ComputeBounds(rows, r.lambda, s.lo, s.hi);
   for (std::size_t i = 0; i < n; ++i) r.lambda[i] = std::clamp(r.lambda[i], s.lo[i], s.hi[i]);
@@ -142,12 +142,14 @@ void RetryCold(const SparseLcpProblem &p, const KeaOptions &o, MeReal target, Ke
   KeaResult &retry = workspace.retry;
   workspace.backend.useKernels(detail::KernelsOf(o));
   workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.factorMemory, target);
+  workspace.backend.allowUpdates(o.factorUpdateRows);
   detail::ActiveSetCore(detail::Rows(p), cold, "KeaSolveSparse", workspace.backend, workspace.activeSet, retry);
   retry.iterations += result.iterations;
   retry.frictionRounds += result.frictionRounds;
   retry.factorizations = result.factorizations + workspace.backend.factorizations();
   retry.staleSolves = result.staleSolves + workspace.backend.staleSolves();
   retry.staleIterations = result.staleIterations + workspace.backend.staleIterations();
+  retry.factorUpdates = result.factorUpdates + workspace.backend.factorUpdates();
   if (retry.status == KeaStatus::Solved || retry.residual <= result.residual) {
     std::swap(result.lambda, retry.lambda);
     std::swap(result.w, retry.w);
@@ -161,6 +163,7 @@ void RetryCold(const SparseLcpProblem &p, const KeaOptions &o, MeReal target, Ke
   result.factorizations = retry.factorizations;
   result.staleSolves = retry.staleSolves;
   result.staleIterations = retry.staleIterations;
+  result.factorUpdates = retry.factorUpdates;
   if (result.status == KeaStatus::CycleDetected)
     detail::WarnCycle(o, "KeaSolveSparse", result.iterations, result.residual);
   else if (result.status == KeaStatus::IterationLimit)
@@ -174,7 +177,7 @@ void BadInput(int n, KeaResult &result) {
   result.w.assign(size, MeReal(0));
   result.status = KeaStatus::BadInput;
   result.iterations = result.factorizations = result.frictionRounds = 0;
-  result.staleSolves = result.staleIterations = 0;
+  result.staleSolves = result.staleIterations = result.factorUpdates = 0;
   result.warmStartAccepted = false;
   result.residual = 0;
 }
@@ -217,8 +220,10 @@ void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &w
   first.warnings = o.warnings && !warm; /* a cycle here is retried, not reported */
   workspace.backend.useKernels(detail::KernelsOf(o));
   workspace.backend.reset(p, o.epsilon, o.envelopeRows, o.factorMemory, target);
+  workspace.backend.allowUpdates(o.factorUpdateRows);
   detail::ActiveSetCore(rows, first, kName, workspace.backend, workspace.activeSet, result);
   result.factorizations = workspace.backend.factorizations();
+  result.factorUpdates = workspace.backend.factorUpdates();
   result.staleSolves = workspace.backend.staleSolves();
   result.staleIterations = workspace.backend.staleIterations();
   if (warm && result.status == KeaStatus::CycleDetected)

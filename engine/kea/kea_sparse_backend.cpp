@@ -130,7 +130,8 @@ void SparseBackend::keepOrderings(const SparseLcpProblem &p) {
 
 void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows, KeaFactorMemory memory,
                           MeReal target) {
-  factorizations_ = staleSolves_ = staleIterations_ = 0;
+  factorizations_ = staleSolves_ = staleIterations_ = factorUpdates_ = 0;
+  updated_ = false;
   envelopeFresh_ = false;
   productValid_ = false; /* made for the previous problem */
   target_ = target;
@@ -170,6 +171,12 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   if (envelopeRows < 0) accepted = 0;
   envelope_.reserve(n, std::min(accepted, n * (n + 1) / 2));
   dense_.reserve(std::min(n, kDenseRows));
+  update_.reserve(n, std::min(n, kDenseRows));
+  updatedSet_.reserve(n);
+  /* refine()'s vectors (the stale solves' too). */
+  cgR_.reserve(n);
+  cgZ_.reserve(n);
+  cgFull_.reserve(n);
   /* The dense map's entries: the free block's upper triangle (made only
    * once a free set comes back, so reserved here). */
   const std::size_t denseRowsMax = std::min(n, kDenseRows);
@@ -218,19 +225,24 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
       naturalRows_.push_back(static_cast<int>(i));
   }
   const std::size_t m = naturalRows_.size();
+  updateToCheck_ = false;
   if (m == 0) return;
 
   if (factor_ == Factor::None || naturalRows_ != factoredSet_) {
-    factorise(set);
-    factoredSet_ = naturalRows_;
-    ++factorizations_;
-    stale_ = false;
+    if (!followUpdate()) {
+      factorise(set);
+      factoredSet_ = naturalRows_;
+      ++factorizations_;
+      stale_ = false;
+    }
+  } else {
+    updated_ = false;
   }
 
-  const std::vector<int> &rows = factorOrder();
-  buildRhs(rows, set, lambda);
+  buildRhs(factorOrder(), set, lambda);
   x_.resize(m);
   if (stale_) {
+    const std::vector<int> &rows = factorOrder();
     if (solveStaleAndLearn(rows, chooseStaleStart(rows, lambda), lambda)) {
       for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
       return;
@@ -240,7 +252,12 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
     ++factorizations_;
     stale_ = false;
   }
-  if (factor_ == Factor::Dense) {
+  const std::vector<int> &rows = factorOrder();
+  if (updated_) {
+    /* Checked by refine() against the residual the caller computes next. */
+    update_.solve(rhs_, x_, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
+    updateToCheck_ = true;
+  } else if (factor_ == Factor::Dense) {
     dense_.solve(rhs_, x_);
   } else if (factor_ != Factor::Sparse) {
     envelope_.solve(rhs_, x_);
@@ -251,6 +268,54 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] = x_[a];
 }
 
+/* Whether the free rows (naturalRows_, not the factor's) are served by a
+ * Schur-complement update of the dense factor made for this problem: the
+ * update already prepared for them, or a new one from the factor's rows.
+ * Not on a stale factor (its values are an earlier problem's). */
+bool SparseBackend::followUpdate() {
+  if (stale_ || factor_ != Factor::Dense || updateRows_ <= 0) return updated_ = false;
+  if (updated_ && naturalRows_ == updatedSet_) return true;
+  updated_ = update_.prepare(
+      denseRows_, naturalRows_, U(p_->n), eps_, updateRows_,
+      [this](int row, std::span<const int> position, std::span<MeReal> out) { column(row, position, out); },
+      [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
+  if (updated_) {
+    updatedSet_ = naturalRows_;
+    ++factorUpdates_;
+  }
+  return updated_;
+}
+
+/* After a solve through the update: its free rows' residual is -w_F (w =
+ * (A + eps I) lambda - b, as the caller computed it). When that is above
+ * target_ and above the rounding of its own computation (the stale
+ * solves' acceptance, refineWithFactor), one step of iterative refinement
+ * (Higham, "Accuracy and Stability of Numerical Algorithms", ch. 12):
+ * lambda_F += update^-1 (-w_F). An ill-conditioned base makes the update's
+ * correction W z cancel digits (docs/NOTES.md, "Pivots without
+ * refactorising"). */
+bool SparseBackend::refine(std::vector<MeReal> &lambda, std::span<const MeReal> w) {
+  if (!updateToCheck_) return false;
+  updateToCheck_ = false;
+  const std::vector<int> &rows = update_.order();
+  const std::size_t m = rows.size();
+  cgR_.resize(m);
+  for (std::size_t a = 0; a < m; ++a) cgR_[a] = -w[U(rows[a])];
+  const MeReal residual = LargestOrInfinite(cgR_);
+  if (!(residual > target_)) return false;
+  /* productScale reads x scattered to all rows (as multiplyFree leaves
+   * it); the product kept for residual() is then no longer x's. */
+  cgFull_.assign(U(p_->n), MeReal(0));
+  for (std::size_t a = 0; a < m; ++a) cgFull_[U(rows[a])] = x_[a] = lambda[U(rows[a])];
+  productValid_ = false;
+  const MeReal rounding = 4 * ME_REAL_EPSILON * (productScale(rows, x_) + LargestOrInfinite(rhs_));
+  if (!(residual > rounding)) return false;
+  cgZ_.resize(m);
+  update_.solve(cgR_, cgZ_, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
+  for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] += cgZ_[a];
+  return true;
+}
+
 /* A's entries, assembled first when the problem has an operator. */
 std::span<const MeReal> SparseBackend::values() const {
   if (p_->op) p_->op->assemble();
@@ -259,6 +324,7 @@ std::span<const MeReal> SparseBackend::values() const {
 
 /* The free rows in the kept factor's order. */
 const std::vector<int> &SparseBackend::factorOrder() const {
+  if (updated_) return update_.order();
   if (factor_ == Factor::Dense) return denseRows_;
   return factor_ == Factor::Envelope ? naturalRows_ : factor_ == Factor::BandEnvelope ? bandRows_ : orderedRows_;
 }
@@ -345,7 +411,8 @@ SparseBackend::StaleChoice SparseBackend::chooseStaleStart(const std::vector<int
   return {impulsesCheaper != probe ? StaleStart::Impulses : StaleStart::Factor, probe};
 }
 
-/* x_ solving (A + eps I)_FF x = rhs_ with the stale factor as the
+/* x_ solving (A + eps I)_FF x = rhs_ with the factor at hand
+ * (solveWithFactor: a stale factor, or a Schur-complement update) as the
  * preconditioner of conjugate gradients (Saad, "Iterative Methods for
  * Sparse Linear Systems", alg. 9.1), restarted from the true residual
  * whenever the recursive one says it is done. Accepted when every
@@ -353,8 +420,10 @@ SparseBackend::StaleChoice SparseBackend::chooseStaleStart(const std::vector<int
  * the rounding of its own computation (4 eps (|A_FF||x| + |rhs|), what a
  * direct solve leaves too). False after kMaxRefine iterations without
  * that: the caller refactorises. It starts from the factor's solve of
- * rhs_, or from the free rows' impulses in `lambda` (kStartProbe). */
-bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda) {
+ * rhs_, or from the free rows' impulses in `lambda` (kStartProbe);
+ * `iterations` counts the iterations taken. */
+bool SparseBackend::refineWithFactor(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda,
+                                     int &iterations) {
   const std::size_t m = rows.size();
   cgR_.resize(m);
   cgZ_.resize(m);
@@ -389,7 +458,6 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, c
     scaled = true;
     return !(residual > accept);
   };
-  ++staleSolves_;
   if (start == StaleStart::Factor)
     solveWithFactor(rhs_, x_);
   else
@@ -402,7 +470,7 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, c
     MeReal rz = dot(cgR_, cgZ_);
     while (budget > 0) {
       --budget;
-      ++staleIterations_;
+      ++iterations;
       multiplyFree(rows, cgD_, cgQ_);
       const MeReal dq = dot(cgD_, cgQ_);
       if (!(dq > 0) || !(rz > 0)) return false;
@@ -426,14 +494,17 @@ void SparseBackend::learnFrictionRounds(int rounds) {
   frictionRoundsExpected_ += kStaleLearningRate * (static_cast<MeReal>(rounds) - frictionRoundsExpected_);
 }
 
-/* solveStale, and what it took teaches its start's mean and, unless it was
- * a probe, the keep rule's iteration count and failure rate (a failure
- * counts as every iteration allowed). */
+/* A stale solve (refineWithFactor on the stale factor), and what it took
+ * teaches its start's mean and, unless it was a probe, the keep rule's
+ * iteration count and failure rate (a failure counts as every iteration
+ * allowed). */
 bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice,
                                        const std::vector<MeReal> &lambda) {
-  const int before = staleIterations_;
-  const bool solved = solveStale(rows, choice.start, lambda);
-  const MeReal taken = static_cast<MeReal>(solved ? staleIterations_ - before : kMaxRefine);
+  ++staleSolves_;
+  int iterations = 0;
+  const bool solved = refineWithFactor(rows, choice.start, lambda, iterations);
+  staleIterations_ += iterations;
+  const MeReal taken = static_cast<MeReal>(solved ? iterations : kMaxRefine);
   MeReal &startMean = choice.start == StaleStart::Factor ? iterationsFromFactor_ : iterationsFromImpulses_;
   startMean += kStaleLearningRate * (taken - startMean);
   if (choice.probe) return solved;
@@ -444,6 +515,7 @@ bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleChoice
 
 std::span<const int> SparseBackend::factorRows() const {
   if (stale_) return {}; /* its solves are not exact: no coupled friction step on it */
+  if (updated_) return update_.order();
   switch (factor_) {
     case Factor::Dense:
       return denseRows_;
@@ -459,6 +531,10 @@ std::span<const int> SparseBackend::factorRows() const {
 }
 
 void SparseBackend::solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x) {
+  if (updated_) {
+    update_.solve(rhs, x, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
+    return;
+  }
   if (factor_ == Factor::Dense) {
     dense_.solve(rhs, x);
     return;

@@ -35,14 +35,23 @@
  *
  * Either factorisation is kept while the free set does not change (the
  * friction fixed point re-solving with new bounds, a warm start confirming
- * its set): only the right-hand side is rebuilt and solved again.
+ * its set): only the right-hand side is rebuilt and solved again. When a
+ * pivot changes the free set by at most KeaOptions::factorUpdateRows rows
+ * from the rows of a dense factor made for this problem, the new block is
+ * solved through that factor and a small capacitance matrix
+ * (kea_schur_update.h) instead of refactorising; the base stays the
+ * factor's rows, so updates do not pile up on one another, and a change
+ * beyond the limit refactorises (and becomes the new base).
  *
  * Factor memory (reset with KeaOptions::factorMemory). A
  * factorisation may also outlive its problem: when the next problem has
  * the same sparsity (n, rowStart, col) and eps, the old factor L D L^T of
- * the old block B stays as a *stale* factor. While the free set is the one
+ * the old block B stays as a *stale* factor. It is the last factorisation
+ * made: after updates, their base (the first free set the solve
+ * factorised, usually the set the next problem's warm start begins from),
+ * not the answer's set. While the free set is the one
  * it was made for, the new block A_FF is solved by conjugate gradients
- * preconditioned with it (solveStale): for a scene at rest A_FF - B is
+ * preconditioned with it (refineWithFactor): for a scene at rest A_FF - B is
  * tiny, so B^-1 A_FF is close to I and a handful of iterations, each one
  * product with A_FF (O(nnz)) and one solve with the factor (O(envelope)),
  * replace a factorisation (O(envelope * band)). The iteration stops when
@@ -73,6 +82,7 @@
 #include "kea_dense_ldlt.h"
 #include "kea_envelope_ldlt.h"
 #include "kea_internal.h"
+#include "kea_schur_update.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -200,7 +210,7 @@ class SparseBackend {
    * then applies A through the operator, so it saves the assembly as well
    * as the factorisation (docs/NOTES.md, "Stale solves without A"). */
   static constexpr MeReal kDenseStaleIterations = 2;
-  /* Where a stale solve's conjugate gradients start (solveStale): from the
+  /* Where a stale solve's conjugate gradients start (refineWithFactor): from the
    * stale factor's solve of the right-hand side, or from the free rows'
    * current impulses (the warm start, or the last pivot's answer) when
    * one of them is nonzero. The first suits a factor that is nearly this
@@ -228,6 +238,11 @@ class SparseBackend {
   void reset(const SparseLcpProblem &p, MeReal eps, int envelopeRows = 0, KeaFactorMemory memory = KeaFactorMemory::Off,
              MeReal target = 0);
 
+  /* The most rows (freed and clamped) by which a pivot's free set may
+   * differ from the dense factor's for a Schur-complement update
+   * (KeaOptions::factorUpdateRows; 0: always refactorise). */
+  void allowUpdates(int rows) { updateRows_ = rows; }
+
   /* Whether the problems come with an operator (SparseLcpProblem::op),
    * whether or not this solve applies it: the dense factor's keep rule. */
   void offerOperator(bool offered) { operatorOffered_ = offered; }
@@ -237,6 +252,7 @@ class SparseBackend {
 
   /* See kea_activeset_core.h. */
   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w);
+  bool refine(std::vector<MeReal> &lambda, std::span<const MeReal> w);
   void solveFree(const std::vector<unsigned char> &set, const std::vector<MeReal> &lo, const std::vector<MeReal> &hi,
                  std::vector<MeReal> &lambda);
 
@@ -260,6 +276,9 @@ class SparseBackend {
 
   /* Factorisations since reset(). */
   int factorizations() const { return factorizations_; }
+  /* Schur-complement updates prepared since reset() (each serves a pivot
+   * that would otherwise have refactorised). */
+  int factorUpdates() const { return factorUpdates_; }
   /* Solves with a stale factor since reset(), and their iterations. */
   int staleSolves() const { return staleSolves_; }
   int staleIterations() const { return staleIterations_; }
@@ -286,9 +305,11 @@ class SparseBackend {
     bool probe;
   };
   StaleChoice chooseStaleStart(const std::vector<int> &rows, const std::vector<MeReal> &lambda);
-  bool solveStale(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda);
+  bool refineWithFactor(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda,
+                        int &iterations);
   bool solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice, const std::vector<MeReal> &lambda);
   void factorise(const std::vector<unsigned char> &set);
+  bool followUpdate();
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   template <class Visit>
   void forEachFreeEntry(const std::vector<int> &rows, Visit visit, std::size_t from = 0);
@@ -364,6 +385,14 @@ class SparseBackend {
   Factor factor_ = Factor::None;
   bool ldltOk_ = false;
   int factorizations_ = 0;
+  /* The Schur-complement update of the dense factor (kea_schur_update.h):
+   * whether it serves the current free rows, which free rows it was
+   * prepared for, the limit and the count since reset(). */
+  SchurUpdate update_;
+  bool updated_ = false, updateToCheck_ = false;
+  std::vector<int> updatedSet_;
+  int updateRows_ = SchurUpdate::kMaxRows;
+  int factorUpdates_ = 0;
   /* Factor memory: whether a factor worth keeping was made for
    * sparsity_, whether it is stale (made for an earlier problem), whether
    * upVal_ holds this problem's values, the target residual, the CG

@@ -101,6 +101,9 @@ typedef struct MdtWorldStepStats {
                               sixteenth of the tolerance as they were, kept
                               with no linear solve
                               (MdtWorldSetKeaAcceptWarmStart) */
+  int keaFactorUpdates;    /* pivots of the exact solver served by a
+                              Schur-complement update of a factor instead
+                              of a factorisation */
 } MdtWorldStepStats;
 
 /* The world's private state (body pool, step order, counters). */

@@ -36,6 +36,7 @@ struct SolveReport {
   int factorizations = 0;  // exact solver: factorisations of a free block
   int frictionRounds = 0;  // exact solver: friction fixed-point rounds beyond the first
   int staleSolves = 0;     // exact solver: linear solves with last step's factor
+  int factorUpdates = 0;   // exact solver: pivots served by an update of a factor
   bool warmStartAccepted = false;  // exact solver: the warm start was the answer
   bool solved = true;
   bool cycle = false;  // stopped by a detected cycle

@@ -64,6 +64,7 @@ std::span<MeReal> solveProblem(MdtWorldID world, StepScratch &s, const BodySpace
   s.stats.keaFactorizations += report.factorizations;
   s.stats.keaFrictionRounds += report.frictionRounds;
   s.stats.keaStaleSolves += report.staleSolves;
+  s.stats.keaFactorUpdates += report.factorUpdates;
   if (report.warmStartAccepted) ++s.stats.keaWarmStarts;
   if (report.solved)
     ++s.stats.keaSolved;

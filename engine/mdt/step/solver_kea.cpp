@@ -409,6 +409,7 @@ class KeaSolver final : public PartitionSolver {
     report.residual = result_.residual;
     report.factorizations = result_.factorizations;
     report.staleSolves = result_.staleSolves;
+    report.factorUpdates = result_.factorUpdates;
     report.warmStartAccepted = result_.warmStartAccepted;
     report.frictionRounds = result_.frictionRounds;
     report.solved = result_.status == kea::KeaStatus::Solved;

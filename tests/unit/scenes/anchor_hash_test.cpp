@@ -33,11 +33,11 @@ struct PinnedHash {
 
 // clang-format off
 constexpr PinnedHash kPinned[] = {
-    {"car",      300,  "0xac8e1fea8938895b", "0xf86235ce2ce39eee"},
-    {"topple",   600,  "0xea99e98187883904", "0x6b9444b9263e59a9"},
-    {"ragdoll",  600,  "0x3ac1afe1f9df0bb7", "0x22b831db3d2e9875"},
+    {"car",      300,  "0x4f08049fc9a395de", "0xef6f3baf4882c061"},
+    {"topple",   600,  "0x747420794999f371", "0x923844663b84600d"},
+    {"ragdoll",  600,  "0x61b8a024a2e66cfc", "0x40b387cda22dec62"},
     {"stack21",  1200, "0x260d13f2e6cfa06e", "0xcb17dc142a24693f"},
-    {"pile1000", 60,   "0x66d2ba7970761e30", "0xf83e22ca2cdf5ac1"},
+    {"pile1000", 60,   "0x6883cb970da1b4ef", "0xf9c4c7d8965bc47c"},
 };
 // clang-format on
 
