@@ -40,8 +40,9 @@ int main(int argc, char **argv) {
                                        : !std::strcmp(name, "pile10k")  ? MakePile10k()
                                                                         : nullptr;
   if (!scene) {
-    std::fprintf(stderr, "usage: %s car|topple|stack21|ragdoll|pile1000|pile10k [FIRST [LAST]] [--iterative-rows N] [--sleep]\n",
-                 argv[0]);
+    std::fprintf(
+        stderr, "usage: %s car|topple|stack21|ragdoll|pile1000|pile10k [FIRST [LAST]] [--iterative-rows N] [--sleep]\n",
+        argv[0]);
     return 2;
   }
   if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene->world(), iterativeRows);
@@ -57,9 +58,9 @@ int main(int argc, char **argv) {
     if (i < first) continue;
     MdtWorldStepStats s;
     MdtWorldGetStepStats(scene->world(), &s);
-    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d %d %d %d\n", i, s.partitions, s.rows, s.keaIterations, s.keaFactorizations,
-                s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles, (double)s.keaResidual,
-                s.iterativePartitions, s.keaWarmStarts, s.bodies, s.keaFactorUpdates);
+    std::printf("%d %d %d %d %d %d %d %d %d %.3g %d %d %d %d\n", i, s.partitions, s.rows, s.keaIterations,
+                s.keaFactorizations, s.keaStaleSolves, s.keaFrictionRounds, s.keaUnsolved, s.keaCycles,
+                (double)s.keaResidual, s.iterativePartitions, s.keaWarmStarts, s.bodies, s.keaFactorUpdates);
   }
   return 0;
 }

@@ -12,9 +12,9 @@ namespace karma::peers {
 
 namespace {
 
-int iterativeRows = -1;  // < 0: the engine's default
-int maxIterations = 0;   // MdtWorldSetKeaMaxIterations; 0: the engine's default
-bool sleep = false;      // SetPeersSleep, for every engine
+int iterativeRows = -1;   // < 0: the engine's default
+int maxIterations = 0;    // MdtWorldSetKeaMaxIterations; 0: the engine's default
+bool peersSleep = false;  // SetPeersSleep, for every engine
 
 class KarmaEngine final : public PeerEngine {
  public:
@@ -35,8 +35,8 @@ class KarmaEngine final : public PeerEngine {
 
 void SetKarmaIterativeRows(int rows) { iterativeRows = rows; }
 void SetKarmaMaxIterations(int count) { maxIterations = count; }
-void SetPeersSleep(bool on) { sleep = on; }
-bool PeersSleep() { return sleep; }
+void SetPeersSleep(bool on) { peersSleep = on; }
+bool PeersSleep() { return peersSleep; }
 
 std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec) { return std::make_unique<KarmaEngine>(spec); }
 

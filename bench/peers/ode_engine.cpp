@@ -12,6 +12,7 @@
 //   bounce, the world's default ERP 0.2 and CFM 1e-5; up to 8 contacts per
 //   pair (as Karma's box-box test) unless SetOdeMaxContacts says fewer; a
 //   hash space for broad phase;
+// - auto-disable off (SetPeersSleep: on, at ODE's default thresholds);
 // - a car wheel: a hinge2 joint, axis 1 the steering axis on the chassis
 //   locked by stops at 0, axis 2 the wheel's hinge; the suspension
 //   spring k and damper c through ODE's soft constraint,

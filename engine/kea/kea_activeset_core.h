@@ -19,10 +19,12 @@
  *       is unchanged, as in the friction fixed point);
  *   bool refine(std::vector<MeReal> &lambda, std::span<const MeReal> w);
  *       called after each solveFree with w = (A + eps I) lambda - b of its
- *       answer: a backend whose solve may have missed its accuracy (a
- *       Schur-complement update, kea_schur_update.h) corrects the free rows
- *       of lambda from w and returns true (w is then out of date); false
- *       leaves lambda as it is.
+ *       answer, and again after each call that returned true: a backend
+ *       whose solve may have missed its accuracy (a Schur-complement
+ *       update, kea_schur_update.h) corrects the free rows of lambda from w
+ *       and returns true (w is then out of date); false leaves lambda as it
+ *       is. It returns true a bounded number of times per solveFree (and
+ *       per coupled friction step, kea_friction_coupling.h).
  *
  * Everything else is per row and costs O(n) per pivot step. */
 #ifndef KARMA_KEA_ACTIVESET_CORE_H
@@ -268,7 +270,7 @@ class ActiveSetRun {
       backend_.solveFree(set, s_.lo, s_.hi, r_.lambda);
       ++solves_;
       score();
-      if (backend_.refine(r_.lambda, r_.w)) score();
+      while (backend_.refine(r_.lambda, r_.w)) score();
       std::size_t infeasible = 0, last = n_;
       for (std::size_t i = 0; i < n_; ++i)
         if (wanted(i, s_.lo, s_.hi) != set[i]) {
@@ -347,6 +349,7 @@ class ActiveSetRun {
         r_.lambda[i] = s_.newHi[i];
     }
     score();
+    while (backend_.refine(r_.lambda, r_.w)) score();
     bool agree = true;
     for (std::size_t i = 0; i < n_ && agree; ++i) agree = wanted(i, s_.newLo, s_.newHi) == set[i];
     if (agree) return true;

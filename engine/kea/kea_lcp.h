@@ -213,11 +213,14 @@ struct KeaOptions {
    * warmAccepted). Off: the warm start only chooses the initial sets. */
   bool acceptWarmStart = false;
   /* KeaSolveSparse, active set: a pivot whose free set differs by at most
-   * this many rows (freed and clamped together) from the rows of the dense
-   * factor made for this problem solves the new block through that factor
-   * and a capacitance matrix of that size instead of refactorising
-   * (kea_schur_update.h); 0: every new free set is factorised. The answer
-   * meets the same contract; only rounding and cost differ. */
+   * this many rows (freed and clamped together; at most 8, the default)
+   * from the rows of the dense factor made for this problem solves the new
+   * block through that factor and a capacitance matrix of that size
+   * instead of refactorising (kea_schur_update.h), and refines the answer
+   * from its residual; a singular or nearly singular change is factorised
+   * instead, as are changes beyond the limit. 0: every new free set is
+   * factorised. Rounding and cost differ; what the answer is checked
+   * against does not. */
   int factorUpdateRows = 8;
 };
 

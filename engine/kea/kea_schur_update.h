@@ -23,18 +23,25 @@
  *   (A_SF0 W_R = W_S(R, :)^T, since B is symmetric). Then x_K = y(K) and
  *   x_S is z's first part.
  *
- * The symmetric part of C is diag(P, N): P the Schur complement of B in
- * the extended block (positive definite when (A + eps I)_F0+S is) and
- * N = (B^-1)_RR (positive definite), so C is nonsingular. It is
- * factorised by LU with partial pivoting; a pivot at or below
- * kPivotFloor times C's largest entry, or a non-finite one, makes
- * prepare() fail and the caller refactorise.
+ * C is nonsingular exactly when (A + eps I)_FF is: its symmetric part is
+ * diag(P, N), P the Schur complement of B in the extended block and
+ * N = (B^-1)_RR (positive definite). A free set whose block is singular
+ * (eps = 0 and a freed row that repeats free ones: redundant contacts)
+ * makes P singular. C is factorised by LU with partial pivoting after a
+ * symmetric scaling that gives its diagonal the units of 1: the added rows
+ * by 1 / sqrt((A + eps I)_ss), the removed ones by 1 / sqrt(N_tt). A
+ * scaled pivot at or below kUpdatePivotFloor (1/1024, far above
+ * DenseLdlt's breakdown rule: a nearly singular change is left to a
+ * factorisation, kea_schur_update.cpp), or a non-finite one, makes
+ * prepare() fail and the caller factorise the block, which then breaks
+ * down or not by its own rule.
  *
  * Cost, m0 = |F0|: prepare() makes k solves with B, |S| columns of A and
  * about k^2 m0 multiply-adds; each solve() one solve with B and about
  * 2 k m0. A dense refactorisation costs m^3 / 6, so the update pays for a
- * k small against m (kMaxRows). The answer is the same as a fresh
- * factorisation's up to rounding, not bit for bit.
+ * k small against m (kMaxRows). The answer is a fresh factorisation's up
+ * to rounding, not bit for bit; an ill-conditioned B makes the correction
+ * W z cancel digits, which the caller refines (SparseBackend::refine).
  *
  * Nothing allocates once reserve() has covered the problem and kMaxRows. */
 #ifndef KARMA_KEA_SCHUR_UPDATE_H
@@ -42,6 +49,7 @@
 
 #include "MePrecision.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -50,7 +58,7 @@ namespace karma::kea::detail {
 
 class SchurUpdate {
  public:
-  /* The most rows (added and removed) an update takes by default. */
+  /* The most rows (added and removed) an update takes. */
   static constexpr int kMaxRows = 8;
 
   /* Room for problems of n rows and bases of up to `baseRows` rows. */
@@ -61,9 +69,10 @@ class SchurUpdate {
    * the diagonal. column(row, position, out) writes, for each entry (row,
    * c) of A, A_row,c to out[position[c]] where position[c] >= 0 (A
    * symmetric: row `row` is column `row`); solveBase(in, out) solves with B
-   * (m0 values, out may alias in). False, and nothing prepared, when the
-   * free rows are the base's, differ from them by more than maxRows rows,
-   * or C breaks down. */
+   * (m0 values, out may alias in). False when the free rows are the
+   * base's, keep none of its rows, differ from them by more than maxRows
+   * (at most kMaxRows) rows, or C breaks down; nothing is prepared then (order() may have
+   * changed). */
   template <class Column, class SolveBase>
   bool prepare(std::span<const int> base, std::span<const int> free, std::size_t n, MeReal eps, int maxRows,
                Column column, SolveBase solveBase);
@@ -77,7 +86,15 @@ class SchurUpdate {
   void solve(std::span<const MeReal> rhs, std::span<MeReal> x, SolveBase solveBase) const;
 
  private:
-  /* C = L U with the row interchanges in pivot_; false on breakdown. */
+  /* Sorts the free rows into kept (order_, keptAt_), added (the end of
+   * order_) and removed (removedAt_) against basePosition_; k. */
+  std::size_t classify(std::span<const int> base, std::span<const int> free);
+  /* C from A_SS (the added rows' block of A + eps I, already in c_), aS_
+   * and w_; its scale_. False when a diagonal it scales by is not
+   * positive. */
+  bool buildCapacitance();
+  /* Scaled C = L U with the row interchanges in pivot_; false on
+   * breakdown. */
   bool factorCapacitance();
   /* d <- C^-1 d. */
   void solveCapacitance(std::vector<MeReal> &d) const;
@@ -85,86 +102,56 @@ class SchurUpdate {
 
   std::size_t m0_ = 0, added_ = 0, k_ = 0;
   std::vector<int> order_;
-  std::vector<int> keptAt_;    /* base position of order_[a], a < |K| */
-  std::vector<int> removedAt_; /* base positions of the removed rows */
+  std::vector<int> keptAt_;                       /* base position of order_[a], a < |K| */
+  std::vector<int> removedAt_;                    /* base positions of the removed rows */
   std::vector<int> basePosition_, addedPosition_; /* by row, -1 elsewhere */
   std::vector<unsigned char> kept_;               /* by base position */
   std::vector<MeReal> aS_;                        /* |S| x m0: row j = A_{s_j, F0} */
   std::vector<MeReal> w_;                         /* k columns of m0: W */
-  std::vector<MeReal> c_;                         /* k x k, row-major: C, then its LU */
+  std::vector<MeReal> c_;                         /* k x k, row-major: C, then its scaled LU */
+  std::vector<MeReal> scale_;                     /* C's symmetric scaling, k */
   std::vector<int> pivot_;
   mutable std::vector<MeReal> y_, d_;
 };
 
 template <class Column, class SolveBase>
-bool SchurUpdate::prepare(std::span<const int> base, std::span<const int> free, std::size_t n, MeReal eps,
-                          int maxRows, Column column, SolveBase solveBase) {
+bool SchurUpdate::prepare(std::span<const int> base, std::span<const int> free, std::size_t n, MeReal eps, int maxRows,
+                          Column column, SolveBase solveBase) {
   const std::size_t m0 = base.size();
   basePosition_.resize(n, -1);
   addedPosition_.resize(n, -1);
-  kept_.assign(m0, 0);
   for (std::size_t i = 0; i < m0; ++i) basePosition_[static_cast<std::size_t>(base[i])] = static_cast<int>(i);
-  order_.clear();
-  std::size_t keptCount = 0, added = 0;
-  for (int r : free) {
-    const int at = basePosition_[static_cast<std::size_t>(r)];
-    if (at >= 0) {
-      kept_[static_cast<std::size_t>(at)] = 1;
-      ++keptCount;
-    } else {
-      ++added;
+  const std::size_t k = classify(base, free);
+  const std::size_t keptCount = keptAt_.size(), added = order_.size() - keptCount;
+  const auto limit = static_cast<std::size_t>(std::clamp(maxRows, 0, kMaxRows));
+  const bool takes = k > 0 && k <= limit && keptCount > 0;
+  if (takes) {
+    m0_ = m0;
+    added_ = added;
+    k_ = k;
+    /* A_SF0 by rows and W = B^-1 [A_F0S  E_R] by columns; then the added
+     * rows' block of A + eps I into C's leading block. */
+    aS_.assign(added * m0, MeReal(0));
+    w_.assign(k * m0, MeReal(0));
+    for (std::size_t j = 0; j < added; ++j) {
+      const std::span<MeReal> row(aS_.data() + j * m0, m0);
+      column(order_[keptCount + j], std::span<const int>(basePosition_), row);
+      solveBase(std::span<const MeReal>(row), std::span<MeReal>(w_.data() + j * m0, m0));
+    }
+    for (std::size_t t = 0; t < removedAt_.size(); ++t) {
+      MeReal *wt = w_.data() + (added + t) * m0;
+      wt[removedAt_[t]] = 1;
+      solveBase(std::span<const MeReal>(wt, m0), std::span<MeReal>(wt, m0));
+    }
+    c_.assign(k * k, MeReal(0));
+    for (std::size_t j = 0; j < added; ++j) {
+      column(order_[keptCount + j], std::span<const int>(addedPosition_), std::span<MeReal>(c_.data() + j * k, added));
+      c_[j * k + j] += eps;
     }
   }
-  const std::size_t k = added + (m0 - keptCount);
-  if (k == 0 || k > static_cast<std::size_t>(maxRows) || keptCount == 0) {
-    for (int r : base) basePosition_[static_cast<std::size_t>(r)] = -1;
-    return false;
-  }
-  m0_ = m0;
-  added_ = added;
-  k_ = k;
-  keptAt_.clear();
-  removedAt_.clear();
-  for (std::size_t i = 0; i < m0; ++i) {
-    if (kept_[i]) {
-      order_.push_back(base[i]);
-      keptAt_.push_back(static_cast<int>(i));
-    } else {
-      removedAt_.push_back(static_cast<int>(i));
-    }
-  }
-  for (int r : free)
-    if (basePosition_[static_cast<std::size_t>(r)] < 0) {
-      addedPosition_[static_cast<std::size_t>(r)] = static_cast<int>(order_.size() - keptCount);
-      order_.push_back(r);
-    }
-  /* A_{S F0} by rows, then W = B^-1 [A_F0S  E_R] by columns. */
-  aS_.assign(added * m0, MeReal(0));
-  w_.assign(k * m0, MeReal(0));
-  for (std::size_t j = 0; j < added; ++j) {
-    const std::span<MeReal> row(aS_.data() + j * m0, m0);
-    column(order_[keptCount + j], std::span<const int>(basePosition_), row);
-    solveBase(std::span<const MeReal>(row), std::span<MeReal>(w_.data() + j * m0, m0));
-  }
-  for (std::size_t t = 0; t < removedAt_.size(); ++t) {
-    MeReal *wt = w_.data() + (added + t) * m0;
-    wt[removedAt_[t]] = 1;
-    solveBase(std::span<const MeReal>(wt, m0), std::span<MeReal>(wt, m0));
-  }
-  /* C: the added rows' block of A (its diagonal plus eps) less A_SF0 W,
-   * then the removed rows' entries of W. */
-  c_.assign(k * k, MeReal(0));
-  for (std::size_t j = 0; j < added; ++j) {
-    column(order_[keptCount + j], std::span<const int>(addedPosition_), std::span<MeReal>(c_.data() + j * k, added));
-    c_[j * k + j] += eps;
-    for (std::size_t c = 0; c < k; ++c) c_[j * k + c] -= dotBase(aS_.data() + j * m0, w_.data() + c * m0);
-  }
-  for (std::size_t t = 0; t < removedAt_.size(); ++t)
-    for (std::size_t c = 0; c < k; ++c)
-      c_[(added + t) * k + c] = w_[c * m0 + static_cast<std::size_t>(removedAt_[t])];
   for (int r : base) basePosition_[static_cast<std::size_t>(r)] = -1;
   for (std::size_t j = 0; j < added; ++j) addedPosition_[static_cast<std::size_t>(order_[keptCount + j])] = -1;
-  return factorCapacitance();
+  return takes && buildCapacitance() && factorCapacitance();
 }
 
 template <class SolveBase>
@@ -176,7 +163,7 @@ void SchurUpdate::solve(std::span<const MeReal> rhs, std::span<MeReal> x, SolveB
   d_.resize(k_);
   for (std::size_t j = 0; j < added_; ++j) d_[j] = rhs[keptCount + j] - dotBase(aS_.data() + j * m0_, y_.data());
   for (std::size_t t = 0; t < removedAt_.size(); ++t) d_[added_ + t] = y_[static_cast<std::size_t>(removedAt_[t])];
-  solveCapacitance(d_);
+  solveCapacitance(d_); /* z, unscaled */
   for (std::size_t c = 0; c < k_; ++c) {
     const MeReal zc = d_[c];
     const MeReal *wc = w_.data() + c * m0_;

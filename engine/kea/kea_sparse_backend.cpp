@@ -76,8 +76,7 @@ bool StaleSolveWorthIt(const EnvelopeSystem &e, std::size_t nnz, bool operatorOf
   const MeReal assembly = operatorOffered ? SparseBackend::kAssemblyPerEntry : MeReal(0);
   const MeReal passes = operatorOffered ? 3 : 2;
   const MeReal factorCost = static_cast<MeReal>(crout) + assembly * static_cast<MeReal>(nnz);
-  const MeReal staleCost =
-      record.solves * (passes + record.iterations) * static_cast<MeReal>(nnz + 2 * e.size());
+  const MeReal staleCost = record.solves * (passes + record.iterations) * static_cast<MeReal>(nnz + 2 * e.size());
   return staleCost + record.failures * factorCost < factorCost;
 }
 
@@ -229,7 +228,7 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   if (m == 0) return;
 
   if (factor_ == Factor::None || naturalRows_ != factoredSet_) {
-    if (!followUpdate()) {
+    if (!updateServesFreeRows()) {
       factorise(set);
       factoredSet_ = naturalRows_;
       ++factorizations_;
@@ -257,6 +256,7 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
     /* Checked by refine() against the residual the caller computes next. */
     update_.solve(rhs_, x_, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
     updateToCheck_ = true;
+    refinements_ = kMaxRefine;
   } else if (factor_ == Factor::Dense) {
     dense_.solve(rhs_, x_);
   } else if (factor_ != Factor::Sparse) {
@@ -272,8 +272,11 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
  * Schur-complement update of the dense factor made for this problem: the
  * update already prepared for them, or a new one from the factor's rows.
  * Not on a stale factor (its values are an earlier problem's). */
-bool SparseBackend::followUpdate() {
-  if (stale_ || factor_ != Factor::Dense || updateRows_ <= 0) return updated_ = false;
+bool SparseBackend::updateServesFreeRows() {
+  if (stale_ || factor_ != Factor::Dense || updateRows_ <= 0) {
+    updated_ = false;
+    return false;
+  }
   if (updated_ && naturalRows_ == updatedSet_) return true;
   updated_ = update_.prepare(
       denseRows_, naturalRows_, U(p_->n), eps_, updateRows_,
@@ -287,29 +290,32 @@ bool SparseBackend::followUpdate() {
 }
 
 /* After a solve through the update: its free rows' residual is -w_F (w =
- * (A + eps I) lambda - b, as the caller computed it). When that is above
+ * (A + eps I) lambda - b, as the caller computed it). While that is above
  * target_ and above the rounding of its own computation (the stale
- * solves' acceptance, refineWithFactor), one step of iterative refinement
+ * solves' acceptance, solveStale), a step of iterative refinement
  * (Higham, "Accuracy and Stability of Numerical Algorithms", ch. 12):
- * lambda_F += update^-1 (-w_F). An ill-conditioned base makes the update's
- * correction W z cancel digits (docs/NOTES.md, "Pivots without
- * refactorising"). */
+ * lambda_F += update^-1 (-w_F), at most kMaxRefine of them; the caller
+ * computes the residual again after each. An ill-conditioned base makes
+ * the update's correction W z cancel digits (docs/NOTES.md, "Pivots
+ * without refactorising"). */
 bool SparseBackend::refine(std::vector<MeReal> &lambda, std::span<const MeReal> w) {
   if (!updateToCheck_) return false;
-  updateToCheck_ = false;
   const std::vector<int> &rows = update_.order();
   const std::size_t m = rows.size();
   cgR_.resize(m);
   for (std::size_t a = 0; a < m; ++a) cgR_[a] = -w[U(rows[a])];
   const MeReal residual = LargestOrInfinite(cgR_);
-  if (!(residual > target_)) return false;
+  updateToCheck_ = residual > target_ && refinements_ > 0;
+  if (!updateToCheck_) return false;
   /* productScale reads x scattered to all rows (as multiplyFree leaves
    * it); the product kept for residual() is then no longer x's. */
   cgFull_.assign(U(p_->n), MeReal(0));
   for (std::size_t a = 0; a < m; ++a) cgFull_[U(rows[a])] = x_[a] = lambda[U(rows[a])];
   productValid_ = false;
   const MeReal rounding = 4 * ME_REAL_EPSILON * (productScale(rows, x_) + LargestOrInfinite(rhs_));
-  if (!(residual > rounding)) return false;
+  updateToCheck_ = residual > rounding;
+  if (!updateToCheck_) return false;
+  --refinements_;
   cgZ_.resize(m);
   update_.solve(cgR_, cgZ_, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
   for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] += cgZ_[a];
@@ -402,7 +408,7 @@ MeReal StaleStartCost(bool fromFactor, MeReal iterations) {
 /* The start of a stale solve (kStartProbe): the factor's when no free
  * row has an impulse. */
 SparseBackend::StaleChoice SparseBackend::chooseStaleStart(const std::vector<int> &rows,
-                                                          const std::vector<MeReal> &lambda) {
+                                                           const std::vector<MeReal> &lambda) {
   const bool anyImpulse = std::any_of(rows.begin(), rows.end(), [&](int r) { return lambda[U(r)] != 0; });
   if (!anyImpulse) return {StaleStart::Factor, false};
   const bool impulsesCheaper =
@@ -411,8 +417,7 @@ SparseBackend::StaleChoice SparseBackend::chooseStaleStart(const std::vector<int
   return {impulsesCheaper != probe ? StaleStart::Impulses : StaleStart::Factor, probe};
 }
 
-/* x_ solving (A + eps I)_FF x = rhs_ with the factor at hand
- * (solveWithFactor: a stale factor, or a Schur-complement update) as the
+/* x_ solving (A + eps I)_FF x = rhs_ with the stale factor as the
  * preconditioner of conjugate gradients (Saad, "Iterative Methods for
  * Sparse Linear Systems", alg. 9.1), restarted from the true residual
  * whenever the recursive one says it is done. Accepted when every
@@ -422,8 +427,8 @@ SparseBackend::StaleChoice SparseBackend::chooseStaleStart(const std::vector<int
  * that: the caller refactorises. It starts from the factor's solve of
  * rhs_, or from the free rows' impulses in `lambda` (kStartProbe);
  * `iterations` counts the iterations taken. */
-bool SparseBackend::refineWithFactor(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda,
-                                     int &iterations) {
+bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda,
+                               int &iterations) {
   const std::size_t m = rows.size();
   cgR_.resize(m);
   cgZ_.resize(m);
@@ -494,15 +499,14 @@ void SparseBackend::learnFrictionRounds(int rounds) {
   frictionRoundsExpected_ += kStaleLearningRate * (static_cast<MeReal>(rounds) - frictionRoundsExpected_);
 }
 
-/* A stale solve (refineWithFactor on the stale factor), and what it took
- * teaches its start's mean and, unless it was a probe, the keep rule's
+/* A stale solve, and what it took teaches its start's mean and, unless it was a probe, the keep rule's
  * iteration count and failure rate (a failure counts as every iteration
  * allowed). */
 bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice,
                                        const std::vector<MeReal> &lambda) {
   ++staleSolves_;
   int iterations = 0;
-  const bool solved = refineWithFactor(rows, choice.start, lambda, iterations);
+  const bool solved = solveStale(rows, choice.start, lambda, iterations);
   staleIterations_ += iterations;
   const MeReal taken = static_cast<MeReal>(solved ? iterations : kMaxRefine);
   MeReal &startMean = choice.start == StaleStart::Factor ? iterationsFromFactor_ : iterationsFromImpulses_;
@@ -514,8 +518,8 @@ bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleChoice
 }
 
 std::span<const int> SparseBackend::factorRows() const {
-  if (stale_) return {}; /* its solves are not exact: no coupled friction step on it */
-  if (updated_) return update_.order();
+  if (stale_) return {};                /* its solves are not exact: no coupled friction step on it */
+  if (updated_) return update_.order(); /* its solves are refined after the step (refine) */
   switch (factor_) {
     case Factor::Dense:
       return denseRows_;
@@ -533,6 +537,8 @@ std::span<const int> SparseBackend::factorRows() const {
 void SparseBackend::solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x) {
   if (updated_) {
     update_.solve(rhs, x, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
+    updateToCheck_ = true; /* the coupled step's answer is refined like a solve's */
+    refinements_ = kMaxRefine;
     return;
   }
   if (factor_ == Factor::Dense) {
@@ -639,10 +645,9 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
       factor_ = useBandOrder_ ? Factor::BandEnvelope : Factor::Envelope;
       envelopeFactorRows_ = rows;
       envelopeFresh_ = !envelope_.broken;
-      staleWorthIt_ =
-          memory_ == KeaFactorMemory::Always ||
-          StaleSolveWorthIt(envelope_, U(p_->rowStart[U(p_->n)]), operatorOffered_,
-                            {staleIterationsExpected_, staleFailureRate_, 1 + frictionRoundsExpected_});
+      staleWorthIt_ = memory_ == KeaFactorMemory::Always ||
+                      StaleSolveWorthIt(envelope_, U(p_->rowStart[U(p_->n)]), operatorOffered_,
+                                        {staleIterationsExpected_, staleFailureRate_, 1 + frictionRoundsExpected_});
       /* A factor not kept teaches nothing: the expectations drift back to
        * the priors so that the factor is tried again. */
       if (!staleWorthIt_) {
@@ -661,8 +666,8 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
 /* Whether the dense factor just made is worth keeping (see
  * kDenseStaleIterations), and keeps it if so. */
 void SparseBackend::keepDenseFactor() {
-  staleWorthIt_ = memory_ == KeaFactorMemory::Always ||
-                  (operatorOffered_ && staleIterationsExpected_ <= kDenseStaleIterations);
+  staleWorthIt_ =
+      memory_ == KeaFactorMemory::Always || (operatorOffered_ && staleIterationsExpected_ <= kDenseStaleIterations);
   if (!staleWorthIt_)
     staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
   rememberFactor();

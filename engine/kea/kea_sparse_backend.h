@@ -39,19 +39,21 @@
  * pivot changes the free set by at most KeaOptions::factorUpdateRows rows
  * from the rows of a dense factor made for this problem, the new block is
  * solved through that factor and a small capacitance matrix
- * (kea_schur_update.h) instead of refactorising; the base stays the
- * factor's rows, so updates do not pile up on one another, and a change
- * beyond the limit refactorises (and becomes the new base).
+ * (kea_schur_update.h) instead of refactorising, and refined from the
+ * residual the caller computes next (refine); the base stays the factor's
+ * rows, so updates do not pile up on one another, and a change beyond the
+ * limit, or one the update refuses, refactorises (and becomes the new
+ * base). A coupled friction step on an update (its solveWithFactor) is
+ * refined the same way.
  *
  * Factor memory (reset with KeaOptions::factorMemory). A
  * factorisation may also outlive its problem: when the next problem has
  * the same sparsity (n, rowStart, col) and eps, the old factor L D L^T of
  * the old block B stays as a *stale* factor. It is the last factorisation
- * made: after updates, their base (the first free set the solve
- * factorised, usually the set the next problem's warm start begins from),
- * not the answer's set. While the free set is the one
+ * made, which after updates is their base, not the answer's set (in a
+ * scene at rest, the set the next problem's warm start begins from). While the free set is the one
  * it was made for, the new block A_FF is solved by conjugate gradients
- * preconditioned with it (refineWithFactor): for a scene at rest A_FF - B is
+ * preconditioned with it (solveStale): for a scene at rest A_FF - B is
  * tiny, so B^-1 A_FF is close to I and a handful of iterations, each one
  * product with A_FF (O(nnz)) and one solve with the factor (O(envelope)),
  * replace a factorisation (O(envelope * band)). The iteration stops when
@@ -210,7 +212,7 @@ class SparseBackend {
    * then applies A through the operator, so it saves the assembly as well
    * as the factorisation (docs/NOTES.md, "Stale solves without A"). */
   static constexpr MeReal kDenseStaleIterations = 2;
-  /* Where a stale solve's conjugate gradients start (refineWithFactor): from the
+  /* Where a stale solve's conjugate gradients start (solveStale): from the
    * stale factor's solve of the right-hand side, or from the free rows'
    * current impulses (the warm start, or the last pivot's answer) when
    * one of them is nonzero. The first suits a factor that is nearly this
@@ -305,11 +307,10 @@ class SparseBackend {
     bool probe;
   };
   StaleChoice chooseStaleStart(const std::vector<int> &rows, const std::vector<MeReal> &lambda);
-  bool refineWithFactor(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda,
-                        int &iterations);
+  bool solveStale(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda, int &iterations);
   bool solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice, const std::vector<MeReal> &lambda);
   void factorise(const std::vector<unsigned char> &set);
-  bool followUpdate();
+  bool updateServesFreeRows();
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   template <class Visit>
   void forEachFreeEntry(const std::vector<int> &rows, Visit visit, std::size_t from = 0);
@@ -390,6 +391,7 @@ class SparseBackend {
    * prepared for, the limit and the count since reset(). */
   SchurUpdate update_;
   bool updated_ = false, updateToCheck_ = false;
+  int refinements_ = 0; /* refine() steps left for the last update's answer */
   std::vector<int> updatedSet_;
   int updateRows_ = SchurUpdate::kMaxRows;
   int factorUpdates_ = 0;
@@ -411,8 +413,8 @@ class SparseBackend {
   bool productValid_ = false;
   int staleSolves_ = 0, staleIterations_ = 0;
   MeReal staleIterationsExpected_ = kStaleIterationsPrior; /* running mean, kept across problems */
-  MeReal staleFailureRate_ = 0;                             /* running mean of failures (1) and successes (0) */
-  MeReal frictionRoundsExpected_ = 0;                       /* running mean per problem (learnFrictionRounds) */
+  MeReal staleFailureRate_ = 0;                            /* running mean of failures (1) and successes (0) */
+  MeReal frictionRoundsExpected_ = 0;                      /* running mean per problem (learnFrictionRounds) */
   /* kStartProbe: each start's running mean of iterations, and the choices
    * made, kept across problems. */
   MeReal iterationsFromFactor_ = 0, iterationsFromImpulses_ = kStaleIterationsPrior;

@@ -441,10 +441,10 @@ TEST(KeaFactorMemory, ADenseFactorIsChosenWhereTheEnvelopeCostsMore) {
   EXPECT_TRUE(DenseCheaper(87, 21763));
   EXPECT_FALSE(DenseCheaper(87, 20577));  // 32 * 20,577 = 658,464 < 87^3
   EXPECT_FALSE(DenseCheaper(96, 24400));
-  EXPECT_TRUE(DenseCheaper(4, 2));        // 64 <= 64: the bound is inclusive
-  EXPECT_FALSE(DenseCheaper(4, 1));       // 64 > 32
-  EXPECT_TRUE(DenseCheaper(5, 4));        // 125 <= 128
-  EXPECT_FALSE(DenseCheaper(6, 5));       // 216 > 160
+  EXPECT_TRUE(DenseCheaper(4, 2));   // 64 <= 64: the bound is inclusive
+  EXPECT_FALSE(DenseCheaper(4, 1));  // 64 > 32
+  EXPECT_TRUE(DenseCheaper(5, 4));   // 125 <= 128
+  EXPECT_FALSE(DenseCheaper(6, 5));  // 216 > 160
   EXPECT_FALSE(DenseCheaper(96, 95));
 }
 
@@ -479,5 +479,6 @@ TEST(KeaFactorMemory, WithUpdatesARestingSequenceReachesItsKeptFactor) {
     fresh.warmStart = o.warmStart;
     ExpectAgree(r, KeaSolveSparse(third.sparse(), fresh), t.name);
   }
+  ASSERT_GT(resting, 1);
   EXPECT_GE(reusing, resting - 1);
 }

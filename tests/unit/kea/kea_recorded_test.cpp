@@ -24,11 +24,12 @@
 // rainbowchain_update_48rows.txt: the RainbowChain tutorial's chain (48
 // rows, no friction; warm-started). Its three pivots are served by
 // Schur-complement updates of its first factorisation
-// (kea_schur_update.h), whose base is ill-conditioned enough that the
-// update's answer cancelled digits: the free rows' residual was 0.0015,
-// the solve ended on a consistent set it could not call solved, and
-// RainbowChain warned of its iteration cap. The answer of an update is now
-// refined from that residual (SparseBackend::refine), and it is solved.
+// (kea_schur_update.h), whose base is ill-conditioned enough that an
+// update's answer cancels digits: unrefined, the free rows' residual is
+// 0.0015 and the solve ends on a consistent set it cannot call solved.
+// Refined from that residual (SparseBackend::refine) it is solved. In
+// single precision the test fails without the refinement; the double
+// build solves the file's values without it.
 //
 // File format: "n nnz warm", the n + 1 row starts, nnz lines "col value",
 // then n lines "b lo hi findex mu warm"; values in C hex floats.

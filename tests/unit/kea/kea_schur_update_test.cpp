@@ -159,13 +159,63 @@ TEST(SchurUpdate, RefusesTheBaseItselfAChangeBeyondItsLimitAndALostBase) {
   std::vector<int> free = same.base;
   std::sort(free.begin(), free.end());
   EXPECT_FALSE(u.prepare(same.base, free, n, 0, SchurUpdate::kMaxRows, ColumnOf(a, n), SolveWith(base)));
-  const Case far = MakeCase(n, spare, 3, 6, 2);  // 9 rows change
+  // The cases below share the base's rows and order (seed 1).
+  const Case far = MakeCase(n, spare, 3, 6, 1);  // 9 rows change
   EXPECT_FALSE(u.prepare(far.base, far.free, n, 0, SchurUpdate::kMaxRows, ColumnOf(a, n), SolveWith(base)));
-  EXPECT_TRUE(u.prepare(far.base, far.free, n, 0, 9, ColumnOf(a, n), SolveWith(base)));
-  EXPECT_FALSE(u.prepare(far.base, far.free, n, 0, 0, ColumnOf(a, n), SolveWith(base)));
-  // Every base row clamped: nothing of the factor is kept.
-  std::vector<int> only = {n - spare, n - spare + 1};
-  EXPECT_FALSE(u.prepare(same.base, only, n, 0, SchurUpdate::kMaxRows, ColumnOf(a, n), SolveWith(base)));
+  EXPECT_FALSE(u.prepare(far.base, far.free, n, 0, 9, ColumnOf(a, n), SolveWith(base)));  // kMaxRows at most
+  const Case near = MakeCase(n, spare, 3, 4, 1);                                          // 7 rows change
+  ASSERT_EQ(near.base, same.base);
+  EXPECT_TRUE(u.prepare(near.base, near.free, n, 0, 7, ColumnOf(a, n), SolveWith(base)));
+  EXPECT_FALSE(u.prepare(near.base, near.free, n, 0, 6, ColumnOf(a, n), SolveWith(base)));
+  EXPECT_FALSE(u.prepare(near.base, near.free, n, 0, 0, ColumnOf(a, n), SolveWith(base)));
+  EXPECT_FALSE(u.prepare(near.base, near.free, n, 0, -1, ColumnOf(a, n), SolveWith(base)));
+  // Every base row clamped, within the limit: nothing of the factor is kept.
+  const std::vector<int> small = {0, 1, 2, 3}, others = {n - spare, n - spare + 1};
+  DenseLdlt smallBase;
+  Factor(smallBase, a, n, small);
+  EXPECT_FALSE(u.prepare(small, others, n, 0, SchurUpdate::kMaxRows, ColumnOf(a, n), SolveWith(smallBase)));
+  // The refusals left nothing behind: an update prepared now is exact.
+  ASSERT_TRUE(u.prepare(near.base, near.free, n, 0, SchurUpdate::kMaxRows, ColumnOf(a, n), SolveWith(base)));
+  const size_t m = u.order().size();
+  std::vector<MeReal> b(m, 1), x(m);
+  u.solve(b, x, SolveWith(base));
+  EXPECT_LT(BackwardError(a, n, u.order(), x, b), 64.0 * (double)m * ME_REAL_EPSILON);
+}
+
+// A freed row that repeats a free one (eps = 0: redundant contacts) makes
+// the new block singular. A fresh factorisation breaks down on it
+// (DenseLdlt's pivot floor); the update refuses it by the same rule, on
+// its scaled capacitance matrix, rather than divide by rounding.
+TEST(SchurUpdate, RefusesASingularChangeAsAFactorisationDoes) {
+  constexpr int n = 12;
+  // Diagonally dominant (well conditioned), with row 11 a copy of row 4.
+  std::vector<MeReal> a((size_t)n * n, 0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      a[(size_t)i * n + j] = i == j ? MeReal(4) : MeReal(0.1 * Unit(3, (std::uint32_t)(i * n + j)));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < i; ++j) a[(size_t)j * n + i] = a[(size_t)i * n + j];  // symmetric
+  for (int j = 0; j < n; ++j) a[(size_t)11 * n + j] = a[(size_t)4 * n + j];
+  for (int i = 0; i < n; ++i) a[(size_t)i * n + 11] = a[(size_t)i * n + 4];
+  a[(size_t)11 * n + 11] = a[(size_t)4 * n + 4];
+  std::vector<int> baseRows;
+  for (int i = 0; i < 10; ++i) baseRows.push_back(i);
+  DenseLdlt base;
+  Factor(base, a, n, baseRows);
+  std::vector<int> withCopy = baseRows;
+  withCopy.push_back(11);
+  DenseLdlt fresh;
+  fresh.reserve(withCopy.size());
+  fresh.begin((int)withCopy.size());
+  for (size_t i = 0; i < withCopy.size(); ++i)
+    for (size_t j = i; j < withCopy.size(); ++j) fresh.at((int)i, (int)j) = a[(size_t)withCopy[i] * n + withCopy[j]];
+  EXPECT_FALSE(fresh.factor());
+  SchurUpdate u;
+  EXPECT_FALSE(u.prepare(baseRows, withCopy, n, 0, SchurUpdate::kMaxRows, ColumnOf(a, n), SolveWith(base)));
+  // The row that is not a copy is taken.
+  std::vector<int> withOther = baseRows;
+  withOther.push_back(10);
+  EXPECT_TRUE(u.prepare(baseRows, withOther, n, 0, SchurUpdate::kMaxRows, ColumnOf(a, n), SolveWith(base)));
 }
 
 TEST(SchurUpdate, AddsEpsilonToTheAddedRowsDiagonal) {

@@ -33,11 +33,11 @@ struct PinnedHash {
 
 // clang-format off
 constexpr PinnedHash kPinned[] = {
-    {"car",      300,  "0x4f08049fc9a395de", "0xef6f3baf4882c061"},
-    {"topple",   600,  "0x747420794999f371", "0x923844663b84600d"},
-    {"ragdoll",  600,  "0x61b8a024a2e66cfc", "0x40b387cda22dec62"},
+    {"car",      300,  "0xe6c8076206943dae", "0x680cad1a9bb2fab3"},
+    {"topple",   600,  "0x1a152af94d93c32c", "0x03e9ffcefd6fd4dd"},
+    {"ragdoll",  600,  "0x72a5d257a66f3da6", "0x8101d80172bca7fd"},
     {"stack21",  1200, "0x260d13f2e6cfa06e", "0xcb17dc142a24693f"},
-    {"pile1000", 60,   "0x6883cb970da1b4ef", "0xf9c4c7d8965bc47c"},
+    {"pile1000", 60,   "0xac58266b963bcfef", "0xc1e9070c093ddfbd"},
 };
 // clang-format on
 
