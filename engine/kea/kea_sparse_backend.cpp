@@ -254,7 +254,7 @@ void SparseBackend::solveFree(const std::vector<unsigned char> &set, const std::
   const std::vector<int> &rows = factorOrder();
   if (updated_) {
     /* Checked by refine() against the residual the caller computes next. */
-    update_.solve(rhs_, x_, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
+    solveThroughUpdate(rhs_, x_);
     updateToCheck_ = true;
     refinements_ = kMaxRefine;
   } else if (factor_ == Factor::Dense) {
@@ -289,6 +289,12 @@ bool SparseBackend::updateServesFreeRows() {
   return updated_;
 }
 
+/* out = the updated block's inverse times in (update_.order()), through
+ * the dense base factor. */
+void SparseBackend::solveThroughUpdate(std::span<const MeReal> in, std::span<MeReal> out) const {
+  update_.solve(in, out, [this](std::span<const MeReal> b, std::span<MeReal> x) { dense_.solve(b, x); });
+}
+
 /* After a solve through the update: its free rows' residual is -w_F (w =
  * (A + eps I) lambda - b, as the caller computed it). While that is above
  * target_ and above the rounding of its own computation (the stale
@@ -317,7 +323,7 @@ bool SparseBackend::refine(std::vector<MeReal> &lambda, std::span<const MeReal> 
   if (!updateToCheck_) return false;
   --refinements_;
   cgZ_.resize(m);
-  update_.solve(cgR_, cgZ_, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
+  solveThroughUpdate(cgR_, cgZ_);
   for (std::size_t a = 0; a < m; ++a) lambda[U(rows[a])] += cgZ_[a];
   return true;
 }
@@ -499,9 +505,9 @@ void SparseBackend::learnFrictionRounds(int rounds) {
   frictionRoundsExpected_ += kStaleLearningRate * (static_cast<MeReal>(rounds) - frictionRoundsExpected_);
 }
 
-/* A stale solve, and what it took teaches its start's mean and, unless it was a probe, the keep rule's
- * iteration count and failure rate (a failure counts as every iteration
- * allowed). */
+/* A stale solve, and what it took teaches its start's mean and, unless
+ * it was a probe, the keep rule's iteration count and failure rate (a
+ * failure counts as every iteration allowed). */
 bool SparseBackend::solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice,
                                        const std::vector<MeReal> &lambda) {
   ++staleSolves_;
@@ -536,7 +542,7 @@ std::span<const int> SparseBackend::factorRows() const {
 
 void SparseBackend::solveWithFactor(std::span<const MeReal> rhs, std::span<MeReal> x) {
   if (updated_) {
-    update_.solve(rhs, x, [this](std::span<const MeReal> in, std::span<MeReal> out) { dense_.solve(in, out); });
+    solveThroughUpdate(rhs, x);
     updateToCheck_ = true; /* the coupled step's answer is refined like a solve's */
     refinements_ = kMaxRefine;
     return;

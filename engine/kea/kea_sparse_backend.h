@@ -311,6 +311,7 @@ class SparseBackend {
   bool solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice, const std::vector<MeReal> &lambda);
   void factorise(const std::vector<unsigned char> &set);
   bool updateServesFreeRows();
+  void solveThroughUpdate(std::span<const MeReal> in, std::span<MeReal> out) const;
   std::size_t envelopeFirsts(const std::vector<int> &rows);
   template <class Visit>
   void forEachFreeEntry(const std::vector<int> &rows, Visit visit, std::size_t from = 0);
