@@ -61,6 +61,16 @@ bool DenseFits(std::size_t m, std::size_t n, std::size_t nnz) {
   return m <= SparseBackend::kDenseRows && 3 * nnz >= n * n;
 }
 
+/* Moves a learnt expectation a step of kStaleRecoveryRate toward its
+ * prior, and onto the prior once rounding stops the step: approached from
+ * above, value + rate (prior - value) rounds back to value one ulp above
+ * the prior, and a rule that asks for value <= prior would never be met
+ * again. */
+void RecoverTowardPrior(MeReal &value, MeReal prior) {
+  const MeReal next = value + SparseBackend::kStaleRecoveryRate * (prior - value);
+  value = next == value ? prior : next;
+}
+
 }  // namespace
 
 /* See kea_sparse_backend.h. */
@@ -657,8 +667,8 @@ void SparseBackend::factorise(const std::vector<unsigned char> &set) {
       /* A factor not kept teaches nothing: the expectations drift back to
        * the priors so that the factor is tried again. */
       if (!staleWorthIt_) {
-        staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
-        staleFailureRate_ -= kStaleRecoveryRate * staleFailureRate_;
+        RecoverTowardPrior(staleIterationsExpected_, kStaleIterationsPrior);
+        RecoverTowardPrior(staleFailureRate_, 0);
       }
       rememberFactor();
       return;
@@ -675,7 +685,7 @@ void SparseBackend::keepDenseFactor() {
   staleWorthIt_ =
       memory_ == KeaFactorMemory::Always || (operatorOffered_ && staleIterationsExpected_ <= kDenseStaleIterations);
   if (!staleWorthIt_)
-    staleIterationsExpected_ += kStaleRecoveryRate * (kStaleIterationsPrior - staleIterationsExpected_);
+    RecoverTowardPrior(staleIterationsExpected_, kStaleIterationsPrior);
   rememberFactor();
 }
 

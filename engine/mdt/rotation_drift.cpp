@@ -24,10 +24,16 @@
 // the full angle near or beyond pi per step, a top at 200 rad/s on a ball
 // joint flies apart at 1/60 s (tests/hard_cases, docs/STABILITY.md).
 //
-// m solves F(m) = 2 m - Lb0 - Rot(Ib^-1 m, -h |Ib^-1 m|) Lb0 = 0 by Newton's
-// method from m = Lb0, the Jacobian by forward differences (step
-// sqrt(epsilon) |Lb0|); Lb1 is then the turned Lb0 for the last iterate, so
-// |L| and the world L hold whatever the iterate, E to the solve's accuracy.
+// m solves F(m) = 2 m - Lb0 - Rot(Ib^-1 m, -h |Ib^-1 m|) Lb0 = 0 from
+// m = Lb0, first by the fixed point m <- m - F(m) / 2 (one evaluation of F a
+// step): its map has the derivative (1/2) d(Rot Lb0)/dw Ib^-1, of size about
+// (h/2) |Lb0| |Ib^-1|, so a slow body (a rag doll at rest) converges in two
+// or three steps. While the steps shrink by less than half (a fast or very
+// uneven body) Newton's method takes over from the current iterate, the
+// Jacobian by forward differences (step sqrt(epsilon) |Lb0|; four
+// evaluations a step). Both stop when a step is within 4 epsilon |Lb0|. Lb1
+// is then the turned Lb0 for the last iterate, so |L| and the world L hold
+// whatever the iterate, E to the solve's accuracy.
 #include "mdt_internal.h"
 
 namespace karma::mdt {
@@ -35,6 +41,9 @@ namespace karma::mdt {
 namespace {
 
 constexpr int kNewtonIterations = 12;
+// Fixed-point steps before Newton's method must take over; a contracting
+// fixed point gains a factor of two or more a step.
+constexpr int kFixedPointIterations = 8;
 
 // The angle turned in one step at the speed s: h s up to one radian, then
 // phi = 1 + atan(h s - 1), smooth at 1 and below 1 + pi/2 at any speed.
@@ -66,15 +75,13 @@ void residual(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, MeReal h, cons
   for (int r = 0; r < 3; ++r) F[r] = 2 * m[r] - Lb0[r] - L1[r];
 }
 
-void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, MeReal h, MeVector3 m) {
-  MeVector3Copy(m, Lb0);
-  const MeReal size = MeVector3Magnitude(Lb0);
-  if (!(size > 0)) return;  // at rest: m = Lb0 = 0
-  const MeReal tol = 4 * ME_REAL_EPSILON * size;
+// Newton's method on F from m, whose residual F(m) is given; at most
+// kNewtonIterations steps, until a step is within tol.
+void newtonMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, MeReal h, MeReal size, MeReal tol,
+                            MeVector3 F, MeVector3 m) {
   const MeReal delta = MeSqrt(ME_REAL_EPSILON) * size;  // forward-difference step
   for (int it = 0; it < kNewtonIterations; ++it) {
-    MeVector3 F;
-    residual(invIb, Lb0, h, m, F);
+    if (it > 0) residual(invIb, Lb0, h, m, F);
     MeMatrix3 J, Jinv;
     for (int k = 0; k < 3; ++k) {
       MeVector3 mk, Fk;
@@ -89,6 +96,26 @@ void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, M
     MeVector3Subtract(m, m, dm);
     if (!(MeVector3Magnitude(dm) > tol)) return;
   }
+}
+
+void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, MeReal h, MeVector3 m) {
+  MeVector3Copy(m, Lb0);
+  const MeReal size = MeVector3Magnitude(Lb0);
+  if (!(size > 0)) return;  // at rest: m = Lb0 = 0
+  const MeReal tol = 4 * ME_REAL_EPSILON * size;
+  MeVector3 F;  // F(m) throughout
+  residual(invIb, Lb0, h, m, F);
+  MeReal lastStep = MEINFINITY;
+  for (int it = 0; it < kFixedPointIterations; ++it) {
+    const MeReal step = MeVector3Magnitude(F) / 2;
+    if (!(step <= lastStep / 2)) break;  // not contracting fast enough (or not finite)
+    MeVector3MultiplyAdd(m, -(MeReal)0.5, F);
+    if (!(step > tol)) return;
+    lastStep = step;
+    residual(invIb, Lb0, h, m, F);
+  }
+  if (!MeVector3AllFinite(F)) return;
+  newtonMidpointMomentum(invIb, Lb0, h, size, tol, F, m);
 }
 
 }  // namespace

@@ -304,3 +304,35 @@ TEST(KeaOperator, AWarmStartThatFailsItsCheckIsMultipliedOnce) {
   }
   EXPECT_GE(capped, 5);  // 7 of the 13 end short of the threshold after one solve
 }
+
+// A dense factor is kept, with an operator, while the workspace's stale
+// solves average at most kDenseStaleIterations; a stale solve far from its
+// factor teaches it to refactorise, and each factor not kept moves the
+// expectation back to its prior (kStaleIterationsPrior, the same value).
+// The expectation must land on the prior, not stop one rounding above it:
+// a resting car's problems are solved stale again after a few hundred
+// factorisations.
+TEST(KeaOperator, ADenseWorkspaceThatLearntToRefactoriseTriesItsFactorAgain) {
+  const ContactProblem car = kea_test::Car(1), near = Perturbed(car, 1e-5), far = Perturbed(car, 0.3);
+  const ReversedRows carOp(car), nearOp(near), farOp(far);
+  kea_test::Workspace workspace(KeaWorkspaceCreate());
+  KeaOptions o;
+  o.factorMemory = KeaFactorMemory::WhenCheaper;  // as Mdt asks: a dense factor kept only with an operator
+  KeaResult r;
+  KeaSolveSparse(carOp.problem(), o, *workspace, r);
+  ASSERT_EQ(r.status, KeaStatus::Solved);
+  o.warmStart = r.lambda;
+  KeaSolveSparse(farOp.problem(), o, *workspace, r);
+  ASSERT_EQ(r.status, KeaStatus::Solved);
+  ASSERT_EQ(r.staleSolves, 1);  // the kept factor was tried, and failed
+  ASSERT_GE(r.factorizations, 1);
+  int firstStale = -1;
+  for (int solve = 0; solve < 1000 && firstStale < 0; ++solve) {
+    o.warmStart = r.lambda;
+    KeaSolveSparse(nearOp.problem(), o, *workspace, r);
+    ASSERT_EQ(r.status, KeaStatus::Solved);
+    if (r.staleSolves > 0 && r.factorizations == 0) firstStale = solve;
+  }
+  EXPECT_GE(firstStale, 16);  // it learnt to refactorise first
+  EXPECT_GE(firstStale, 0) << "the dense factor was never kept again";
+}

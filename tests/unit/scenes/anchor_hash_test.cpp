@@ -33,9 +33,9 @@ struct PinnedHash {
 
 // clang-format off
 constexpr PinnedHash kPinned[] = {
-    {"car",      300,  "0xe6c8076206943dae", "0x680cad1a9bb2fab3"},
+    {"car",      300,  "0xe6c8076206943dae", "0xa38c2bfa36865b3a"},
     {"topple",   600,  "0x1a152af94d93c32c", "0x03e9ffcefd6fd4dd"},
-    {"ragdoll",  600,  "0x72a5d257a66f3da6", "0x8101d80172bca7fd"},
+    {"ragdoll",  600,  "0xaa0b6de77b1b105c", "0x328bc835f5af19c7"},
     {"stack21",  1200, "0x260d13f2e6cfa06e", "0xcb17dc142a24693f"},
     {"pile1000", 60,   "0xac58266b963bcfef", "0xc1e9070c093ddfbd"},
 };
