@@ -308,6 +308,7 @@ class SparseBackend {
   };
   StaleChoice chooseStaleStart(const std::vector<int> &rows, const std::vector<MeReal> &lambda);
   bool solveStale(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda, int &iterations);
+  bool acceptRecursive(const std::vector<int> &rows);
   bool solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice, const std::vector<MeReal> &lambda);
   void factorise(const std::vector<unsigned char> &set);
   bool updateServesFreeRows();

@@ -336,3 +336,39 @@ TEST(KeaOperator, ADenseWorkspaceThatLearntToRefactoriseTriesItsFactorAgain) {
   EXPECT_GE(firstStale, 16);  // it learnt to refactorise first
   EXPECT_GE(firstStale, 0) << "the dense factor was never kept again";
 }
+
+// A stale solve on a problem whose rows are all free (a chain's joints)
+// takes its accepted residual from the conjugate-gradient recursion instead
+// of a product of its own (SparseBackend::acceptRecursive). The answer's
+// true residual, recomputed from the stored matrix in double, still meets
+// the solved threshold, the reported one is within rounding of it, and the
+// answer agrees with a fresh solve.
+TEST(KeaOperator, AStaleSolveAcceptedOnItsRecursionMeetsTheThreshold) {
+  int recursive = 0;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const ContactProblem chain = kea_test::Chain(100, seed), next = Perturbed(chain, 1e-3);
+    const ReversedRows first(chain), nextOp(next);
+    kea_test::Workspace workspace(KeaWorkspaceCreate());
+    KeaOptions o;
+    o.factorMemory = KeaFactorMemory::Always;
+    KeaResult r;
+    KeaSolveSparse(first.problem(), o, *workspace, r);
+    ASSERT_EQ(r.status, KeaStatus::Solved);
+    o.warmStart = r.lambda;
+    KeaSolveSparse(nextOp.problem(), o, *workspace, r);
+    ASSERT_EQ(r.status, KeaStatus::Solved) << "seed " << seed;
+    if (r.factorizations == 0 && r.staleIterations > 0) ++recursive;
+    // The true residual, from the stored rows in double.
+    const std::size_t n = (std::size_t)next.n;
+    std::vector<MeReal> dense(n * n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = next.rowStart[i]; k < next.rowStart[i + 1]; ++k) dense[i * n + (size_t)next.col[(size_t)k]] = next.val[(size_t)k];
+    LcpProblem lcp{next.n, dense, next.b, next.lo, next.hi, next.findex, next.mu};
+    const MeReal truth = KeaResidual(lcp, o.epsilon, r.lambda);
+    const MeReal threshold = KeaDefaultTolerance() * (1 + (MeReal)kea_test::MaxAbs(next.b));
+    EXPECT_LE(truth, threshold) << "seed " << seed;
+    EXPECT_NEAR(r.residual, truth, threshold / 8) << "seed " << seed;
+    ExpectAgree(r, KeaSolveSparse(next.sparse(), KeaOptions{}), "chain100 seed " + std::to_string(seed));
+  }
+  EXPECT_GE(recursive, 2);  // the stale solves iterated and ended on the recursion
+}

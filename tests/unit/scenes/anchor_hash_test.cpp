@@ -37,7 +37,7 @@ constexpr PinnedHash kPinned[] = {
     {"topple",   600,  "0x1a152af94d93c32c", "0x03e9ffcefd6fd4dd"},
     {"ragdoll",  600,  "0xaa0b6de77b1b105c", "0x328bc835f5af19c7"},
     {"stack21",  1200, "0x260d13f2e6cfa06e", "0xcb17dc142a24693f"},
-    {"pile1000", 60,   "0xac58266b963bcfef", "0xc1e9070c093ddfbd"},
+    {"pile1000", 60,   "0xb0879d880f4aabd4", "0xc1e9070c093ddfbd"},
 };
 // clang-format on
 
