@@ -9,7 +9,9 @@
  *
  *   MeReal residual(std::span<const MeReal> lambda, std::span<MeReal> w);
  *       writes w = (A + eps I) lambda - b (when w is not empty) and returns
- *       the contract's residual of lambda;
+ *       the contract's residual of lambda; w may carry the rounding of an
+ *       iterative solve's recursion, far below the solved threshold
+ *       (SparseBackend::acceptRecursive);
  *   void solveFree(const std::vector<unsigned char> &set,
  *                  const std::vector<MeReal> &lo, const std::vector<MeReal> &hi,
  *                  std::vector<MeReal> &lambda);

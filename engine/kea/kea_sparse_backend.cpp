@@ -63,9 +63,9 @@ bool DenseFits(std::size_t m, std::size_t n, std::size_t nnz) {
 
 /* Moves a learnt expectation a step of kStaleRecoveryRate toward its
  * prior, and onto the prior once rounding stops the step: approached from
- * above, value + rate (prior - value) rounds back to value one ulp above
- * the prior, and a rule that asks for value <= prior would never be met
- * again. */
+ * above, value + rate (prior - value) rounds back to value a few ulps (up
+ * to 1 / (2 rate)) above the prior, and a rule that asks for
+ * value <= prior would never be met again. */
 void RecoverTowardPrior(MeReal &value, MeReal prior) {
   const MeReal next = value + SparseBackend::kStaleRecoveryRate * (prior - value);
   value = next == value ? prior : next;
@@ -210,11 +210,12 @@ MeReal SparseBackend::residual(std::span<const MeReal> lambda, std::span<MeReal>
   return ComplementarityResidual(Rows(p), lambda, out);
 }
 
-/* Whether productFull_ holds A lambda: the last multiplyFree covered every
- * row of this problem through its operator, and the vector it multiplied
- * is lambda, bit for bit. The operator's product of a row is a function of
- * the whole vector only (the bodies' sums), so it is the one
- * SparseMultiplyResidual would compute. */
+/* Whether productFull_ holds A lambda for lambda = cgFull_, bit for bit:
+ * the last multiplyFree covered every row of this problem through its
+ * operator (the operator's product of a row is a function of the whole
+ * vector only, the bodies' sums, so it is the one SparseMultiplyResidual
+ * would compute), or a stale solve took it from its accepted recursion
+ * (acceptRecursive: within rounding of that product). */
 bool SparseBackend::productOf(std::span<const MeReal> lambda) const {
   return productValid_ && lambda.size() == cgFull_.size() &&
          std::memcmp(lambda.data(), cgFull_.data(), lambda.size() * sizeof(MeReal)) == 0;
@@ -505,7 +506,7 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, c
         cgR_[a] -= alpha * cgQ_[a];
       }
       if (!(largest(cgR_) > accept)) {
-        if (acceptRecursive(rows)) return true;
+        if (acceptRecursive(rows, accept)) return true;
         break;
       }
       solveWithFactor(cgR_, cgZ_);
@@ -518,22 +519,25 @@ bool SparseBackend::solveStale(const std::vector<int> &rows, StaleStart start, c
   return true;
 }
 
-/* A conjugate-gradient iterate whose recursive residual r (cgR_) is
- * accepted, when every row is free and A comes through an operator: the
- * residual the caller computes next (residual(), a product with A over
- * every row) is taken from the recursion instead, A x = rhs - r - eps x,
- * and not checked by a product of its own. The recursion's r differs from
- * rhs - (A + eps I) x by the rounding of the products it summed, of the
- * size of the rounding allowance (4 eps (|A||x| + |rhs|)) for the one or
- * two iterations a stale solve takes, so the caller's w is within about
- * twice the acceptance of the true one: far below the solved threshold
- * (the target is a 64th of it). In the pile's settled steps nearly every
- * stale solve that iterates has every row free (docs/NOTES.md, "A stale
- * solve's last product"). Otherwise false: the caller multiplies. */
-bool SparseBackend::acceptRecursive(const std::vector<int> &rows) {
+/* A conjugate-gradient iterate whose recursive residual r (cgR_) is within
+ * `accept`, when every row is free, A comes through an operator and accept
+ * is at most kRecursiveAcceptance times the target: the residual the
+ * caller computes next (residual(), a product with A over every row) is
+ * taken from the recursion instead, A x = rhs - r - eps x, and not checked
+ * by a product of its own. The recursion's r drifts from
+ * rhs - (A + eps I) x by the rounding of each iteration's update and
+ * product, about eps (|A||x| + |A||d|): a quarter of the rounding allowance
+ * (4 eps (|A||x| + |rhs|)) an iteration, so after the kMaxRefine
+ * iterations allowed the true residual is within 2.5 accept <= 2.5 * 8 /
+ * kStaleTargetDivisor of the solved threshold (a third of it). In the pile's
+ * settled steps nearly every stale solve that iterates has every row free
+ * (docs/NOTES.md, "A stale solve's last product"). Otherwise false: the
+ * caller multiplies. */
+bool SparseBackend::acceptRecursive(const std::vector<int> &rows, MeReal accept) {
   const SparseLcpProblem &p = *p_;
   const std::size_t m = rows.size();
-  if (!p.op || m != U(p.n)) return false;
+  if (!p.op || m != U(p.n) || !(accept <= kRecursiveAcceptance * target_)) return false;
+  if (!std::isfinite(LargestOrInfinite(x_))) return false;
   cgFull_.resize(m);
   productFull_.resize(m);
   for (std::size_t a = 0; a < m; ++a) {

@@ -187,6 +187,10 @@ class SparseBackend {
 
   /* Conjugate-gradient iterations with a stale factor before refactorising. */
   static constexpr int kMaxRefine = 6;
+  /* A stale solve takes its accepted residual from the recursion
+   * (acceptRecursive) only while its acceptance is at most this many times
+   * the target. */
+  static constexpr MeReal kRecursiveAcceptance = 8;
   /* The conjugate-gradient iterations a stale solve is expected to take
    * before this backend has made one, and the weight of each stale solve's
    * count in the running mean that replaces it (a failed one counts
@@ -308,7 +312,7 @@ class SparseBackend {
   };
   StaleChoice chooseStaleStart(const std::vector<int> &rows, const std::vector<MeReal> &lambda);
   bool solveStale(const std::vector<int> &rows, StaleStart start, const std::vector<MeReal> &lambda, int &iterations);
-  bool acceptRecursive(const std::vector<int> &rows);
+  bool acceptRecursive(const std::vector<int> &rows, MeReal accept);
   bool solveStaleAndLearn(const std::vector<int> &rows, StaleChoice choice, const std::vector<MeReal> &lambda);
   void factorise(const std::vector<unsigned char> &set);
   bool updateServesFreeRows();
@@ -409,8 +413,9 @@ class SparseBackend {
   MeReal target_ = 0;
   bool operatorOffered_ = false;
   std::vector<MeReal> cgR_, cgZ_, cgD_, cgQ_, cgFull_;
-  /* (A x)_i of multiplyFree's last product for every row i when it
-   * covered them all (productValid_; x is cgFull_), before eps is added. */
+  /* (A x)_i for every row i, x = cgFull_, before eps is added, when
+   * productValid_: multiplyFree's last product when it covered every row,
+   * or a stale solve's accepted recursion (acceptRecursive). */
   std::vector<MeReal> productFull_;
   bool productValid_ = false;
   int staleSolves_ = 0, staleIterations_ = 0;

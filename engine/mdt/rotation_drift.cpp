@@ -28,12 +28,13 @@
 // m = Lb0, first by the fixed point m <- m - F(m) / 2 (one evaluation of F a
 // step): its map has the derivative (1/2) d(Rot Lb0)/dw Ib^-1, of size about
 // (h/2) |Lb0| |Ib^-1|, so a slow body (a rag doll at rest) converges in two
-// or three steps. While the steps shrink by less than half (a fast or very
-// uneven body) Newton's method takes over from the current iterate, the
-// Jacobian by forward differences (step sqrt(epsilon) |Lb0|; four
-// evaluations a step). Both stop when a step is within 4 epsilon |Lb0|. Lb1
-// is then the turned Lb0 for the last iterate, so |L| and the world L hold
-// whatever the iterate, E to the solve's accuracy.
+// or three steps. Once a step shrinks by less than half (a fast or very
+// uneven body), or the steps allowed are used up, Newton's method takes
+// over from the current iterate (from Lb0 when the first step made F
+// larger), the Jacobian by forward differences (step sqrt(epsilon) |Lb0|;
+// four evaluations a step). Both stop when a step is within
+// 4 epsilon |Lb0|. Lb1 is then the turned Lb0 for the last iterate, so |L|
+// and the world L hold whatever the iterate, E to the solve's accuracy.
 #include "mdt_internal.h"
 
 namespace karma::mdt {
@@ -41,8 +42,11 @@ namespace karma::mdt {
 namespace {
 
 constexpr int kNewtonIterations = 12;
-// Fixed-point steps before Newton's method must take over; a contracting
-// fixed point gains a factor of two or more a step.
+// Fixed-point steps allowed before Newton's method takes over. A slow body
+// contracts by a thousandth or less a step and needs two or three; in double
+// precision a body contracting by a tenth uses all eight and then Newton's
+// steps (handing over earlier, when the steps left could not reach the
+// tolerance, cost the single-precision rag doll 0.6 % more instructions).
 constexpr int kFixedPointIterations = 8;
 
 // The angle turned in one step at the speed s: h s up to one radian, then
@@ -103,12 +107,22 @@ void solveMidpointMomentum(MECONSTMATRIX MeMatrix3 invIb, const MeVector3 Lb0, M
   const MeReal size = MeVector3Magnitude(Lb0);
   if (!(size > 0)) return;  // at rest: m = Lb0 = 0
   const MeReal tol = 4 * ME_REAL_EPSILON * size;
-  MeVector3 F;  // F(m) throughout
-  residual(invIb, Lb0, h, m, F);
-  MeReal lastStep = MEINFINITY;
+  MeVector3 F0, F;  // F(Lb0); F(m) throughout
+  residual(invIb, Lb0, h, m, F0);
+  if (!MeVector3AllFinite(F0)) return;
+  MeVector3Copy(F, F0);
+  MeReal lastStep = 0;
   for (int it = 0; it < kFixedPointIterations; ++it) {
     const MeReal step = MeVector3Magnitude(F) / 2;
-    if (!(step <= lastStep / 2)) break;  // not contracting fast enough (or not finite)
+    if (it > 0 && !(step <= lastStep / 2)) {  // shrank by less than half, or not finite
+      // A first step that grew F (the map does not contract there) is
+      // undone: Newton starts from Lb0, as it would without it.
+      if (it == 1 && !(step < lastStep)) {
+        MeVector3Copy(m, Lb0);
+        MeVector3Copy(F, F0);
+      }
+      break;
+    }
     MeVector3MultiplyAdd(m, -(MeReal)0.5, F);
     if (!(step > tol)) return;
     lastStep = step;
