@@ -372,12 +372,9 @@ TEST(KeaOperator, AStaleSolveAcceptedOnItsRecursionMeetsTheThreshold) {
         EXPECT_EQ(nextOp.products(), 1 + r.staleIterations) << name;
       }
       const std::size_t n = (std::size_t)next.n;
-      std::vector<MeReal> dense(n * n, 0), w(n);
-      for (std::size_t i = 0; i < n; ++i)
-        for (int k = next.rowStart[i]; k < next.rowStart[i + 1]; ++k)
-          dense[i * n + (size_t)next.col[(size_t)k]] = next.val[(size_t)k];
-      LcpProblem lcp{next.n, dense, next.b, next.lo, next.hi, next.findex, next.mu};
-      const MeReal truth = KeaResidual(lcp, o.epsilon, r.lambda, w);
+      std::vector<MeReal> w(n);
+      const MeReal truth = karma::kea::detail::SparseMultiplyResidual(karma::platform::DefaultKernels(),
+                                                                      next.sparse(), o.epsilon, r.lambda, w);
       const MeReal threshold = KeaDefaultTolerance() * (1 + (MeReal)kea_test::MaxAbs(next.b));
       EXPECT_LE(truth, threshold) << name;
       EXPECT_NEAR(r.residual, truth, threshold / 8) << name;
