@@ -157,13 +157,16 @@ bool ValidateRows(const RowView &p, const KeaOptions &o, const char *function) {
   if (!(o.epsilon >= 0) || !std::isfinite(o.epsilon)) return Reject(function, "epsilon is negative or NaN");
   if (!(o.tolerance >= 0) || !std::isfinite(o.tolerance)) return Reject(function, "tolerance is negative or NaN");
   if (o.maxIterations < 0) return Reject(function, "maxIterations is negative");
-  bool anyFriction = false;
+  /* One pass; a friction row's mu is checked after its findex, so a
+   * problem with both faults is reported for its findex. */
+  const bool muFits = p.mu.size() == n;
   for (std::size_t i = 0; i < n; ++i) {
     const int j = p.findex.empty() ? -1 : p.findex[i];
     if (j >= 0) {
-      anyFriction = true;
       if (j >= p.n || static_cast<std::size_t>(j) == i) return Reject(function, "findex out of range");
       if (p.findex[static_cast<std::size_t>(j)] >= 0) return Reject(function, "findex points at another friction row");
+      if (!muFits) return Reject(function, "friction rows need n values of mu");
+      if (!(p.mu[i] >= 0 && std::isfinite(p.mu[i]))) return Reject(function, "mu is negative, NaN or infinite");
       continue;
     }
     if (j < -1) return Reject(function, "findex out of range");
@@ -172,12 +175,6 @@ bool ValidateRows(const RowView &p, const KeaOptions &o, const char *function) {
     if (lo > hi) return Reject(function, "lo > hi");
     if (NormaliseBound(lo) == kInf || NormaliseBound(hi) == -kInf)
       return Reject(function, "lo is +infinity or hi is -infinity");
-  }
-  if (anyFriction) {
-    if (p.mu.size() != n) return Reject(function, "friction rows need n values of mu");
-    for (std::size_t i = 0; i < n; ++i)
-      if (p.findex[i] >= 0 && !(p.mu[i] >= 0 && std::isfinite(p.mu[i])))
-        return Reject(function, "mu is negative, NaN or infinite");
   }
   return true;
 }
@@ -192,8 +189,13 @@ KeaResult BadInputResult(int n) {
 }
 
 MeReal SolvedThreshold(const RowView &p, const KeaOptions &o) {
+  /* b is finite here (validated), so the plain comparison is std::max's,
+   * and it runs in vector lanes. */
   MeReal bmax = 0;
-  for (MeReal v : p.b) bmax = std::max(bmax, std::fabs(v));
+  for (MeReal v : p.b) {
+    const MeReal a = std::fabs(v);
+    bmax = a > bmax ? a : bmax;
+  }
   const MeReal tol = o.tolerance > 0 ? o.tolerance : KeaDefaultTolerance();
   return tol * (MeReal(1) + bmax);
 }

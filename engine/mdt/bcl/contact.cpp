@@ -91,8 +91,9 @@ constexpr MeReal kKeptAxisShortest = (MeReal)0.5;
 bool tangentPart(const MeVector3 v, const MeVector3 n, MeReal shortest, MeVector3 out) {
   MeVector3Copy(out, v);
   MeVector3MultiplyAdd(out, -MeVector3Dot(out, n), n);
-  if (!(MeVector3Magnitude(out) > shortest)) return false;
-  MeVector3Normalize(out);
+  const MeReal length = MeVector3Magnitude(out);  // MeVector3Normalize's, computed once
+  if (!(length > shortest)) return false;
+  MeVector3Scale(out, 1 / length);
   return true;
 }
 

@@ -49,9 +49,11 @@ void wakeConnectedSleepers(ActiveSets &a) {
 // simulated constraint is in the list of one of its enabled bodies
 // (active_sets.h), so walking the awake bodies' lists finds them all; the
 // stamp keeps one joining two awake bodies from being taken twice.
+// The awake list is usually in order already: one pass checks it.
 void gatherAwake(ActiveSets &a, StepScratch &s) {
   s.bodies.assign(a.awake.begin(), a.awake.end());
-  std::sort(s.bodies.begin(), s.bodies.end(), bodyBefore);
+  if (!std::is_sorted(s.bodies.begin(), s.bodies.end(), bodyBefore))
+    std::sort(s.bodies.begin(), s.bodies.end(), bodyBefore);
   const std::uint64_t stamp = ++a.gatherStamp;
   s.constraints.clear();
   for (MdtBody *b : s.bodies) {
