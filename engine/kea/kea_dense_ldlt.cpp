@@ -22,28 +22,24 @@ void SubtractTwoScaledLanes(MeReal *__restrict y, const MeReal *__restrict x0, M
     platform::StoreLanes16(y + c, (LoadLanes16(y + c) - s0 * LoadLanes16(x0 + c)) - s1 * LoadLanes16(x1 + c));
 }
 
-/* GCC turns a copy loop of a fixed count into memcpy, and a memcpy of
- * the wider rows' 288-384 bytes into `rep movs`, whose start-up made the
- * whole factorisation about 14 % slower on this project's machines
- * (docs/NOTES.md, "String instructions in hot loops"): EliminateRow keeps
- * its loops. */
-#if defined(__GNUC__) && !defined(__clang__)
-#  define KARMA_KEEP_COPY_LOOPS __attribute__((optimize("no-tree-loop-distribute-patterns")))
-#else
-#  define KARMA_KEEP_COPY_LOOPS
-#endif
-
 /* Row j of the factorisation, columns from .. from + Width - 1 (from = j
  * rounded down to kLanes, from + Width = the stride): every update
  *     a_jc <- a_jc - l_jk u_kc,   l_jk = u_kj r_k,   k = 0 .. j - 1
  * in ascending k, the row held in `acc` (registers, for a fixed Width)
- * while the finished rows k stream past. Writes l_jk to lowerJ[k]. */
+ * while the finished rows k stream past. Writes l_jk to lowerJ[k]. A row
+ * wider than sixteen 16-byte registers is updated where it lies: a copy
+ * would live in memory all the same, and GCC makes the copies `rep movs`,
+ * whose start-up made a 75-row factorisation 8 % slower (docs/NOTES.md,
+ * "String instructions in hot loops"). */
 template <std::size_t Width>
-KARMA_KEEP_COPY_LOOPS void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::size_t j,
-                                        const MeReal *reciprocal, MeReal *lowerJ) {
+void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::size_t j, const MeReal *reciprocal,
+                  MeReal *lowerJ) {
+  constexpr bool kInPlace = Width * sizeof(MeReal) > 16 * 16;
   const std::size_t from = stride - Width;
-  MeReal acc[Width];
-  for (std::size_t c = 0; c < Width; ++c) acc[c] = rowJ[from + c];
+  MeReal local[kInPlace ? 1 : Width];
+  MeReal *const acc = kInPlace ? rowJ + from : local;
+  if constexpr (!kInPlace)
+    for (std::size_t c = 0; c < Width; ++c) acc[c] = rowJ[from + c];
   for (std::size_t k = 0; k < j; ++k) {
     const MeReal *rowK = upper + k * stride;
     const MeReal l = rowK[j] * reciprocal[k];
@@ -51,7 +47,8 @@ KARMA_KEEP_COPY_LOOPS void EliminateRow(MeReal *rowJ, const MeReal *upper, std::
     if (l == 0) continue; /* rows k and j do not interact: nothing to subtract */
     for (std::size_t c = 0; c < Width; ++c) acc[c] = acc[c] - l * rowK[from + c];
   }
-  for (std::size_t c = 0; c < Width; ++c) rowJ[from + c] = acc[c];
+  if constexpr (!kInPlace)
+    for (std::size_t c = 0; c < Width; ++c) rowJ[from + c] = acc[c];
   for (std::size_t c = from; c < j; ++c) rowJ[c] = 0; /* the scratch columns stay zero */
 }
 

@@ -189,6 +189,7 @@ KeaResult BadInputResult(int n) {
 }
 
 MeReal SolvedThreshold(const RowView &p, const KeaOptions &o) {
+  if (p.threshold > 0) return p.threshold;
   /* b is finite here (validated), so the plain comparison is std::max's,
    * and it runs in vector lanes. */
   MeReal bmax = 0;
