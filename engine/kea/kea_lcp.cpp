@@ -157,8 +157,8 @@ bool ValidateRows(const RowView &p, const KeaOptions &o, const char *function) {
   if (!(o.epsilon >= 0) || !std::isfinite(o.epsilon)) return Reject(function, "epsilon is negative or NaN");
   if (!(o.tolerance >= 0) || !std::isfinite(o.tolerance)) return Reject(function, "tolerance is negative or NaN");
   if (o.maxIterations < 0) return Reject(function, "maxIterations is negative");
-  /* One pass; a friction row's mu is checked after its findex, so a
-   * problem with both faults is reported for its findex. */
+  /* One pass: the first faulty row is reported (a friction row's findex
+   * before its mu). */
   const bool muFits = p.mu.size() == n;
   for (std::size_t i = 0; i < n; ++i) {
     const int j = p.findex.empty() ? -1 : p.findex[i];
@@ -190,13 +190,8 @@ KeaResult BadInputResult(int n) {
 
 MeReal SolvedThreshold(const RowView &p, const KeaOptions &o) {
   if (p.threshold > 0) return p.threshold;
-  /* b is finite here (validated), so the plain comparison is std::max's,
-   * and it runs in vector lanes. */
   MeReal bmax = 0;
-  for (MeReal v : p.b) {
-    const MeReal a = std::fabs(v);
-    bmax = a > bmax ? a : bmax;
-  }
+  for (MeReal v : p.b) bmax = std::max(bmax, std::fabs(v));
   const MeReal tol = o.tolerance > 0 ? o.tolerance : KeaDefaultTolerance();
   return tol * (MeReal(1) + bmax);
 }

@@ -31,32 +31,12 @@
 // body's MdtBodySetGyroscopicMode says); without it the body turns about w1
 // and keeps w1 (plainRotationTurn). Damping is applied only where its
 // coefficient is not zero (a zero coefficient adds -0 v: nothing).
-#include <cmath>
-
 #include "MeMessage.h"
 #include "mdt_internal.h"
 
 namespace karma::mdt {
 
 namespace {
-
-// out = m^-1 for an m whose symmetric part is positive definite (then det m
-// > 0): MeMatrix3Inverse's adjugate / det, the same operations in the same
-// order, without its test of near-singularity, whose three square roots
-// cost more than the rest. False, out unchanged, for a det that is not
-// positive and finite.
-bool inverseOfDefinite(MeMatrix3 out, MECONSTMATRIX MeMatrix3 m) {
-  MeVector3 c[3];
-  MeVector3Cross(c[0], m[1], m[2]);
-  MeVector3Cross(c[1], m[2], m[0]);
-  MeVector3Cross(c[2], m[0], m[1]);
-  const MeReal det = MeVector3Dot(m[0], c[0]);
-  if (!(det > 0) || !std::isfinite(det)) return false;
-  const MeReal r = 1 / det;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) out[i][j] = c[j][i] * r;
-  return true;
-}
 // The geometric stiffness may make a body at most this many times harder to
 // turn (by trace) than its own inertia does. K is built from last step's
 // constraint forces, so a body between constraints that fight (a ball joint
@@ -121,8 +101,11 @@ namespace {
 //   (Iw + h (W Iw - [Iw w]x)) dw = -h w x Iw w,    W = [w]x,
 // whose cross-axis factor is 1 / sqrt(1 + (h Omega)^2) <= 1: stable at any
 // spin, exact as h -> 0, and the spin about a principal axis is untouched
-// (w x Iw w = 0 there). The matrix is always invertible (its symmetric part
-// is Iw). The price: the free wobble of a spinner is damped by that factor
+// (w x Iw w = 0 there). The matrix is not always invertible: W Iw has a
+// symmetric part (W Iw - Iw W) / 2, and a body tumbling about its middle
+// axis at h|w| of order one makes det J negative or zero; where
+// MeMatrix3Inverse finds it singular the term is left out of the step. The
+// price: the free wobble of a spinner is damped by that factor
 // (it should precess at constant size), negligible while h Omega << 1.
 // Explicitly, a rag doll's capsule limb rolling on the ground spins itself
 // up and tears the doll apart (tests/unit/scenes, RagdollStaysConnected).
@@ -141,10 +124,10 @@ void gyroscopicStep(const MdtBody *b, MECONSTMATRIX MeMatrix3 Iw, MeReal h, MeVe
     MeVector3Cross(t2, L, e);             // [Iw w]x e_k
     for (int r = 0; r < 3; ++r) J[r][k] = col[r] + h * (t1[r] - t2[r]);
   }
-  if (inverseOfDefinite(Jinv, J))
+  if (MeMatrix3Inverse(Jinv, J))
     MeMatrix3MultiplyVector(dw, Jinv, f);
   else
-    MeVector3Set(dw, 0, 0, 0);  // unreachable: J's symmetric part is Iw
+    MeVector3Set(dw, 0, 0, 0);  // J singular (see above)
 }
 
 }  // namespace
@@ -196,7 +179,7 @@ void predictVelocities(MdtBody *b, const MeVector3 gravity, MeReal h) {
   const MeReal scale = geometricStiffnessScale(Iw, b->geomStiffness, h);
   for (int r = 0; r < 3; ++r)
     for (int k = 0; k < 3; ++k) Iw[r][k] += scale * b->geomStiffness[r][k];
-  if (!inverseOfDefinite(b->invInertiaWorld, Iw)) {
+  if (!MeMatrix3Inverse(b->invInertiaWorld, Iw)) {
     MeMatrix3MakeIdentity(b->invInertiaWorld);  // unreachable: Iw is positive definite
   }
 }

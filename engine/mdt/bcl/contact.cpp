@@ -87,7 +87,8 @@ namespace {
 constexpr MeReal kKeptAxisShortest = (MeReal)0.5;
 
 // out = the part of v in the plane normal to the unit n, normalised; false
-// (out unnormalised) when that part is not longer than `shortest`.
+// (out unnormalised) when that part is not longer than `shortest` (> 0, so
+// a zero, denormal or NaN length is never divided by).
 bool tangentPart(const MeVector3 v, const MeVector3 n, MeReal shortest, MeVector3 out) {
   MeVector3Copy(out, v);
   MeVector3MultiplyAdd(out, -MeVector3Dot(out, n), n);
