@@ -28,9 +28,6 @@ struct RowView {
   std::span<const MeReal> b, lo, hi;
   std::span<const int> findex;
   std::span<const MeReal> mu;
-  /* SolvedThreshold(*this, o) of the options it is solved with, when a
-   * caller has computed it already (it is positive); 0: not known. */
-  MeReal threshold = 0;
 };
 /* The backend of a solve's array kernels (KeaOptions::kernels). */
 inline const platform::Kernels &KernelsOf(const KeaOptions &o) {
@@ -83,8 +80,7 @@ bool ValidateSparseValues(const SparseLcpProblem &p, const KeaOptions &o, const 
 /* The BadInput result: zeros everywhere. */
 KeaResult BadInputResult(int n);
 
-/* Tolerance * (1 + max|b|): the residual below which the problem is solved
- * (p.threshold when the caller has set it). */
+/* Tolerance * (1 + max|b|): the residual below which the problem is solved. */
 MeReal SolvedThreshold(const RowView &p, const KeaOptions &o);
 
 /* Emits the iteration-cap / cycle warnings when options.warnings is set. */

@@ -189,7 +189,6 @@ KeaResult BadInputResult(int n) {
 }
 
 MeReal SolvedThreshold(const RowView &p, const KeaOptions &o) {
-  if (p.threshold > 0) return p.threshold;
   MeReal bmax = 0;
   for (MeReal v : p.b) bmax = std::max(bmax, std::fabs(v));
   const MeReal tol = o.tolerance > 0 ? o.tolerance : KeaDefaultTolerance();

@@ -213,9 +213,8 @@ void SolveSparse(const SparseLcpProblem &p, const KeaOptions &o, KeaWorkspace &w
     SparsePgs(p, o, kName, workspace.pgs, result);
     return;
   }
-  detail::RowView rows = detail::Rows(p);
-  rows.threshold = detail::SolvedThreshold(rows, o); /* the active set's too: same tolerance */
-  const MeReal target = rows.threshold / kStaleTargetDivisor;
+  const detail::RowView rows = detail::Rows(p);
+  const MeReal target = detail::SolvedThreshold(rows, o) / kStaleTargetDivisor;
   const bool warm = !o.warmStart.empty();
   KeaOptions first = o;
   first.warnings = o.warnings && !warm; /* a cycle here is retried, not reported */
