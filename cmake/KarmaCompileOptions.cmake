@@ -29,6 +29,10 @@ function(karma_library target export_name)
     # file, in case a shared library's user replaces it. Nobody does.
     target_compile_options(${target} PRIVATE
       $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-fno-semantic-interposition>)
+    # Archives usable without LTO too (KarmaLinkTimeOptimisation.cmake).
+    if(KARMA_LTO)
+      target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ffat-lto-objects>)
+    endif()
     # The libraries are C++; a program linked by the C compiler (a C-only
     # project) gets the C++ runtime from here.
     target_link_libraries(${target} INTERFACE "$<$<LINK_LANGUAGE:C>:stdc++>")
