@@ -5,12 +5,17 @@
 # bridge's queries through the public API); at link time they are inlined.
 # Floating-point code is compiled exactly as without it (no contraction, no
 # fast-math), so the results are the same bits; docs/PERFORMANCE.md gives
-# the figures and the check. The bench preset turns it on; the other presets
-# leave it off, because every test program would pay a whole-program link.
+# the figures and how that was checked. The bench preset turns it on; the
+# other presets, and so CI's tests, leave it off, because every test program
+# would pay a whole-program link.
 #
-# The libraries get fat objects (-ffat-lto-objects: machine code next to
-# the compiler's intermediate form), so that installed archives still link
-# into a program built without LTO, or by another compiler.
+# With GCC the libraries get fat objects (-ffat-lto-objects: machine code
+# next to the compiler's intermediate form), so that an installed archive
+# still holds ordinary code for a link that does not run GCC's link-time
+# compiler. GCC's own link does run it on the intermediate form (through
+# its linker plugin), so a program linked from these archives is link-time
+# optimised, with the warnings of the whole program at its link. (Clang's
+# archives would hold bitcode only: link them with Clang's LTO.)
 if(NOT KARMA_LTO)
   return()
 endif()
@@ -24,9 +29,3 @@ if(NOT karma_lto_supported)
   return()
 endif()
 set(CMAKE_INTERPROCEDURAL_OPTIMIZATION ON)
-# At the link, GCC 12 runs its late warnings again on the whole program and
-# reports -Wstringop-overflow on std::string copies inlined from libstdc++
-# (char_traits::copy "specified bound ... exceeds maximum object size" on
-# a string assignment in MeViewer's menu): a known false positive of that
-# analysis after inlining. The builds without LTO (CI's) keep the warning.
-add_link_options($<$<CXX_COMPILER_ID:GNU>:-Wno-stringop-overflow>)

@@ -55,7 +55,7 @@ for f in "$out"/reuse/*.png; do cp "$f" "$images/reuse-$(basename "$f")"; done
 
 Written by \`scripts/accuracy.sh\` (do not edit by hand: change the script or the tool and run it
 again) on $(date -u +%Y-%m-%d), $(git rev-parse --short HEAD), on a machine of $(nproc) cores, in
-the \`bench\` build (single precision, release). The tables and plots come from
+the \`bench\` build (single precision, release, link-time optimised). The tables and plots come from
 \`karma-tradeoff\` (\`tools/tradeoff/\`; \`karma-tradeoff --help\`), which anyone can run on these
 scenes, the tutorials' scenes or their own scene.
 

@@ -304,8 +304,9 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "peer_bench: no engine or no scene selected\n");
     return 2;
   }
+  std::printf("Karma build: %s\n",
+              KARMA_PEERS_LTO ? "link-time optimised (KARMA_LTO)" : "without link-time optimisation");
   // Every Karma world of the run is created after this and takes the default.
-  std::printf("Karma build: %s\n", KARMA_PEERS_LTO ? "link-time optimised (KARMA_LTO)" : "without link-time optimisation");
   std::printf("Karma platform backend: %s\n", MdtPlatformGetDefaultName());
   std::printf("Sleeping: %s\n\n", o.sleep ? "on in every engine, by its own rule and default thresholds" : "off");
   std::printf(

@@ -37,7 +37,8 @@ void MatchByPosition(const McdContact *cc, int n, MdtContactID *old, const MeU32
     for (int j = 0; j < oldCount; ++j) {
       if (taken[j]) continue;
       if (!renamed && cc[i].feature != 0 && oldFeature[j] != 0) continue;
-      MeVector3 p, nrm, d;
+      // Set first: the getters leave them unwritten on a bad contact.
+      MeVector3 p = {0, 0, 0}, nrm = {0, 0, 0}, d;
       MdtContactGetPosition(old[j], p);
       MdtContactGetNormal(old[j], nrm);
       if (sign * MeVector3Dot(nrm, cc[i].normal) < kMatchCosine) continue;

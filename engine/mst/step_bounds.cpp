@@ -64,7 +64,7 @@ MeReal StepMargin(McdModelID model, MdtBodyID body, MeReal h, MeReal gravity, Me
 }  // namespace
 
 void PrepareModelsForStep(MstUniverseID u, MeReal h) {
-  MeVector3 g;
+  MeVector3 g = {0, 0, 0};  // left unwritten on a bad world
   MdtWorldGetGravity(u->world, g);
   const MeReal gravity = Norm(g);
   const MeReal stepSize = h > 0 ? h : 0;

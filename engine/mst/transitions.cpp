@@ -28,7 +28,7 @@ void MEAPI MstBridgeUpdateContacts(MstBridgeID b, McdSpaceID space, MdtWorldID w
                  "the space is not in a change block (call McdSpaceBeginChanges after "
                  "handling its pairs); no contacts updated");
   McdSpaceEndChanges(space);
-  McdSpacePairIterator iter;
+  McdSpacePairIterator iter{};  // left unwritten on a bad space
   McdSpacePairIteratorBegin(space, &iter);
   int overflow;
   do {

@@ -14,10 +14,6 @@ namespace {
 // mask, not a division, since raw() runs for every array a step takes.
 std::size_t alignUp(std::size_t v, std::size_t a) { return (v + a - 1) & ~(a - 1); }
 constexpr std::size_t kAlign = alignof(std::max_align_t);
-// The blocks' own alignment: requests are aligned within a block, so the
-// block must be aligned for any of them (a double-precision four-lane
-// vector asks for 32 bytes; up to a cache line).
-constexpr std::size_t kBlockAlign = 64;
 }  // namespace
 
 StepArena::~StepArena() {

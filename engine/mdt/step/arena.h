@@ -9,6 +9,8 @@
 //     largest size any step used; so once a scene has reached its size the
 //     arena takes nothing from MeMemoryAPI any more (what the allocation test
 //     checks);
+//   - every block is aligned to kBlockAlign and every take to its type's
+//     alignment within it, so a type may ask for at most kBlockAlign;
 //   - memory is uninitialised: callers fill what they take.
 #pragma once
 
@@ -21,6 +23,10 @@ namespace karma::mdt {
 
 class StepArena {
  public:
+  // The blocks' alignment (a cache line; the widest vector a take holds,
+  // four doubles, needs 32).
+  static constexpr std::size_t kBlockAlign = 64;
+
   StepArena() = default;
   StepArena(const StepArena &) = delete;
   StepArena &operator=(const StepArena &) = delete;
@@ -34,6 +40,7 @@ class StepArena {
   template <class T>
   std::span<T> take(std::size_t n) {
     static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
+    static_assert(alignof(T) <= kBlockAlign);
     if (n == 0) return {};
     void *p = raw(n * sizeof(T), alignof(T));
     return {static_cast<T *>(p), n};
