@@ -29,7 +29,8 @@ function(karma_library target export_name)
     # file, in case a shared library's user replaces it. Nobody does.
     target_compile_options(${target} PRIVATE
       $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-fno-semantic-interposition>)
-    # Archives usable without LTO too (KarmaLinkTimeOptimisation.cmake).
+    # With KARMA_LTO, ordinary code beside the intermediate form in the
+    # archives (KarmaLinkTimeOptimisation.cmake).
     if(KARMA_LTO)
       target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-ffat-lto-objects>)
     endif()
