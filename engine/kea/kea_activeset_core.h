@@ -139,6 +139,19 @@ inline bool FrictionBoundsAgree(const std::vector<unsigned char> &set, std::span
   return true;
 }
 
+/* Room in s for a problem of n rows (ReserveRoom, kea_internal.h), with the
+ * friction coupling's arrays when the problem has friction. */
+inline void ReserveActiveSet(std::size_t n, bool friction, ActiveSetScratch &s) {
+  for (std::vector<MeReal> *v : {&s.lo, &s.hi, &s.newLo, &s.newHi, &s.best, &s.start}) ReserveRoom(*v, n);
+  ReserveRoom(s.set, n);
+  /* Room for a few single-pivot sets; a longer history grows the array. */
+  ReserveRoom(s.tried, 4 * n);
+  if (friction) {
+    ReserveRoom(s.saved, n);
+    ReserveCoupling(RowRoom(n), s.coupling);
+  }
+}
+
 /* The initial sets from the initial lambda (a warm start or zeros): a row
  * at or beyond a finite bound, or within `slack` of it, starts clamped
  * there, the rest free. The slack matters for friction rows warm-started
@@ -212,16 +225,11 @@ class ActiveSetRun {
       r_.status = KeaStatus::Solved;
       return false;
     }
+    ReserveActiveSet(n_, !p_.findex.empty(), s_);
     ComputeBounds(p_, r_.lambda, s_.lo, s_.hi);
     InitialSets(r_.lambda, slack_, s_);
     s_.newLo.resize(n_);
     s_.newHi.resize(n_);
-    /* Room for a few single-pivot sets; a longer history grows the array. */
-    s_.tried.reserve(4 * n_);
-    if (!p_.findex.empty()) {
-      s_.saved.reserve(n_);
-      ReserveCoupling(n_, s_.coupling);
-    }
     /* The starting point counts as an iterate too, but its residual (a
      * product with A) is only needed when no iterate reaches the solved
      * threshold, so it is scored at the end, if at all, unless the

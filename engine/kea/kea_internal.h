@@ -5,6 +5,7 @@
 #include "kea_lcp.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 #include <span>
 #include <vector>
@@ -19,6 +20,21 @@ inline MeReal NormaliseBound(MeReal v) {
   if (v >= MEINFINITY) return kInf;
   if (v <= -MEINFINITY) return -kInf;
   return v;
+}
+
+/* The rows a workspace makes room for when a problem of n rows comes: n
+ * rounded up to a power of two. A workspace whose problems grow a few rows
+ * at a time (a column that gains a landing box's rows each step) then
+ * reallocates its arrays about log2 n times, not once per size. */
+inline std::size_t RowRoom(std::size_t n) { return std::bit_ceil(n); }
+
+/* Room in v for n elements: RowRoom(n) when it has less than n. A vector
+ * with room enough keeps its buffer, so one that a solve swaps with another
+ * (the active set's saved impulses and the caller's answer) is not
+ * reallocated at the next solve. */
+template <class T>
+void ReserveRoom(std::vector<T> &v, std::size_t n) {
+  if (v.capacity() < n) v.reserve(RowRoom(n));
 }
 
 /* The per-row part of a problem (everything but the matrix), shared by the

@@ -157,43 +157,47 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   p_ = &p;
   eps_ = eps;
   const auto n = static_cast<std::size_t>(p.n);
+  /* Room for RowRoom(n) rows (kea_internal.h), so that a problem a few rows
+   * larger than the last one reallocates nothing. */
+  const std::size_t room = RowRoom(n);
+  ReserveRoom(position_, n);
   position_.assign(n, -1);
-  naturalRows_.reserve(n);
-  denseRows_.reserve(n);
-  degreeOrder_.reserve(n);
-  denseMapRows_.reserve(n);
-  denseCandidateRows_.reserve(n);
+  ReserveRoom(naturalRows_, n);
+  ReserveRoom(denseRows_, n);
+  ReserveRoom(degreeOrder_, n);
+  ReserveRoom(denseMapRows_, n);
+  ReserveRoom(denseCandidateRows_, n);
   /* Reverse Cuthill-McKee scratch (computeBandOrder). */
-  bandRank_.reserve(n);
-  queue_.reserve(n);
-  factoredSet_.reserve(n);
-  envelopeFactorRows_.reserve(n);
-  rhs_.reserve(n);
-  rhsFull_.reserve(n);
-  x_.reserve(n);
-  wScratch_.reserve(n);
+  ReserveRoom(bandRank_, n);
+  ReserveRoom(queue_, n);
+  ReserveRoom(factoredSet_, n);
+  ReserveRoom(envelopeFactorRows_, n);
+  ReserveRoom(rhs_, n);
+  ReserveRoom(rhsFull_, n);
+  ReserveRoom(x_, n);
+  ReserveRoom(wScratch_, n);
   /* Room for the largest envelope the rule below accepts, so that no free
    * set of this problem makes the envelope grow. */
-  std::size_t accepted = std::max(kEnvelopeRows * (kEnvelopeRows + 1) / 2, kEnvelopeWidth * n);
+  std::size_t accepted = std::max(kEnvelopeRows * (kEnvelopeRows + 1) / 2, kEnvelopeWidth * room);
   if (envelopeRows > 0)
     accepted = static_cast<std::size_t>(envelopeRows) * (static_cast<std::size_t>(envelopeRows) + 1) / 2;
   if (envelopeRows < 0) accepted = 0;
-  envelope_.reserve(n, std::min(accepted, n * (n + 1) / 2));
-  dense_.reserve(std::min(n, kDenseRows));
-  update_.reserve(n, std::min(n, kDenseRows));
-  updatedSet_.reserve(n);
+  envelope_.reserve(room, std::min(accepted, room * (room + 1) / 2));
+  dense_.reserve(std::min(room, kDenseRows));
+  update_.reserve(room, std::min(room, kDenseRows));
+  ReserveRoom(updatedSet_, n);
   /* refine()'s vectors (the stale solves' too). */
-  cgR_.reserve(n);
-  cgZ_.reserve(n);
-  cgFull_.reserve(n);
+  ReserveRoom(cgR_, n);
+  ReserveRoom(cgZ_, n);
+  ReserveRoom(cgFull_, n);
   /* The dense map's entries: the free block's upper triangle (made only
    * once a free set comes back, so reserved here). */
-  const std::size_t denseRowsMax = std::min(n, kDenseRows);
-  denseFill_.reserve(std::min(U(p.rowStart[n]), denseRowsMax * (denseRowsMax + 1) / 2));
+  const std::size_t denseRowsMax = std::min(room, kDenseRows);
+  denseFill_.reserve(std::min(RowRoom(U(p.rowStart[n])), denseRowsMax * (denseRowsMax + 1) / 2));
   envelopeRows_ = envelopeRows;
   keepOrderings(p);
-  bandRows_.reserve(n);
-  bandOrder_.reserve(n);
+  ReserveRoom(bandRows_, n);
+  ReserveRoom(bandOrder_, n);
   factor_ = Factor::None;
   ldltOk_ = false;
 }

@@ -27,6 +27,7 @@
 // Floating-point addition is commutative, so the order in which the bodies
 // are visited does not change a bit, and (i, j) and (j, i) are equal.
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <limits>
 
@@ -184,10 +185,28 @@ struct PartitionMemory {
   }
 };
 
+// Room in v for n elements rounded up to a power of two: a partition that
+// gains a few rows each step (a column under landing boxes) reallocates its
+// layout about log2 n times, not at every size.
+template <class T>
+void reserveRoom(std::vector<T> &v, size_t n) {
+  if (v.capacity() < n) v.reserve(std::bit_ceil(n));
+}
+
+// Room in memory's per-row and per-body arrays for p's sizes.
+void reserveLayoutRoom(const BodySpaceProblem &p, PartitionMemory &memory) {
+  const size_t m = (size_t)p.rowCount, bodies = (size_t)p.bodyCount;
+  for (std::vector<int> *v : {&memory.body0, &memory.body1, &memory.diagonal}) reserveRoom(*v, m);
+  reserveRoom(memory.rowStart, m + 1);
+  reserveRoom(memory.bodyRows, 2 * m);  // a row acts on at most two bodies
+  for (std::vector<int> *v : {&memory.bodyRowStart, &memory.runStart, &memory.upperStart}) reserveRoom(*v, bodies + 1);
+}
+
 // A's layout in `memory`, computed when the rows act on other bodies than
 // last step's, else kept.
 void updateLayout(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &memory) {
   if (memory.sameBodies(p)) return;
+  reserveLayoutRoom(p, memory);
   const int m = p.rowCount;
   rowsByBody(p, arena, memory.bodyRowStart, memory.bodyRows);
   const std::span<const int> bodyRowStart = memory.bodyRowStart, bodyRows = memory.bodyRows;
@@ -198,6 +217,7 @@ void updateLayout(const BodySpaceProblem &p, StepArena &arena, PartitionMemory &
       if (b >= 0) bound += (size_t)(bodyRowStart[(size_t)b + 1] - bodyRowStart[(size_t)b]);
   bound += (size_t)m;  // a row with no body keeps its diagonal
   memory.rowStart.resize((size_t)m + 1);
+  reserveRoom(memory.col, bound);
   memory.col.resize(bound);
   memory.diagonal.resize((size_t)m);
   Csr a{memory.rowStart, memory.col, {}};
