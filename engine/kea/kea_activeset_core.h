@@ -148,7 +148,7 @@ inline void ReserveActiveSet(std::size_t n, bool friction, ActiveSetScratch &s) 
   ReserveRoom(s.tried, 4 * n);
   if (friction) {
     ReserveRoom(s.saved, n);
-    ReserveCoupling(RowRoom(n), s.coupling);
+    ReserveCoupling(Room(n), s.coupling);
   }
 }
 

@@ -22,19 +22,18 @@ inline MeReal NormaliseBound(MeReal v) {
   return v;
 }
 
-/* The rows a workspace makes room for when a problem of n rows comes: n
- * rounded up to a power of two. A workspace whose problems grow a few rows
- * at a time (a column that gains a landing box's rows each step) then
+/* The room a workspace makes for n rows (or entries): n rounded up to a
+ * power of two (0 for none). A workspace whose problems grow a few rows at
+ * a time (a column that gains a landing box's rows each step) then
  * reallocates its arrays about log2 n times, not once per size. */
-inline std::size_t RowRoom(std::size_t n) { return std::bit_ceil(n); }
+inline std::size_t Room(std::size_t n) { return n ? std::bit_ceil(n) : 0; }
 
-/* Room in v for n elements: RowRoom(n) when it has less than n. A vector
- * with room enough keeps its buffer, so one that a solve swaps with another
- * (the active set's saved impulses and the caller's answer) is not
- * reallocated at the next solve. */
+/* Room(n) in v when it has less than n. A vector with room enough keeps its
+ * buffer, so one that a solve swaps with another (the active set's saved
+ * impulses and the caller's answer) is not reallocated at the next solve. */
 template <class T>
 void ReserveRoom(std::vector<T> &v, std::size_t n) {
-  if (v.capacity() < n) v.reserve(RowRoom(n));
+  if (v.capacity() < n) v.reserve(Room(n));
 }
 
 /* The per-row part of a problem (everything but the matrix), shared by the

@@ -157,9 +157,12 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   p_ = &p;
   eps_ = eps;
   const auto n = static_cast<std::size_t>(p.n);
-  /* Room for RowRoom(n) rows (kea_internal.h), so that a problem a few rows
-   * larger than the last one reallocates nothing. */
-  const std::size_t room = RowRoom(n);
+  /* Room for Room(n) rows (kea_internal.h), so that a problem a few rows
+   * larger than the last one reallocates nothing. The per-row arrays take it
+   * only when they have less than n (ReserveRoom); the factors' arrays
+   * (envelope_, dense_, update_, denseFill_) are sized from it outright:
+   * nothing swaps them, so they too grow once per power of two. */
+  const std::size_t room = Room(n);
   ReserveRoom(position_, n);
   position_.assign(n, -1);
   ReserveRoom(naturalRows_, n);
@@ -193,7 +196,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   /* The dense map's entries: the free block's upper triangle (made only
    * once a free set comes back, so reserved here). */
   const std::size_t denseRowsMax = std::min(room, kDenseRows);
-  denseFill_.reserve(std::min(RowRoom(U(p.rowStart[n])), denseRowsMax * (denseRowsMax + 1) / 2));
+  denseFill_.reserve(std::min(Room(U(p.rowStart[n])), denseRowsMax * (denseRowsMax + 1) / 2));
   envelopeRows_ = envelopeRows;
   keepOrderings(p);
   ReserveRoom(bandRows_, n);

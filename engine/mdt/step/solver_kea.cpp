@@ -185,9 +185,10 @@ struct PartitionMemory {
   }
 };
 
-// Room in v for n elements rounded up to a power of two: a partition that
-// gains a few rows each step (a column under landing boxes) reallocates its
-// layout about log2 n times, not at every size.
+// Room in v for n elements rounded up to a power of two, when it has less
+// than n (as Kea's ReserveRoom, kea_internal.h): a partition that gains a
+// few rows each step (a column under landing boxes) reallocates its layout
+// about log2 n times, not at every size.
 template <class T>
 void reserveRoom(std::vector<T> &v, size_t n) {
   if (v.capacity() < n) v.reserve(std::bit_ceil(n));
@@ -199,7 +200,9 @@ void reserveLayoutRoom(const BodySpaceProblem &p, PartitionMemory &memory) {
   for (std::vector<int> *v : {&memory.body0, &memory.body1, &memory.diagonal}) reserveRoom(*v, m);
   reserveRoom(memory.rowStart, m + 1);
   reserveRoom(memory.bodyRows, 2 * m);  // a row acts on at most two bodies
-  for (std::vector<int> *v : {&memory.bodyRowStart, &memory.runStart, &memory.upperStart}) reserveRoom(*v, bodies + 1);
+  reserveRoom(memory.bodyRowStart, bodies + 1);
+  reserveRoom(memory.runStart, bodies + 1);
+  reserveRoom(memory.upperStart, bodies);
 }
 
 // A's layout in `memory`, computed when the rows act on other bodies than
