@@ -49,18 +49,18 @@ void *StepArena::raw(std::size_t bytes, std::size_t align) {
     used_ = start + bytes;
     return static_cast<char *>(block_) + start;
   }
-  return overflow(bytes, align);
+  return overflow(bytes);
 }
 
 // The block is full: this request gets a block of its own, freed at the
 // next release past it or reset (which then grows the main block).
-void *StepArena::overflow(std::size_t bytes, std::size_t align) {
+void *StepArena::overflow(std::size_t bytes) {
   if (overflowCount_ == kMaxOverflow) {
     MeFatalError(0, "MdtWorldStep: the step arena ran out of overflow blocks");
     return nullptr;
   }
   const std::size_t size = alignUp(bytes, kAlign);
-  void *p = MeMemoryAPI.createAligned(size, (unsigned)std::max(align, kBlockAlign));
+  void *p = MeMemoryAPI.createAligned(size, (unsigned)kBlockAlign);  // take() allows no wider
   if (!p) {
     MeFatalError(0, "MdtWorldStep: out of memory for %zu bytes of step scratch", bytes);
     return nullptr;

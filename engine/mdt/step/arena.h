@@ -71,7 +71,7 @@ class StepArena {
     std::size_t size;
   };
   void *raw(std::size_t bytes, std::size_t align);
-  void *overflow(std::size_t bytes, std::size_t align);
+  void *overflow(std::size_t bytes);
 
   void *block_ = nullptr;
   std::size_t size_ = 0, used_ = 0;
