@@ -45,17 +45,19 @@ namespace karma::kea::detail {
 enum RowSet : unsigned char { Free = 0, AtLo = 1, AtHi = 2 };
 
 /* KeaOptions::acceptWarmStart keeps a warm start whose residual is at most
- * the solved threshold divided by this. Not the threshold itself: at rest
- * the accepted impulses then err by up to the threshold step after step
- * (each accepted warm start is the last one, checked against a slightly
- * changed problem), and in single precision that error turns a resting
- * box by more than the auto-disable thresholds allow: a heap of 200 boxes
- * never slept, a box on four contacts sank 1 mm in 2 s, and a joint's
- * reported torque was 0.4 % off. At a sixteenth none of that happens (the
- * tests that measure them pass), while most resting steps of topple and
- * of the car still keep their warm start (docs/NOTES.md, "Warm starts that
- * are already answers"). */
+ * the solved threshold divided by KeaOptions::warmAcceptDivisor, whose
+ * default is this. Not the threshold itself: when every call may keep its
+ * warm start, at rest the kept impulses err by up to the threshold step
+ * after step (each kept warm start is the last one, checked against a
+ * slightly changed problem), and in single precision that error turns a
+ * resting box by more than the auto-disable thresholds allow: a heap of
+ * 200 boxes never slept (at a divisor of 1 and of 4), a box on four
+ * contacts sank 1 mm in 2 s, and a joint's reported torque was 0.4 % off.
+ * At a sixteenth none of that happens (the tests that measure them pass),
+ * while most resting steps of topple and of the car still keep their warm
+ * start (docs/NOTES.md, "Warm starts that are already answers"). */
 inline constexpr MeReal kWarmAcceptDivisor = 16;
+static_assert(KeaOptions{}.warmAcceptDivisor == kWarmAcceptDivisor, "the option's default is this divisor");
 
 /* The warm-start check (KeaOptions::acceptWarmStart) costs one product with
  * A and saves, when it accepts, at least a triangular solve and the product
@@ -221,6 +223,7 @@ class ActiveSetRun {
     r_.warmStartAccepted = false;
     r_.frictionRounds = 0;
     r_.residual = 0;
+    r_.threshold = threshold_;
     if (n_ == 0) {
       r_.status = KeaStatus::Solved;
       return false;
@@ -240,7 +243,7 @@ class ActiveSetRun {
   }
 
   /* KeaOptions::acceptWarmStart: whether the warm start meets the solved
-   * threshold over kWarmAcceptDivisor as it is (then it is the answer, with
+   * threshold over o_.warmAcceptDivisor as it is (then it is the answer, with
    * no solve). Scored when the workspace expects the check to pay
    * (kWarmCheckFloor); a check that fails leaves the warm start scored as
    * the best iterate so far, which finish() need not score again. */
@@ -253,7 +256,7 @@ class ActiveSetRun {
     }
     score();
     startScored_ = true;
-    r_.warmStartAccepted = bestResidual_ <= threshold_ / kWarmAcceptDivisor;
+    r_.warmStartAccepted = bestResidual_ <= threshold_ / o_.warmAcceptDivisor;
     mean += kWarmLearningRate * ((r_.warmStartAccepted ? MeReal(1) : MeReal(0)) - mean);
     return r_.warmStartAccepted;
   }

@@ -157,6 +157,7 @@ bool ValidateRows(const RowView &p, const KeaOptions &o, const char *function) {
   if (!(o.epsilon >= 0) || !std::isfinite(o.epsilon)) return Reject(function, "epsilon is negative or NaN");
   if (!(o.tolerance >= 0) || !std::isfinite(o.tolerance)) return Reject(function, "tolerance is negative or NaN");
   if (o.maxIterations < 0) return Reject(function, "maxIterations is negative");
+  if (!(o.warmAcceptDivisor >= 1)) return Reject(function, "warmAcceptDivisor is below 1 or NaN");
   /* One pass: the first faulty row is reported (a friction row's findex
    * before its mu). */
   const bool muFits = p.mu.size() == n;

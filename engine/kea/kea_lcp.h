@@ -204,14 +204,23 @@ struct KeaOptions {
   bool trustedStructure = false;
   /* Active set with a warm start: first check the warm start itself (one
    * product with A) and return it, without a linear solve, when its
-   * residual is already at most a sixteenth of the solved threshold
-   * (kWarmAcceptDivisor, kea_activeset_core.h). The answer meets the
-   * contract with room to spare but is not refined further, where a solve
-   * usually ends near rounding. For a caller whose
-   * problems change little from one call to the next (a scene at rest); a
-   * workspace that sees its checks fail makes them rarely (ActiveSetScratch::
-   * warmAccepted). Off: the warm start only chooses the initial sets. */
+   * residual is already at most the solved threshold over
+   * warmAcceptDivisor. The answer meets the contract with room to spare
+   * but is not refined further, where a solve usually ends near rounding.
+   * For a caller whose problems change little from one call to the next (a
+   * scene at rest); a workspace that sees its checks fail makes them
+   * rarely (ActiveSetScratch::warmAccepted). Off: the warm start only
+   * chooses the initial sets. */
   bool acceptWarmStart = false;
+  /* At least 1 (else BadInput). Not the threshold itself by default: a
+   * caller that passes each answer back as the next warm start keeps the
+   * same impulses step after step against a problem that slowly changes,
+   * so a kept answer's residual climbs to the divisor's bound and stays
+   * there (kea_activeset_core.h, kWarmAcceptDivisor, says what that did
+   * at a divisor of 1 and 4). A caller that knows how its last answer
+   * came may loosen it for one call at a time (Mdt's exact solver:
+   * solver_kea.cpp, kLooseKeepDivisor). */
+  MeReal warmAcceptDivisor = 16;
   /* KeaSolveSparse, active set: a pivot whose free set differs by at most
    * this many rows (freed and clamped together; at most 8, the default)
    * from the rows of the dense factor made for this problem solves the new
@@ -230,6 +239,9 @@ struct KeaResult {
   KeaStatus status = KeaStatus::BadInput;
   int iterations = 0;  /* linear solves (active set) or sweeps (PGS) */
   MeReal residual = 0; /* max complementarity violation (absolute) */
+  /* The solved threshold the residual was held to (SolvedThreshold: the
+   * tolerance scaled by the problem); 0 for BadInput. */
+  MeReal threshold = 0;
   /* Statistics (active set; 0 for PGS): factorisations of a free block (a
    * solve whose free set is the previous solve's re-uses its factor), and
    * friction fixed-point rounds that needed another inner solve (0 when

@@ -25,6 +25,7 @@ KeaResult KeaSolvePGS(const LcpProblem &p, const KeaOptions &o) {
   const MeReal threshold = detail::SolvedThreshold(detail::Rows(p), o);
 
   KeaResult r;
+  r.threshold = threshold;
   detail::InitialLambda(o, n, r.lambda);
   r.w.assign(n, MeReal(0));
 

@@ -65,6 +65,7 @@ void SparsePgs(const SparseLcpProblem &p, const KeaOptions &o, const char *name,
   r.factorizations = 0;
   r.frictionRounds = 0;
   r.warmStartAccepted = false;
+  r.threshold = threshold;
   r.staleSolves = r.staleIterations = r.factorUpdates = 0;
 
   detail::ComputeBounds(rows, r.lambda, s.lo, s.hi);
@@ -179,7 +180,7 @@ void BadInput(int n, KeaResult &result) {
   result.iterations = result.factorizations = result.frictionRounds = 0;
   result.staleSolves = result.staleIterations = result.factorUpdates = 0;
   result.warmStartAccepted = false;
-  result.residual = 0;
+  result.residual = result.threshold = 0;
 }
 
 }  // namespace

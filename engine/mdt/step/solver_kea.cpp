@@ -34,6 +34,7 @@
 #include "body_space_operator.h"
 #include "kea_lcp.h"
 #include "partition_solver.h"
+#include "warm_keep_rule.h"
 
 namespace karma::mdt {
 
@@ -172,6 +173,9 @@ struct PartitionMemory {
   std::vector<int> runStart, upperStart;     // layoutShareRuns
   std::vector<ShareRun> runs;                // layoutShareRuns
   int widestBody = 0;                        // the most rows on one body
+  // How the last answer came, which decides how the next warm start is
+  // checked (warm_keep_rule.h).
+  LastAnswer lastAnswer = LastAnswer::Unknown;
   // Numbers the layouts this memory has held (1, 2, ...): Kea's name for
   // A's sparsity (SparseLcpProblem::sparsityStamp). The workspace is this
   // memory's alone, so the number needs to be unique only here.
@@ -373,6 +377,7 @@ class PartitionMemories {
       return use(slots_.back());
     }
     oldest->identity = identity;
+    oldest->lastAnswer = LastAnswer::Unknown;
     return use(*oldest);
   }
 
@@ -423,11 +428,14 @@ class KeaSolver final : public PartitionSolver {
     opt.kernels = settings.kernels;
     opt.epsilon = 0;  // softness is already on the diagonal
     if (p.anyWarm) opt.warmStart = p.warm;
-    opt.acceptWarmStart = settings.acceptWarmStart;
+    const WarmKeep keep = warmKeepAfter(memory.lastAnswer);
+    opt.acceptWarmStart = settings.acceptWarmStart && keep.check;
+    opt.warmAcceptDivisor = keep.divisor;
     opt.factorMemory = kea::KeaFactorMemory::WhenCheaper;
     opt.trustedStructure = true;  // layoutColumns: ascending columns, every diagonal present
     opt.warnings = false;         // the step reports, rate-limited (solve_warnings.h)
     kea::KeaSolveSparse(prob, opt, *memory.workspace, result_);
+    memory.lastAnswer = lastAnswerOf(result_, memory.lastAnswer);
     report.iterations = result_.iterations;
     report.residual = result_.residual;
     report.factorizations = result_.factorizations;

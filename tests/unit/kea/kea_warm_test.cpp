@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -167,11 +168,11 @@ namespace {
 
 // b of t's problem moved by 1e-3 of its largest entry, row by row: a
 // problem its own answer no longer solves to the tolerance.
-ContactProblem Perturbed(const ContactProblem &problem) {
+ContactProblem Perturbed(const ContactProblem &problem, double size = 1e-3) {
   ContactProblem next = problem;
   const double bMax = MaxAbs(next.b);
   for (std::size_t i = 0; i < next.b.size(); ++i)
-    next.b[i] += static_cast<MeReal>(1e-3 * bMax * kea_test::Jitter(7, static_cast<unsigned>(i)));
+    next.b[i] += static_cast<MeReal>(size * bMax * kea_test::Jitter(7, static_cast<unsigned>(i)));
   return next;
 }
 
@@ -202,10 +203,63 @@ TEST(KeaWarmStart, AnAnswerIsKeptAsItIsWhenAskedFor) {
     EXPECT_EQ(kept.iterations, 0) << t.name;
     EXPECT_EQ(kept.factorizations, 0) << t.name;
     EXPECT_TRUE(kept.lambda == cold.lambda) << t.name;  // bit for bit: no solve touched it
-    EXPECT_EQ(kept.residual, residual) << t.name;        // the warm start's own residual and w
+    EXPECT_EQ(kept.residual, residual) << t.name;       // the warm start's own residual and w
     EXPECT_TRUE(kept.w == w) << t.name;
   }
   EXPECT_GE(keptCount, 10);  // most of the 15
+}
+
+TEST(KeaWarmStart, TheKeepBoundFollowsTheDivisor) {
+  // Last problem's answer as the warm start of a perturbed problem (b moved
+  // by up to 1/32 ... 2 tolerances of its largest value, so that the warm
+  // start's residual falls on both sides of each bound): kept exactly when its
+  // residual is within the solved threshold over
+  // KeaOptions::warmAcceptDivisor, whatever the divisor; the result reports
+  // the threshold it was held to.
+  int keptLoosely = 0, keptAtDefault = 0;
+  for (const Named &t : Problems()) {
+    const KeaResult first = KeaSolveSparse(t.problem.sparse(), KeaOptions{});
+    ASSERT_EQ(first.status, KeaStatus::Solved) << t.name;
+    EXPECT_EQ(first.threshold, KeaDefaultTolerance() * (1 + static_cast<MeReal>(MaxAbs(t.problem.b)))) << t.name;
+    for (double share : {1.0 / 32, 1.0 / 8, 1.0 / 5, 1.0 / 2, 2.0}) {
+      const double size = share * static_cast<double>(KeaDefaultTolerance());
+      const ContactProblem next = Perturbed(t.problem, size);
+      std::vector<MeReal> w(first.lambda.size());
+      const MeReal residual = karma::kea::detail::SparseMultiplyResidual(karma::platform::DefaultKernels(),
+                                                                         next.sparse(), 0, first.lambda, w);
+      const MeReal threshold = KeaDefaultTolerance() * (1 + static_cast<MeReal>(MaxAbs(next.b)));
+      for (MeReal divisor : {MeReal(1), MeReal(2), MeReal(4), MeReal(16)}) {
+        KeaOptions o;
+        o.warmStart = first.lambda;
+        o.acceptWarmStart = true;
+        o.warmAcceptDivisor = divisor;
+        const KeaResult r = KeaSolveSparse(next.sparse(), o);
+        ASSERT_EQ(r.status, KeaStatus::Solved) << t.name;
+        EXPECT_EQ(r.threshold, threshold) << t.name;
+        const bool keep = residual <= threshold / divisor;
+        EXPECT_EQ(r.warmStartAccepted, keep) << t.name << ": divisor " << divisor << ", residual " << residual;
+        if (keep) {
+          EXPECT_TRUE(r.lambda == first.lambda) << t.name;
+        }
+        if (divisor == 4 && keep) ++keptLoosely;
+        if (divisor == 16 && keep) ++keptAtDefault;
+      }
+    }
+  }
+  EXPECT_GT(keptLoosely, keptAtDefault);  // some perturbations land between the two bounds
+}
+
+TEST(KeaWarmStart, AKeepDivisorBelowOneIsBadInput) {
+  const std::vector<Named> problems = Problems();
+  const ContactProblem &problem = problems.front().problem;
+  for (MeReal divisor : {MeReal(0.5), MeReal(0), MeReal(-4), std::numeric_limits<MeReal>::quiet_NaN()}) {
+    KeaOptions o;
+    o.warnings = false;
+    o.warmAcceptDivisor = divisor;
+    const KeaResult r = KeaSolveSparse(problem.sparse(), o);
+    EXPECT_EQ(r.status, KeaStatus::BadInput) << divisor;
+    EXPECT_EQ(r.threshold, 0) << divisor;
+  }
 }
 
 TEST(KeaWarmStart, AWarmStartThatIsNoLongerAnAnswerIsSolved) {

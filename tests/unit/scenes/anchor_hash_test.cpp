@@ -33,10 +33,10 @@ struct PinnedHash {
 
 // clang-format off
 constexpr PinnedHash kPinned[] = {
-    {"car",      300,  "0xe6c8076206943dae", "0xa38c2bfa36865b3a"},
-    {"topple",   600,  "0x1a152af94d93c32c", "0x03e9ffcefd6fd4dd"},
-    {"ragdoll",  600,  "0xaa0b6de77b1b105c", "0x328bc835f5af19c7"},
-    {"stack21",  1200, "0x260d13f2e6cfa06e", "0xcb17dc142a24693f"},
+    {"car",      300,  "0x95271ad45448d9e1", "0xbbcbb8bf8896052c"},
+    {"topple",   600,  "0xea8a587b223cedc2", "0x24623ef175b2134c"},
+    {"ragdoll",  600,  "0x87a6ac4806cc8906", "0x328bc835f5af19c7"},
+    {"stack21",  1200, "0x68c37f6269bb1051", "0x8cd2312c0f1ca41d"},
     {"pile1000", 60,   "0xb0879d880f4aabd4", "0xc1e9070c093ddfbd"},
 };
 // clang-format on
