@@ -5,6 +5,7 @@
 #include "lanes16.h"
 
 #include <algorithm>
+#include <bit>
 #include <utility>
 
 namespace karma::kea::detail {
@@ -26,27 +27,37 @@ void SubtractTwoScaledLanes(MeReal *__restrict y, const MeReal *__restrict x0, M
  * rounded down to kLanes, from + Width = the stride): every update
  *     a_jc <- a_jc - l_jk u_kc,   l_jk = u_kj r_k,   k = 0 .. j - 1
  * in ascending k, the row held in `acc` (registers, for a fixed Width)
- * while the finished rows k stream past. Writes l_jk to lowerJ[k]. A row
+ * while the finished rows k stream past. Writes l_jk to lowerJ[k], notes
+ * the group of each nonzero l_jk in *lowerGroupsJ and, for each nonzero
+ * u_kj (a finished entry of row k), the group of column j in
+ * upperGroups[k]: every u_kc with c > k is read here once. A row
  * wider than sixteen 16-byte registers is updated where it lies: a copy
  * would live in memory all the same, and GCC makes the copies `rep movs`,
  * whose start-up made a 75-row factorisation 8 % slower (docs/NOTES.md,
  * "String instructions in hot loops"). */
 template <std::size_t Width>
 void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::size_t j, const MeReal *reciprocal,
-                  MeReal *lowerJ) {
+                  MeReal *lowerJ, DenseLdlt::GroupMask *upperGroups, DenseLdlt::GroupMask *lowerGroupsJ) {
   constexpr bool kInPlace = Width * sizeof(MeReal) > 16 * 16;
+  constexpr auto kLanes = static_cast<std::size_t>(DenseLdlt::kLanes);
   const std::size_t from = stride - Width;
+  const DenseLdlt::GroupMask groupJ = DenseLdlt::GroupMask(1) << (j / kLanes);
+  DenseLdlt::GroupMask lowerMask = 0;
   MeReal local[kInPlace ? 1 : Width];
   MeReal *const acc = kInPlace ? rowJ + from : local;
   if constexpr (!kInPlace)
     for (std::size_t c = 0; c < Width; ++c) acc[c] = rowJ[from + c];
   for (std::size_t k = 0; k < j; ++k) {
     const MeReal *rowK = upper + k * stride;
-    const MeReal l = rowK[j] * reciprocal[k];
+    const MeReal u = rowK[j];
+    if (u != 0) upperGroups[k] |= groupJ;
+    const MeReal l = u * reciprocal[k];
     lowerJ[k] = l;
     if (l == 0) continue; /* rows k and j do not interact: nothing to subtract */
+    lowerMask |= DenseLdlt::GroupMask(1) << (k / kLanes);
     for (std::size_t c = 0; c < Width; ++c) acc[c] = acc[c] - l * rowK[from + c];
   }
+  *lowerGroupsJ = lowerMask;
   if constexpr (!kInPlace)
     for (std::size_t c = 0; c < Width; ++c) rowJ[from + c] = acc[c];
   for (std::size_t c = from; c < j; ++c) rowJ[c] = 0; /* the scratch columns stay zero */
@@ -56,11 +67,25 @@ void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::si
  * kMaxRows / kLanes): a run-time width picks its compiled instance. */
 template <std::size_t... Groups>
 void EliminateRowOf(std::size_t groups, std::index_sequence<Groups...>, MeReal *rowJ, const MeReal *upper,
-                    std::size_t stride, std::size_t j, const MeReal *reciprocal, MeReal *lowerJ) {
+                    std::size_t stride, std::size_t j, const MeReal *reciprocal, MeReal *lowerJ,
+                    DenseLdlt::GroupMask *upperGroups, DenseLdlt::GroupMask *lowerGroupsJ) {
   constexpr auto kLanes = static_cast<std::size_t>(DenseLdlt::kLanes);
   (void)((groups == Groups + 1 &&
-          (EliminateRow<(Groups + 1) * kLanes>(rowJ, upper, stride, j, reciprocal, lowerJ), true)) ||
+          (EliminateRow<(Groups + 1) * kLanes>(rowJ, upper, stride, j, reciprocal, lowerJ, upperGroups, lowerGroupsJ),
+           true)) ||
          ...);
+}
+
+/* SubtractTwoScaledLanes on the groups of kLanes values whose bits are set
+ * in `groups` (bit g: values g kLanes .. (g + 1) kLanes - 1). */
+void SubtractTwoScaledGroups(MeReal *__restrict y, const MeReal *__restrict x0, MeReal s0, const MeReal *__restrict x1,
+                             MeReal s1, DenseLdlt::GroupMask groups) {
+  constexpr auto kLanes = static_cast<std::size_t>(DenseLdlt::kLanes);
+  while (groups != 0) {
+    const auto at = static_cast<std::size_t>(std::countr_zero(groups)) * kLanes;
+    groups &= groups - 1;
+    SubtractTwoScaledLanes(y + at, x0 + at, s0, x1 + at, s1, kLanes);
+  }
 }
 
 std::size_t Padded(std::size_t rows) {
@@ -74,6 +99,8 @@ void DenseLdlt::reserve(std::size_t rows) {
   upper.reserve(rows * Padded(rows));
   lower.reserve(rows * Padded(rows));
   reciprocal.reserve(rows);
+  upperGroups.reserve(rows);
+  lowerGroups.reserve(rows);
   work.reserve(Padded(rows));
   diagonal.reserve(rows);
 }
@@ -100,12 +127,14 @@ bool DenseLdlt::factor() {
   lower.resize(n * s);
   reciprocal.resize(n);
   diagonal.resize(n);
+  upperGroups.assign(n, 0);
+  lowerGroups.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
     MeReal *rowJ = upper.data() + j * s;
     diagonal[j] = rowJ[j];
     const std::size_t groups = (s - j / lanes * lanes) / lanes;
     EliminateRowOf(groups, std::make_index_sequence<kMaxRows / kLanes>(), rowJ, upper.data(), s, j, reciprocal.data(),
-                   lower.data() + j * s);
+                   lower.data() + j * s, upperGroups.data(), &lowerGroups[j]);
     const MeReal d = rowJ[j];
     if (!(diagonal[j] > 0) || !(d > kPivotFloor * diagonal[j])) return false;
     reciprocal[j] = MeReal(1) / d;
@@ -116,7 +145,6 @@ bool DenseLdlt::factor() {
 void DenseLdlt::solve(std::span<const MeReal> rhs, std::span<MeReal> x) const {
   const auto n = static_cast<std::size_t>(m);
   const auto s = static_cast<std::size_t>(stride);
-  const auto lanes = static_cast<std::size_t>(kLanes);
   if (n == 0) return;
   work.resize(s);
   std::copy(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(n), work.begin());
@@ -128,7 +156,10 @@ void DenseLdlt::solve(std::span<const MeReal> rhs, std::span<MeReal> x) const {
    * alone (what row k's pass would leave there), which gives z_k+1; then
    * every column receives row k's term and row k + 1's, in that order.
    * Columns that only row k's pass would cover are up to k + 1, spent too,
-   * and row k + 1 is zero or scratch from there (begin()). */
+   * and row k + 1 is zero or scratch from there (begin()). Only the groups
+   * where row k or row k + 1 has an entry past its diagonal are touched:
+   * the others would subtract zeros from columns past k + 1, or scratch
+   * from spent ones. */
   std::size_t k = 0;
   for (; k + 1 < n; k += 2) {
     const MeReal *rowK = upper.data() + k * s, *rowNext = rowK + s;
@@ -136,14 +167,14 @@ void DenseLdlt::solve(std::span<const MeReal> rhs, std::span<MeReal> x) const {
     const MeReal zNext = (work[k + 1] - z * rowK[k + 1]) * reciprocal[k + 1];
     x[k] = z;
     x[k + 1] = zNext;
-    const std::size_t from = (k + 1) / lanes * lanes;
-    SubtractTwoScaledLanes(work.data() + from, rowK + from, z, rowNext + from, zNext, s - from);
+    SubtractTwoScaledGroups(work.data(), rowK, z, rowNext, zNext, upperGroups[k] | upperGroups[k + 1]);
   }
   if (k < n) x[k] = work[k] * reciprocal[k];
   /* L^T x = z by rows of L from the bottom: x_c is final once the rows
    * below it have been subtracted; it is taken out before its own row runs
    * over columns c .. (c rounded up) - 1, which are spent. Rows c and c - 1
-   * go in one pass, as above: x_c-1 receives row c's term alone first. */
+   * go in one pass, as above: x_c-1 receives row c's term alone first; only
+   * the groups where either row has an entry before its diagonal. */
   std::copy(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(n), work.begin());
   std::size_t c = n - 1;
   for (; c >= 2; c -= 2) {
@@ -152,7 +183,7 @@ void DenseLdlt::solve(std::span<const MeReal> rhs, std::span<MeReal> x) const {
     const MeReal xBefore = work[c - 1] - xc * rowC[c - 1];
     x[c] = xc;
     x[c - 1] = xBefore;
-    SubtractTwoScaledLanes(work.data(), rowC, xc, rowBefore, xBefore, (c + lanes - 1) / lanes * lanes);
+    SubtractTwoScaledGroups(work.data(), rowC, xc, rowBefore, xBefore, lowerGroups[c] | lowerGroups[c - 1]);
   }
   if (c == 1) {
     const MeReal x1 = work[1];
