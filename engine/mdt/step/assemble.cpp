@@ -124,6 +124,7 @@ BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const Pa
   p.friction = friction;
   p.mu = mu;
   p.warm = warm;
+  p.largestJ = rows.largestJ;  // over every row written: at least over the kept ones
   return p;
 }
 

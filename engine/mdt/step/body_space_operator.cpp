@@ -129,14 +129,17 @@ void BodySpaceOperator::prepare() const {
     for (int k = 0; k < 9; ++k) note(largestW, 3 * p.invInertia[(size_t)b * 9 + (size_t)k]);
     inertiaColumns(&p.invInertia[(size_t)b * 9], &columns_[(size_t)b * 12]);
   }
-  LargestJ largestSideJ;
-  for (int r = 0; r < p.rowCount; ++r) {
-    note(largestSoftness, p.softness[(size_t)r]);
-    if (p.body0[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 0));
-    if (p.body1[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 1));
+  for (int r = 0; r < p.rowCount; ++r) note(largestSoftness, p.softness[(size_t)r]);
+  MeReal largestJ = p.largestJ;
+  if (largestJ < 0) {  // not known: scan the sides with a body
+    LargestJ largestSideJ;
+    for (int r = 0; r < p.rowCount; ++r) {
+      if (p.body0[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 0));
+      if (p.body1[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 1));
+    }
+    largestJ = largestSideJ.largest();
+    finite = finite && largestSideJ.finite();
   }
-  const MeReal largestJ = largestSideJ.largest();
-  finite = finite && largestSideJ.finite();
   const double entryBound = 12 * (double)largestJ * (double)largestJ * (double)largestW + (double)largestSoftness;
   const double factorBound = (double)largestJ * (double)largestW;  // |M^-1 J^T|
   entriesFinite_ = finite && entryBound <= (double)ME_REAL_MAX / 2 && factorBound <= (double)ME_REAL_MAX / 2;

@@ -4,6 +4,7 @@
 // all finite is dropped for this step (with a warning), so one bad joint
 // cannot poison the partition. Then matrix capping (capping.cpp) marks
 // the rows to leave out, and each kept row gets its index in the solve.
+#include <algorithm>
 #include <cmath>
 
 #include "MeMessage.h"
@@ -16,28 +17,35 @@ namespace {
 int rowCapacity(const MdtConstraint *c) { return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows; }
 
 // Whether every row is finite; adds the rows that ask for a bounce
-// (bounceAfter > 0) to *bounces.
-bool scanRows(const Row *rows, int n, int *bounces) {
+// (bounceAfter > 0) to out->bounceRows and raises out->largestJ to the
+// largest |J| value of the rows.
+bool scanRows(const Row *rows, int n, PartitionRows *out) {
   bool finite = true;
   int asking = 0;
+  MeReal largest = 0;
   for (int r = 0; r < n; ++r) {
     const Row &row = rows[r];
     for (int k = 0; k < 4; ++k) finite = finite && MeVector3AllFinite(row.J[k]);
     finite = finite && std::isfinite(row.speed) && std::isfinite(row.softness);
+    for (int k = 0; k < 4; ++k)
+      for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(row.J[k][c]));
     asking += row.bounceAfter > 0 ? 1 : 0;
   }
-  if (finite) *bounces += asking;
+  if (finite) {
+    out->bounceRows += asking;
+    out->largestJ = std::max(out->largestJ, largest);
+  }
   return finite;
 }
 
 // Writes constraint c's rows at rows[n...]; returns how many it kept and
-// adds those that ask for a bounce to *bounces.
-int writeRows(MdtConstraint *c, Row *rows, const StepContext &ctx, int *bounces) {
+// notes them in *out (scanRows).
+int writeRows(MdtConstraint *c, Row *rows, const StepContext &ctx, PartitionRows *out) {
   RowSink sink(rows, rowCapacity(c));
   c->type->addRows(c, sink, ctx);
   if (sink.overflowed())
     MeWarning(0, "MdtWorldStep: a %s wrote more rows than it declared; extra rows dropped", c->type->name);
-  if (!scanRows(sink.rows(), sink.count(), bounces)) {
+  if (!scanRows(sink.rows(), sink.count(), out)) {
     MeWarning(0, "MdtWorldStep: a %s produced non-finite rows; it was skipped this step", c->type->name);
     return 0;
   }
@@ -57,7 +65,7 @@ PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &par
   int n = 0;
   out.constraintRowStart[0] = 0;
   for (int i = 0; i < nc; ++i) {
-    n += writeRows(cons[i], out.rows.data() + n, ctx, &out.bounceRows);
+    n += writeRows(cons[i], out.rows.data() + n, ctx, &out);
     out.constraintRowStart[(size_t)i + 1] = n;
   }
   out.count = n;

@@ -64,6 +64,7 @@ struct PartitionRows {
   int count = 0;                      // rows written
   int kept = 0;                       // rows kept
   int bounceRows = 0;                 // rows written with bounceAfter > 0 (stage 7b has work)
+  MeReal largestJ = 0;                // the largest |J| value of the rows written (all finite)
 };
 
 struct StepScratch {

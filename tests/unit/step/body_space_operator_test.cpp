@@ -8,6 +8,7 @@
 // with a body, and ignores J on a side without one (no reader uses it).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -317,4 +318,36 @@ TEST(BodySpaceOperator, EntriesAreFiniteOnlyWhenEveryReadInputIsFiniteAndBounded
   Arrays huge = base;
   huge.J[at(bodyRow, 0, 4)] = -std::sqrt(std::numeric_limits<MeReal>::max());
   EXPECT_FALSE(EntriesFinite(huge));
+}
+
+// A caller that scanned the rows gives their largest |J| (problem.h's
+// largestJ) and the operator takes it instead of scanning: the same
+// verdict at the true largest value, or at any larger bound that keeps
+// the entries within range; a bound too large for that says no.
+TEST(BodySpaceOperator, AGivenLargestJStandsForTheScan) {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Arrays a = RandomProblem(rng, 2 + trial % 5, 3 + trial % 11);
+    MeReal largest = 0;
+    for (int r = 0; r < a.rows; ++r)
+      for (int side = 0; side < 2; ++side) {
+        if ((side == 0 ? a.body0 : a.body1)[(size_t)r] < 0) continue;
+        for (size_t c = 0; c < 6; ++c)
+          largest = std::max(largest, std::fabs(a.J[(size_t)r * kRowValues + (size_t)side * kSideValues + c]));
+      }
+    ASSERT_TRUE(EntriesFinite(a)) << trial;
+    for (MeReal given : {largest, 2 * largest, MeReal(1e6)}) {
+      StepArena arena;
+      BodySpaceProblem p = a.problem();
+      p.largestJ = given;
+      EXPECT_TRUE(Operator(p, arena).entriesFinite()) << trial << " given " << given;
+    }
+    for (MeReal given : {std::sqrt(std::numeric_limits<MeReal>::max()), std::numeric_limits<MeReal>::infinity(),
+                         std::numeric_limits<MeReal>::quiet_NaN()}) {
+      StepArena arena;
+      BodySpaceProblem p = a.problem();
+      p.largestJ = given;
+      EXPECT_FALSE(Operator(p, arena).entriesFinite()) << trial << " given " << given;
+    }
+  }
 }
