@@ -125,6 +125,7 @@ BodySpaceProblem assembleProblem(StepScratch &s, const Partition &part, const Pa
   p.mu = mu;
   p.warm = warm;
   p.largestJ = rows.largestJ;  // over every row written: at least over the kept ones
+  p.largestSoftness = rows.largestSoftness;
   return p;
 }
 

@@ -129,7 +129,11 @@ void BodySpaceOperator::prepare() const {
     for (int k = 0; k < 9; ++k) note(largestW, 3 * p.invInertia[(size_t)b * 9 + (size_t)k]);
     inertiaColumns(&p.invInertia[(size_t)b * 9], &columns_[(size_t)b * 12]);
   }
-  for (int r = 0; r < p.rowCount; ++r) note(largestSoftness, p.softness[(size_t)r]);
+  if (p.largestSoftness < 0) {  // not known: scan the rows
+    for (int r = 0; r < p.rowCount; ++r) note(largestSoftness, p.softness[(size_t)r]);
+  } else {
+    largestSoftness = p.largestSoftness;
+  }
   MeReal largestJ = p.largestJ;
   if (largestJ < 0) {  // not known: scan the sides with a body
     LargestJ largestSideJ;

@@ -32,9 +32,10 @@
 // rounding. A body flung to the edge of the range breaks it, and Kea then
 // assembles A and checks it.
 //
-// max|J| is the problem's largestJ when it gives one (an upper bound is
-// enough: the test is one-sided), else the largest over the row sides with
-// a body, found with their finiteness in one pass.
+// max|J| and max softness are the problem's largestJ and largestSoftness
+// when it gives them (upper bounds are enough: the test is one-sided),
+// else the largest over the row sides with a body and over the rows, each
+// found with their finiteness in one pass.
 //
 // Lazy: the bodies' inverse inertia by columns and the bound are made at
 // the first call that needs them, so a solve that assembles A first (no

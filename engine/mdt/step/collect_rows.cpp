@@ -17,23 +17,25 @@ namespace {
 int rowCapacity(const MdtConstraint *c) { return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows; }
 
 // Whether every row is finite; adds the rows that ask for a bounce
-// (bounceAfter > 0) to out->bounceRows and raises out->largestJ to the
-// largest |J| value of the rows.
+// (bounceAfter > 0) to out->bounceRows and raises out->largestJ and
+// out->largestSoftness to the largest |J| value and |softness| of the rows.
 bool scanRows(const Row *rows, int n, PartitionRows *out) {
   bool finite = true;
   int asking = 0;
-  MeReal largest = 0;
+  MeReal largestJ = 0, largestSoftness = 0;
   for (int r = 0; r < n; ++r) {
     const Row &row = rows[r];
     for (int k = 0; k < 4; ++k) finite = finite && MeVector3AllFinite(row.J[k]);
     finite = finite && std::isfinite(row.speed) && std::isfinite(row.softness);
     for (int k = 0; k < 4; ++k)
-      for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(row.J[k][c]));
+      for (int c = 0; c < 3; ++c) largestJ = std::max(largestJ, std::fabs(row.J[k][c]));
+    largestSoftness = std::max(largestSoftness, std::fabs(row.softness));
     asking += row.bounceAfter > 0 ? 1 : 0;
   }
   if (finite) {
     out->bounceRows += asking;
-    out->largestJ = std::max(out->largestJ, largest);
+    out->largestJ = std::max(out->largestJ, largestJ);
+    out->largestSoftness = std::max(out->largestSoftness, largestSoftness);
   }
   return finite;
 }

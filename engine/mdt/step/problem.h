@@ -57,10 +57,11 @@ struct BodySpaceProblem {
   int blockCount = 0;
   bool anyFriction = false;
   bool anyWarm = false;  // a warm value is nonzero
-  // When >= 0: every J value is finite and at most this in magnitude (the
-  // caller scanned the rows: collect_rows.cpp), so the operator need not
-  // scan them again (body_space_operator.h). < 0: not known.
-  MeReal largestJ = -1;
+  // When >= 0: every J value (softness value) is finite and at most this
+  // in magnitude (the caller scanned the rows: collect_rows.cpp), so the
+  // operator need not scan them again (body_space_operator.h). < 0: not
+  // known.
+  MeReal largestJ = -1, largestSoftness = -1;
 };
 
 // Values per row side and per row in J.

@@ -65,6 +65,7 @@ struct PartitionRows {
   int kept = 0;                       // rows kept
   int bounceRows = 0;                 // rows written with bounceAfter > 0 (stage 7b has work)
   MeReal largestJ = 0;                // the largest |J| value of the rows written (all finite)
+  MeReal largestSoftness = 0;         // the largest |softness| of the rows written (all finite)
 };
 
 struct StepScratch {

@@ -320,11 +320,12 @@ TEST(BodySpaceOperator, EntriesAreFiniteOnlyWhenEveryReadInputIsFiniteAndBounded
   EXPECT_FALSE(EntriesFinite(huge));
 }
 
-// A caller that scanned the rows gives their largest |J| (problem.h's
-// largestJ) and the operator takes it instead of scanning: the same
-// verdict at the true largest value, or at any larger bound that keeps
-// the entries within range; a bound too large for that says no.
-TEST(BodySpaceOperator, AGivenLargestJStandsForTheScan) {
+// A caller that scanned the rows gives their largest |J| and softness
+// (problem.h's largestJ, largestSoftness) and the operator takes them
+// instead of scanning: the same verdict at the true largest values, or at
+// any larger bounds that keep the entries within range; a bound too large
+// for that says no.
+TEST(BodySpaceOperator, GivenLargestValuesStandForTheScan) {
   std::mt19937 rng(17);
   for (int trial = 0; trial < 20; ++trial) {
     const Arrays a = RandomProblem(rng, 2 + trial % 5, 3 + trial % 11);
@@ -335,6 +336,8 @@ TEST(BodySpaceOperator, AGivenLargestJStandsForTheScan) {
         for (size_t c = 0; c < 6; ++c)
           largest = std::max(largest, std::fabs(a.J[(size_t)r * kRowValues + (size_t)side * kSideValues + c]));
       }
+    MeReal largestSoftness = 0;
+    for (MeReal s : a.softness) largestSoftness = std::max(largestSoftness, std::fabs(s));
     ASSERT_TRUE(EntriesFinite(a)) << trial;
     for (MeReal given : {largest, 2 * largest, MeReal(1e6)}) {
       StepArena arena;
@@ -342,12 +345,25 @@ TEST(BodySpaceOperator, AGivenLargestJStandsForTheScan) {
       p.largestJ = given;
       EXPECT_TRUE(Operator(p, arena).entriesFinite()) << trial << " given " << given;
     }
+    for (MeReal given : {largestSoftness, MeReal(1e6)}) {
+      StepArena arena;
+      BodySpaceProblem p = a.problem();
+      p.largestSoftness = given;
+      EXPECT_TRUE(Operator(p, arena).entriesFinite()) << trial << " given softness " << given;
+    }
     for (MeReal given : {std::sqrt(std::numeric_limits<MeReal>::max()), std::numeric_limits<MeReal>::infinity(),
                          std::numeric_limits<MeReal>::quiet_NaN()}) {
       StepArena arena;
       BodySpaceProblem p = a.problem();
       p.largestJ = given;
       EXPECT_FALSE(Operator(p, arena).entriesFinite()) << trial << " given " << given;
+    }
+    for (MeReal given : {std::numeric_limits<MeReal>::max(), std::numeric_limits<MeReal>::infinity(),
+                         std::numeric_limits<MeReal>::quiet_NaN()}) {
+      StepArena arena;
+      BodySpaceProblem p = a.problem();
+      p.largestSoftness = given;
+      EXPECT_FALSE(Operator(p, arena).entriesFinite()) << trial << " given softness " << given;
     }
   }
 }
