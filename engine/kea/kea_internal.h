@@ -95,7 +95,8 @@ bool ValidateSparseValues(const SparseLcpProblem &p, const KeaOptions &o, const 
 /* The BadInput result: zeros everywhere. */
 KeaResult BadInputResult(int n);
 
-/* Tolerance * (1 + max|b|): the residual below which the problem is solved. */
+/* Tolerance * (1 + max|b|): the residual below which the problem is solved;
+ * b must be finite (validated). */
 MeReal SolvedThreshold(const RowView &p, const KeaOptions &o);
 
 /* Emits the iteration-cap / cycle warnings when options.warnings is set. */

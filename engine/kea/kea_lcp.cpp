@@ -190,8 +190,9 @@ KeaResult BadInputResult(int n) {
 }
 
 MeReal SolvedThreshold(const RowView &p, const KeaOptions &o) {
-  MeReal bmax = 0;
-  for (MeReal v : p.b) bmax = std::max(bmax, std::fabs(v));
+  /* b is finite here (validated), and a largest value is exact in any
+   * order: LargestOrInfinite's lanes give the scalar loop's bits. */
+  const MeReal bmax = LargestOrInfinite(p.b);
   const MeReal tol = o.tolerance > 0 ? o.tolerance : KeaDefaultTolerance();
   return tol * (MeReal(1) + bmax);
 }
