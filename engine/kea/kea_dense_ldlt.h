@@ -43,10 +43,10 @@
  * in which neither row of a pass holds a nonzero entry is skipped, as the
  * factor skips rows that do not meet: factor() notes, per row of `upper`
  * and of `lower`, the groups where it wrote one (upperGroups,
- * lowerGroups), and subtracting exact zeros leaves every finite value as
- * it was. A stack's or a chain's factor is banded, so a pass touches the
- * groups of its band, not the whole row (about two thirds of the groups in
- * pile1000's landing columns, half in the rag doll's blocks).
+ * lowerGroups). Subtracting exact zeros leaves every finite value as it
+ * was, up to the sign of a zero (-0 - (-0) is +0), as in the factor's
+ * skip. The sparser the factor in the caller's order, the fewer groups a
+ * pass visits.
  *
  * Nothing here allocates once reserve() has covered the block. */
 #ifndef KARMA_KEA_DENSE_LDLT_H
@@ -92,7 +92,9 @@ struct DenseLdlt {
     return upper[static_cast<std::size_t>(i) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(j)];
   }
   /* Factorises the block whose upper triangle the caller filled; false on
-   * breakdown (the arrays are then partly overwritten). */
+   * breakdown (the arrays, the group masks included, are then partly
+   * overwritten, and solve() must not be called until a factor() has
+   * succeeded). */
   bool factor();
   /* x = A^-1 rhs (m values each; x may alias rhs). */
   void solve(std::span<const MeReal> rhs, std::span<MeReal> x) const;

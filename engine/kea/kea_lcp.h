@@ -219,7 +219,7 @@ struct KeaOptions {
    * there (kea_activeset_core.h, kWarmAcceptDivisor, says what that did
    * at a divisor of 1 and 4). A caller that knows how its last answer
    * came may loosen it for one call at a time (Mdt's exact solver:
-   * solver_kea.cpp, kLooseKeepDivisor). */
+   * warm_keep_rule.h, kLooseKeepDivisor). */
   MeReal warmAcceptDivisor = 16;
   /* KeaSolveSparse, active set: a pivot whose free set differs by at most
    * this many rows (freed and clamped together; at most 8, the default)

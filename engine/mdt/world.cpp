@@ -140,6 +140,7 @@ void MEAPI MdtWorldStep(const MdtWorldID world, const MeReal stepSize) {
   world->priv->lastStepSize = stepSize;
   StepScratch &s = *world->priv->scratch;
   s.stats = MdtWorldStepStats{};
+  ++s.step;
   s.stats.platform = world->priv->kernels->name;
   s.arena.reset();
   const StepClock clock(s.budget);

@@ -5,6 +5,7 @@
 #include "lanes16.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 
@@ -107,6 +108,29 @@ struct LargestJ {
   }
 };
 
+// The largest |J| over the row sides with a body (`finite`: whether every
+// one of their values is finite) and the largest |softness| (`finite`
+// cleared by a non-finite one).
+struct ScannedRows {
+  MeReal largestJ = 0, largestSoftness = 0;
+  bool finite = true;
+};
+
+ScannedRows scanRows(const BodySpaceProblem &p) {
+  ScannedRows scanned;
+  LargestJ largestSideJ;
+  for (int r = 0; r < p.rowCount; ++r) {
+    if (p.body0[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 0));
+    if (p.body1[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 1));
+    const MeReal softness = p.softness[(size_t)r];
+    scanned.finite = scanned.finite && std::isfinite(softness);
+    scanned.largestSoftness = std::max(scanned.largestSoftness, std::fabs(softness));
+  }
+  scanned.largestJ = largestSideJ.largest();
+  scanned.finite = scanned.finite && largestSideJ.finite();
+  return scanned;
+}
+
 }  // namespace
 
 BodySpaceOperator::BodySpaceOperator(const BodySpaceProblem &p, StepArena &arena) : p_(&p), arena_(&arena) {}
@@ -129,20 +153,20 @@ void BodySpaceOperator::prepare() const {
     for (int k = 0; k < 9; ++k) note(largestW, 3 * p.invInertia[(size_t)b * 9 + (size_t)k]);
     inertiaColumns(&p.invInertia[(size_t)b * 9], &columns_[(size_t)b * 12]);
   }
-  if (p.largestSoftness < 0) {  // not known: scan the rows
-    for (int r = 0; r < p.rowCount; ++r) note(largestSoftness, p.softness[(size_t)r]);
+  MeReal largestJ = p.largestJ;
+  if (p.largestJ < 0 || p.largestSoftness < 0) {  // not known: scan the rows
+    const ScannedRows scanned = scanRows(p);
+    largestJ = scanned.largestJ;
+    largestSoftness = scanned.largestSoftness;
+    finite = finite && scanned.finite;
   } else {
     largestSoftness = p.largestSoftness;
-  }
-  MeReal largestJ = p.largestJ;
-  if (largestJ < 0) {  // not known: scan the sides with a body
-    LargestJ largestSideJ;
-    for (int r = 0; r < p.rowCount; ++r) {
-      if (p.body0[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 0));
-      if (p.body1[(size_t)r] >= 0) largestSideJ.note(sideJ(p, r, 1));
-    }
-    largestJ = largestSideJ.largest();
-    finite = finite && largestSideJ.finite();
+#ifndef NDEBUG
+    // The caller's bounds stand for this scan: they must hold (a NaN given
+    // refuses the operator below, whatever the scan says).
+    const ScannedRows scanned = scanRows(p);
+    assert(scanned.finite && !(scanned.largestJ > largestJ) && !(scanned.largestSoftness > largestSoftness));
+#endif
   }
   const double entryBound = 12 * (double)largestJ * (double)largestJ * (double)largestW + (double)largestSoftness;
   const double factorBound = (double)largestJ * (double)largestW;  // |M^-1 J^T|

@@ -33,9 +33,10 @@
 // assembles A and checks it.
 //
 // max|J| and max softness are the problem's largestJ and largestSoftness
-// when it gives them (upper bounds are enough: the test is one-sided),
-// else the largest over the row sides with a body and over the rows, each
-// found with their finiteness in one pass.
+// when it gives both (upper bounds are enough: the test is one-sided;
+// a debug build checks them against the scan they spare), else the
+// largest over the row sides with a body and over the rows, found with
+// their finiteness in one pass.
 //
 // Lazy: the bodies' inverse inertia by columns and the bound are made at
 // the first call that needs them, so a solve that assembles A first (no

@@ -2,8 +2,11 @@
 // partition writes its rows through the row protocol (constraint.h) into
 // one array, constraint after constraint. A constraint whose rows are not
 // all finite is dropped for this step (with a warning), so one bad joint
-// cannot poison the partition. Then matrix capping (capping.cpp) marks
-// the rows to leave out, and each kept row gets its index in the solve.
+// cannot poison the partition; the same scan counts the rows that ask for
+// a bounce and keeps the largest |J| and |softness|, which spare the
+// body-space operator a pass of its own (problem.h). Then matrix capping
+// (capping.cpp) marks the rows to leave out, and each kept row gets its
+// index in the solve.
 #include <algorithm>
 #include <cmath>
 
@@ -62,6 +65,7 @@ PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &par
   int capacity = 0;
   for (int i = 0; i < nc; ++i) capacity += rowCapacity(cons[i]);
   PartitionRows out;
+  out.largestJ = out.largestSoftness = 0;  // raised by each constraint's scan
   out.rows = s.arena.take<Row>((size_t)capacity);
   out.constraintRowStart = s.arena.take<int>((size_t)nc + 1);
   int n = 0;

@@ -13,6 +13,8 @@
 // space (solver_pgs.cpp).
 #pragma once
 
+#include <cstdint>
+
 #include "arena.h"
 #include "problem.h"
 #include "kernels.h"
@@ -28,15 +30,18 @@ struct SolverSettings {
   // Exact solver: keep a warm start that already meets the tolerance
   // (MdtWorldSetKeaAcceptWarmStart).
   bool acceptWarmStart = false;
+  // The world's step, counted from 1: what a solver remembers of a
+  // partition from step - 1 is last step's; from earlier, it is stale.
+  std::uint64_t step = 0;
 };
 
 struct SolveReport {
   int iterations = 0;
   MeReal residual = 0;
-  int factorizations = 0;  // exact solver: factorisations of a free block
-  int frictionRounds = 0;  // exact solver: friction fixed-point rounds beyond the first
-  int staleSolves = 0;     // exact solver: linear solves with last step's factor
-  int factorUpdates = 0;   // exact solver: pivots served by an update of a factor
+  int factorizations = 0;          // exact solver: factorisations of a free block
+  int frictionRounds = 0;          // exact solver: friction fixed-point rounds beyond the first
+  int staleSolves = 0;             // exact solver: linear solves with last step's factor
+  int factorUpdates = 0;           // exact solver: pivots served by an update of a factor
   bool warmStartAccepted = false;  // exact solver: the warm start was the answer
   bool solved = true;
   bool cycle = false;  // stopped by a detected cycle

@@ -60,7 +60,8 @@ struct BodySpaceProblem {
   // When >= 0: every J value (softness value) is finite and at most this
   // in magnitude (the caller scanned the rows: collect_rows.cpp), so the
   // operator need not scan them again (body_space_operator.h). < 0: not
-  // known.
+  // known. The operator takes them when both are given, else scans both;
+  // a NaN given is taken, and refuses the operator.
   MeReal largestJ = -1, largestSoftness = -1;
 };
 

@@ -27,6 +27,7 @@ SolverChoice chooseSolver(MdtWorldID world, const StepScratch &s, const BodySpac
   c.settings.tolerance = params.keaTolerance;
   c.settings.kernels = world->priv->kernels;
   c.settings.acceptWarmStart = params.keaAcceptWarmStart != 0;
+  c.settings.step = s.step;
   if (s.budget.on()) {
     c.budgeted = true;
     c.budget = s.budget.choose(problem.identity, rows);

@@ -174,8 +174,11 @@ struct PartitionMemory {
   std::vector<ShareRun> runs;                // layoutShareRuns
   int widestBody = 0;                        // the most rows on one body
   // How the last answer came, which decides how the next warm start is
-  // checked (warm_keep_rule.h).
+  // checked (warm_keep_rule.h), and the step it came at: an answer older
+  // than last step's is taken as Unknown (the partition slept, or went to
+  // the iterative solver, in between).
   LastAnswer lastAnswer = LastAnswer::Unknown;
+  std::uint64_t lastAnswerStep = 0;
   // Numbers the layouts this memory has held (1, 2, ...): Kea's name for
   // A's sparsity (SparseLcpProblem::sparsityStamp). The workspace is this
   // memory's alone, so the number needs to be unique only here.
@@ -428,6 +431,7 @@ class KeaSolver final : public PartitionSolver {
     opt.kernels = settings.kernels;
     opt.epsilon = 0;  // softness is already on the diagonal
     if (p.anyWarm) opt.warmStart = p.warm;
+    if (memory.lastAnswerStep + 1 != settings.step) memory.lastAnswer = LastAnswer::Unknown;
     const WarmKeep keep = warmKeepAfter(memory.lastAnswer);
     opt.acceptWarmStart = settings.acceptWarmStart && keep.check;
     opt.warmAcceptDivisor = keep.divisor;
@@ -436,6 +440,7 @@ class KeaSolver final : public PartitionSolver {
     opt.warnings = false;         // the step reports, rate-limited (solve_warnings.h)
     kea::KeaSolveSparse(prob, opt, *memory.workspace, result_);
     memory.lastAnswer = lastAnswerOf(result_, memory.lastAnswer);
+    memory.lastAnswerStep = settings.step;
     report.iterations = result_.iterations;
     report.residual = result_.residual;
     report.factorizations = result_.factorizations;

@@ -64,8 +64,9 @@ struct PartitionRows {
   int count = 0;                      // rows written
   int kept = 0;                       // rows kept
   int bounceRows = 0;                 // rows written with bounceAfter > 0 (stage 7b has work)
-  MeReal largestJ = 0;                // the largest |J| value of the rows written (all finite)
-  MeReal largestSoftness = 0;         // the largest |softness| of the rows written (all finite)
+  // The largest |J| value and |softness| of the rows written, all finite
+  // (as BodySpaceProblem's: -1 until collectRows has scanned them).
+  MeReal largestJ = -1, largestSoftness = -1;
 };
 
 struct StepScratch {
@@ -89,6 +90,7 @@ struct StepScratch {
   MdtWorldStepStats stats;
   SolveWarnings solveWarnings;  // the exact solver's, rate-limited
   StepBudget budget;            // MdtWorldSetStepBudget
+  std::uint64_t step = 0;       // MdtWorldStep calls so far, this one included (SolverSettings::step)
 };
 
 // Stage 1: fills bodies, constraints, partitions (waking bodies).

@@ -367,3 +367,15 @@ TEST(KeaWarmStart, TheDenseSolverKeepsAnAnswerAsItIsWhenAskedFor) {
   // threshold, above its sixteenth.
   EXPECT_GE(keptCount, 11);
 }
+
+TEST(KeaWarmStart, EveryEntryPointRefusesAKeepDivisorBelowOne) {
+  const std::vector<Named> problems = Problems();
+  const DenseCopy dense(problems.front().problem);
+  for (MeReal divisor : {MeReal(0.5), std::numeric_limits<MeReal>::quiet_NaN()}) {
+    KeaOptions o;
+    o.warnings = false;
+    o.warmAcceptDivisor = divisor;
+    EXPECT_EQ(KeaSolveActiveSet(dense.problem(), o).status, KeaStatus::BadInput) << divisor;
+    EXPECT_EQ(KeaSolvePGS(dense.problem(), o).status, KeaStatus::BadInput) << divisor;
+  }
+}

@@ -324,7 +324,8 @@ TEST(BodySpaceOperator, EntriesAreFiniteOnlyWhenEveryReadInputIsFiniteAndBounded
 // (problem.h's largestJ, largestSoftness) and the operator takes them
 // instead of scanning: the same verdict at the true largest values, or at
 // any larger bounds that keep the entries within range; a bound too large
-// for that says no.
+// for that, or NaN, says no. (Given one and not the other, the operator
+// scans both.)
 TEST(BodySpaceOperator, GivenLargestValuesStandForTheScan) {
   std::mt19937 rng(17);
   for (int trial = 0; trial < 20; ++trial) {
@@ -343,11 +344,13 @@ TEST(BodySpaceOperator, GivenLargestValuesStandForTheScan) {
       StepArena arena;
       BodySpaceProblem p = a.problem();
       p.largestJ = given;
+      p.largestSoftness = largestSoftness;
       EXPECT_TRUE(Operator(p, arena).entriesFinite()) << trial << " given " << given;
     }
     for (MeReal given : {largestSoftness, MeReal(1e6)}) {
       StepArena arena;
       BodySpaceProblem p = a.problem();
+      p.largestJ = largest;
       p.largestSoftness = given;
       EXPECT_TRUE(Operator(p, arena).entriesFinite()) << trial << " given softness " << given;
     }
@@ -356,12 +359,14 @@ TEST(BodySpaceOperator, GivenLargestValuesStandForTheScan) {
       StepArena arena;
       BodySpaceProblem p = a.problem();
       p.largestJ = given;
+      p.largestSoftness = largestSoftness;
       EXPECT_FALSE(Operator(p, arena).entriesFinite()) << trial << " given " << given;
     }
     for (MeReal given : {std::numeric_limits<MeReal>::max(), std::numeric_limits<MeReal>::infinity(),
                          std::numeric_limits<MeReal>::quiet_NaN()}) {
       StepArena arena;
       BodySpaceProblem p = a.problem();
+      p.largestJ = largest;
       p.largestSoftness = given;
       EXPECT_FALSE(Operator(p, arena).entriesFinite()) << trial << " given softness " << given;
     }

@@ -68,7 +68,7 @@ TEST(WarmKeepRule, LooseKeepsNeverFollowEachOtherAndStrictOnesMay) {
   // Every sequence of six steps over residual classes below a sixteenth,
   // between a sixteenth and a quarter, and above a quarter.
   const MeReal classes[] = {MeReal(0.01), MeReal(0.1), MeReal(0.5)};
-  int sequences = 0, looseKeeps = 0;
+  int looseKeeps = 0;
   for (int code = 0; code < 729; ++code) {
     std::vector<MeReal> residuals;
     for (int step = 0, c = code; step < 6; ++step, c /= 3) residuals.push_back(classes[c % 3]);
@@ -87,9 +87,7 @@ TEST(WarmKeepRule, LooseKeepsNeverFollowEachOtherAndStrictOnesMay) {
         EXPECT_TRUE(answers[i] == LastAnswer::Solved || answers[i] == LastAnswer::SolvedAfterLoose) << code;
       }
     }
-    ++sequences;
   }
-  EXPECT_EQ(sequences, 729);
   EXPECT_GT(looseKeeps, 0);
   // A creeping heap: every warm start between the bounds; one in three is
   // kept (solved, kept loosely, solved after it, ...).
