@@ -32,7 +32,7 @@ namespace karma::mdt {
 
 // How a partition's last answer came.
 enum class LastAnswer : unsigned char {
-  Unknown,           // a memory new to the partition, or an unsolved answer
+  Unknown,           // a memory new to the partition, an unsolved answer, or one older than last step's
   Solved,            // solved
   SolvedAfterLoose,  // solved, the step after a KeptLoosely
   Kept,              // the warm start, within Kea's default bound
