@@ -194,6 +194,17 @@ bool EntriesFinite(const Arrays &a) {
   return op.entriesFinite();
 }
 
+// EntriesFinite with the caller's bounds given (problem.h's largestJ,
+// largestSoftness).
+bool EntriesFiniteGiven(const Arrays &a, MeReal largestJ, MeReal largestSoftness) {
+  StepArena arena;
+  BodySpaceProblem p = a.problem();
+  p.largestJ = largestJ;
+  p.largestSoftness = largestSoftness;
+  const Operator op(p, arena);
+  return op.entriesFinite();
+}
+
 }  // namespace
 
 TEST(BodySpaceOperator, TheProductIsTheDocumentedSumBitForBit) {
@@ -340,35 +351,15 @@ TEST(BodySpaceOperator, GivenLargestValuesStandForTheScan) {
     MeReal largestSoftness = 0;
     for (MeReal s : a.softness) largestSoftness = std::max(largestSoftness, std::fabs(s));
     ASSERT_TRUE(EntriesFinite(a)) << trial;
-    for (MeReal given : {largest, 2 * largest, MeReal(1e6)}) {
-      StepArena arena;
-      BodySpaceProblem p = a.problem();
-      p.largestJ = given;
-      p.largestSoftness = largestSoftness;
-      EXPECT_TRUE(Operator(p, arena).entriesFinite()) << trial << " given " << given;
-    }
-    for (MeReal given : {largestSoftness, MeReal(1e6)}) {
-      StepArena arena;
-      BodySpaceProblem p = a.problem();
-      p.largestJ = largest;
-      p.largestSoftness = given;
-      EXPECT_TRUE(Operator(p, arena).entriesFinite()) << trial << " given softness " << given;
-    }
-    for (MeReal given : {std::sqrt(std::numeric_limits<MeReal>::max()), std::numeric_limits<MeReal>::infinity(),
-                         std::numeric_limits<MeReal>::quiet_NaN()}) {
-      StepArena arena;
-      BodySpaceProblem p = a.problem();
-      p.largestJ = given;
-      p.largestSoftness = largestSoftness;
-      EXPECT_FALSE(Operator(p, arena).entriesFinite()) << trial << " given " << given;
-    }
-    for (MeReal given : {std::numeric_limits<MeReal>::max(), std::numeric_limits<MeReal>::infinity(),
-                         std::numeric_limits<MeReal>::quiet_NaN()}) {
-      StepArena arena;
-      BodySpaceProblem p = a.problem();
-      p.largestJ = largest;
-      p.largestSoftness = given;
-      EXPECT_FALSE(Operator(p, arena).entriesFinite()) << trial << " given softness " << given;
-    }
+    for (MeReal given : {largest, 2 * largest, MeReal(1e6)})
+      EXPECT_TRUE(EntriesFiniteGiven(a, given, largestSoftness)) << trial << " given " << given;
+    for (MeReal given : {largestSoftness, MeReal(1e6)})
+      EXPECT_TRUE(EntriesFiniteGiven(a, largest, given)) << trial << " given softness " << given;
+    const MeReal max = std::numeric_limits<MeReal>::max(), inf = std::numeric_limits<MeReal>::infinity();
+    const MeReal nan = std::numeric_limits<MeReal>::quiet_NaN();
+    for (MeReal given : {std::sqrt(max), inf, nan})
+      EXPECT_FALSE(EntriesFiniteGiven(a, given, largestSoftness)) << trial << " given " << given;
+    for (MeReal given : {max, inf, nan})
+      EXPECT_FALSE(EntriesFiniteGiven(a, largest, given)) << trial << " given softness " << given;
   }
 }
