@@ -19,6 +19,17 @@ namespace {
 
 int rowCapacity(const MdtConstraint *c) { return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows; }
 
+// The largest |J| value of a row, as a tree of depth four: the rows' running
+// maximum then waits on one comparison a row instead of a chain of twelve.
+// (The maximum of values that are not NaN is the same in any order; a row
+// with a NaN fails the finiteness test, which discards the result.)
+MeReal largestAbsJ(const Row &row) {
+  MeReal block[4];
+  for (int k = 0; k < 4; ++k)
+    block[k] = std::max(std::max(std::fabs(row.J[k][0]), std::fabs(row.J[k][1])), std::fabs(row.J[k][2]));
+  return std::max(std::max(block[0], block[1]), std::max(block[2], block[3]));
+}
+
 // Whether every row is finite; adds the rows that ask for a bounce
 // (bounceAfter > 0) to out->bounceRows and raises out->largestJ and
 // out->largestSoftness to the largest |J| value and |softness| of the rows.
@@ -30,8 +41,7 @@ bool scanRows(const Row *rows, int n, PartitionRows *out) {
     const Row &row = rows[r];
     for (int k = 0; k < 4; ++k) finite = finite && MeVector3AllFinite(row.J[k]);
     finite = finite && std::isfinite(row.speed) && std::isfinite(row.softness);
-    for (int k = 0; k < 4; ++k)
-      for (int c = 0; c < 3; ++c) largestJ = std::max(largestJ, std::fabs(row.J[k][c]));
+    largestJ = std::max(largestJ, largestAbsJ(row));
     largestSoftness = std::max(largestSoftness, std::fabs(row.softness));
     asking += row.bounceAfter > 0 ? 1 : 0;
   }
