@@ -130,8 +130,13 @@ struct ConstraintType {
   // the default attachment (attachDefault), so a type can replace it with
   // its own (Spring: each body's own origin; RPRO: the centres of mass).
   void (*attach)(MdtConstraint *c);
-  // Optional: enumerates the bodies beyond body[0..1] that rows touch; no
-  // type needs this yet (every row touches body[0] and body[1] only).
+  // Optional: asks for the memory addRows and afterSolve will read beyond
+  // the constraint's own struct (a contact group: its contacts), called a
+  // constraint ahead of its turn. Changes no result.
+  void (*prefetch)(const MdtConstraint *c);
+  // (Not yet a member: one that enumerates the bodies beyond body[0..1]
+  // that rows touch; no type needs it, every row touches body[0] and
+  // body[1] only.)
 };
 
 constexpr int kMaxWarmRows = 16;  // warm-start memory per constraint

@@ -26,6 +26,7 @@
 #include <cstdint>
 
 #include "contact_cache.h"
+#include "mdt_bridge.h"
 #include "mst_internal.h"
 
 using namespace karma::mst;
@@ -137,24 +138,31 @@ void Collide(McdModelPair *pair, MdtWorldID world, MstBridge *b) {
 
 // The coming pairs' memory, asked for ahead of their turn: a heap's pairs,
 // models and contact memories were allocated as the scene made them, so a
-// pair's first touch of them would wait on memory. Two pairs ahead the pair
-// itself, one ahead what it points to, and of the contact memory (a header
-// and the kept contacts) the eight lines of a box resting on four
-// (contact_reuse.cpp). Those addresses are integers: the last lines may lie
-// past a smaller block, which a prefetch may touch but pointer arithmetic
-// may not name. A prefetch changes no result. Always inlined: GCC takes a
-// function that only prefetches for one without effects and drops its
-// calls.
+// pair's first touch of them would wait on memory. Three pairs ahead the
+// pair itself; two ahead what it points to: its models, its contact group's
+// header and hints (mdt_bridge.h), and of the collision's contact memory (a
+// header and the kept contacts) the eight lines of a box resting on four
+// (contact_reuse.cpp); one ahead the group's contacts, through the hints
+// read from the header asked for a pair before (walking the group's list
+// instead waits on each link in turn). The contact memory's addresses are
+// integers: the last lines may lie past a smaller block, which a prefetch
+// may touch but pointer arithmetic may not name. A prefetch changes no
+// result. Always inlined: GCC takes a function that only prefetches for one
+// without effects and drops its calls.
 [[gnu::always_inline]] inline void PrefetchAhead(const McdModelPairContainer *pairs, int i) {
-  if (i + 2 < pairs->stayingEnd) __builtin_prefetch(pairs->array[i + 2]);
-  if (i + 1 >= pairs->stayingEnd) return;
-  const McdModelPair *next = pairs->array[i + 1];
-  __builtin_prefetch(next->model1);
-  __builtin_prefetch(next->model2);
-  __builtin_prefetch(next->responseData);
-  if (const auto memory = reinterpret_cast<std::uintptr_t>(next->m_contactMemory))
-    for (std::uintptr_t line = 0; line < 8; ++line)
-      __builtin_prefetch(reinterpret_cast<const void *>(memory + 64 * line));
+  if (i + 3 < pairs->stayingEnd) __builtin_prefetch(pairs->array[i + 3]);
+  if (i + 2 < pairs->stayingEnd) {
+    const McdModelPair *next = pairs->array[i + 2];
+    __builtin_prefetch(next->model1);
+    __builtin_prefetch(next->model2);
+    if (next->responseData) MdtContactGroupPrefetch(static_cast<MdtContactGroupID>(next->responseData));
+    if (const auto memory = reinterpret_cast<std::uintptr_t>(next->m_contactMemory))
+      for (std::uintptr_t line = 0; line < 8; ++line)
+        __builtin_prefetch(reinterpret_cast<const void *>(memory + 64 * line));
+  }
+  if (i + 1 < pairs->stayingEnd)
+    if (auto group = static_cast<MdtContactGroupID>(pairs->array[i + 1]->responseData))
+      MdtContactGroupPrefetchContacts(group);
 }
 
 }  // namespace

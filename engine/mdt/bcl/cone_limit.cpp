@@ -81,6 +81,7 @@ extern const ConstraintType kConeLimitType = {MdtConstraintTypeConeLimit,
                                               addRows,
                                               nullptr,
                                               nullptr,
+                                              nullptr,
                                               nullptr};
 }
 

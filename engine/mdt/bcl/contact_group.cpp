@@ -1,6 +1,8 @@
 // contact_group.cpp: contact groups -- every contact between one pair of
 // bodies, stepped as one constraint. The group's rows are its contacts'
 // rows in list order (contact.cpp); its contacts follow its bodies.
+#include <algorithm>
+
 #include "contact_internal.h"
 
 using namespace karma::mdt;
@@ -43,6 +45,22 @@ void afterSolve(MdtConstraint *c, const Row *rows, const MeReal *impulse, int n,
   }
 }
 
+// The lines of each hinted contact (MdtContactGroup::hint) that the bridge,
+// addContactRows and storeContactImpulses read or write: the base's first
+// (type, bodies, attachment), the params, the normal to the warm memory, and
+// the friction axis.
+void prefetch(const MdtConstraint *c) {
+  const auto *g = static_cast<const MdtContactGroup *>(c);
+  const int n = std::min(g->count, kContactHints);
+  for (int j = 0; j < n; ++j) {
+    const MdtContact *k = g->hint[j];
+    __builtin_prefetch(k);
+    __builtin_prefetch(&k->params);
+    __builtin_prefetch(&k->normal);
+    __builtin_prefetch(&k->frictionAxis);
+  }
+}
+
 void destroy(MdtConstraint *c) {
   auto *g = as<MdtContactGroup>(c);
   MdtContact *k = g->first;
@@ -68,7 +86,8 @@ extern const ConstraintType kContactGroupType = {MdtConstraintTypeContactGroup,
                                                  addRows,
                                                  afterSolve,
                                                  destroy,
-                                                 nullptr};
+                                                 nullptr,
+                                                 prefetch};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(ContactGroup, kContactGroupType)
@@ -87,6 +106,7 @@ void MEAPI MdtContactGroupAppendContact(const MdtContactGroupID g, const MdtCont
   MdtContact **tail = &g->first;
   while (*tail) tail = &(*tail)->next;
   *tail = c;
+  if (g->count < kContactHints) g->hint[g->count] = c;
   ++g->count;
   g->warmRows = 0;
 }
@@ -119,6 +139,8 @@ void MEAPI MdtContactGroupRemoveContact(const MdtContactGroupID g, const MdtCont
   c->enabled = FALSE;
   --g->count;
   g->warmRows = 0;
+  int j = 0;
+  for (MdtContact *k = g->first; k && j < kContactHints; k = k->next) g->hint[j++] = k;
 }
 
 void MEAPI MdtContactGroupDestroyContact(const MdtContactGroupID g, const MdtContactID c) {
@@ -154,6 +176,15 @@ int MEAPI MdtContactGroupGetContacts(const MdtContactGroupID g, MdtContactID *co
     features[n] = k->feature;
   }
   return n;
+}
+
+void MEAPI MdtContactGroupPrefetch(const MdtContactGroupID g) {
+  __builtin_prefetch(g);
+  __builtin_prefetch(g->hint);
+}
+
+void MEAPI MdtContactGroupPrefetchContacts(const MdtContactGroupID g) {
+  if (g && g->type == &kContactGroupType) prefetch(g);
 }
 
 MeReal MEAPI MdtContactGroupGetNormalForce(const MdtContactGroupID g) {

@@ -31,10 +31,21 @@ struct MdtContact : MdtConstraint {
   MeVector3 frictionAxis;
 };
 
+namespace karma::mdt {
+inline constexpr int kContactHints = 8;
+}
+
 struct MdtContactGroup : MdtConstraint {
   MdtContact *first;
   int count;
   MeReal normalForce;
+  // The first min(count, kContactHints) contacts in list order, kept by
+  // Append and Remove, so that the memory of all of them can be asked for
+  // at once (MdtContactGroupPrefetchContacts) instead of one link at a time
+  // as a walk of the list would. A hint, never read for a result:
+  // MdtContactSetNext may relink the list behind it, and a prefetch of a
+  // stale address changes nothing.
+  MdtContact *hint[karma::mdt::kContactHints];
 };
 
 namespace karma::mdt {

@@ -69,6 +69,7 @@ extern const ConstraintType kFixedPathType = {MdtConstraintTypeFixedPath,
                                               addRows,
                                               afterSolve,
                                               nullptr,
+                                              nullptr,
                                               nullptr};
 }
 

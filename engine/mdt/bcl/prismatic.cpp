@@ -67,6 +67,7 @@ extern const ConstraintType kPrismaticType = {MdtConstraintTypePrismatic,
                                               addRows,
                                               nullptr,
                                               nullptr,
+                                              nullptr,
                                               nullptr};
 }
 

@@ -84,7 +84,8 @@ extern const ConstraintType kRPROJointType = {MdtConstraintTypeRPROJoint,
                                               addRows,
                                               nullptr,
                                               nullptr,
-                                              attach};
+                                              attach,
+                                              nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(RPROJoint, kRPROJointType)

@@ -129,8 +129,17 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kSpringType = {
-    MdtConstraintTypeSpring, "Spring", sizeof(MdtSpring), 2, nullptr, reset, addRows, nullptr, nullptr, attach};
+extern const ConstraintType kSpringType = {MdtConstraintTypeSpring,
+                                           "Spring",
+                                           sizeof(MdtSpring),
+                                           2,
+                                           nullptr,
+                                           reset,
+                                           addRows,
+                                           nullptr,
+                                           nullptr,
+                                           attach,
+                                           nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Spring, kSpringType)

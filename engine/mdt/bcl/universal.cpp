@@ -73,6 +73,7 @@ extern const ConstraintType kUniversalType = {MdtConstraintTypeUniversal,
                                               addRows,
                                               nullptr,
                                               nullptr,
+                                              nullptr,
                                               nullptr};
 }
 

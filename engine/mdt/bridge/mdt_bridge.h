@@ -23,7 +23,12 @@
  *    MdtContactSetFeature called in that order, each field checked as
  *    there; a field it ignores warns once under its own name, and a
  *    constraint that is not a contact (or NULL) warns once and is left
- *    unchanged. */
+ *    unchanged.
+ *  - Prefetches for the pairs ahead of the one being matched (they change
+ *    no result): MdtContactGroupPrefetch asks for the group's own lines
+ *    that the next call reads, MdtContactGroupPrefetchContacts (a contact
+ *    group's header already at hand) for the lines of its first contacts
+ *    that the matching and the step read. */
 #ifndef KARMA_MDT_BRIDGE_H
 #define KARMA_MDT_BRIDGE_H
 #include "MdtBody.h"
@@ -40,6 +45,8 @@ typedef void(MEAPI *MdtBodyDestroyCallbackPtr)(MdtBodyID body, void *model);
 MEPUBLIC void MEAPI MdtWorldSetBodyDestroyCallback(MdtWorldID world, MdtBodyDestroyCallbackPtr cb);
 MEPUBLIC int MEAPI MdtContactGroupGetContacts(const MdtContactGroupID g, MdtContactID *contacts, MeU32 *features,
                                               int max);
+MEPUBLIC void MEAPI MdtContactGroupPrefetch(const MdtContactGroupID g);
+MEPUBLIC void MEAPI MdtContactGroupPrefetchContacts(const MdtContactGroupID g);
 MEPUBLIC void MEAPI MdtContactSetFromCollision(const MdtContactID c, const MeVector3 position, const MeVector3 normal,
                                                MeReal penetration, const MdtContactParams *params, MeU32 feature);
 

@@ -81,6 +81,7 @@ PartitionRows collectRows(MdtWorldID world, StepScratch &s, const Partition &par
   int n = 0;
   out.constraintRowStart[0] = 0;
   for (int i = 0; i < nc; ++i) {
+    if (i + 1 < nc && cons[i + 1]->type->prefetch) cons[i + 1]->type->prefetch(cons[i + 1]);
     n += writeRows(cons[i], out.rows.data() + n, ctx, &out);
     out.constraintRowStart[(size_t)i + 1] = n;
   }

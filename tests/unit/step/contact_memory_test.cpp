@@ -1,8 +1,10 @@
 // Contacts with memory (engine/mst/contact_cache.h): a contact the
 // collision reports again keeps its MdtContact, its place in the group and
 // its impulses; new contacts start from zero; lost ones go.
+#include <algorithm>
 #include <cmath>
 
+#include "contact_internal.h"
 #include "step_scene.h"
 #include "support/warning_capture.h"
 
@@ -146,3 +148,45 @@ TEST(ContactMemory, BadArgumentsWarnAndDoNothing) {
 }
 
 }  // namespace
+
+// The prefetch hints of a contact group (contact_internal.h) name its
+// first min(count, kContactHints) contacts in list order through appends,
+// removals from the front, the middle and the end, and growth past the
+// hint array.
+namespace {
+
+void ExpectHintsAreTheFirstContacts(MdtContactGroupID g) {
+  const MdtContactGroup *group = g;
+  int j = 0;
+  for (MdtContactID k = MdtContactGroupGetFirstContact(g); k && j < karma::mdt::kContactHints;
+       k = MdtContactGroupGetNextContact(g, k), ++j)
+    EXPECT_EQ(group->hint[j], k) << "hint " << j;
+  EXPECT_EQ(j, std::min(MdtContactGroupGetCount(g), karma::mdt::kContactHints));
+}
+
+}  // namespace
+
+TEST(ContactMemory, AGroupsPrefetchHintsAreItsFirstContactsInOrder) {
+  MdtWorldID w = MdtWorldCreate(4, 64, 1, 1);
+  MdtBodyID a = MdtBodyCreate(w), b = MdtBodyCreate(w);
+  MdtContactGroupID g = MdtContactGroupCreate(w);
+  MdtContactGroupSetBodies(g, a, b);
+  MdtContactID made[12];
+  for (int i = 0; i < 12; ++i) {
+    made[i] = MdtContactGroupCreateContact(g);
+    ASSERT_NE(made[i], nullptr);
+    ExpectHintsAreTheFirstContacts(g);
+  }
+  MdtContactGroupDestroyContact(g, made[0]);  // the front
+  ExpectHintsAreTheFirstContacts(g);
+  MdtContactGroupDestroyContact(g, made[5]);  // the middle, within the hints
+  ExpectHintsAreTheFirstContacts(g);
+  MdtContactGroupRemoveContact(g, made[11]);  // the end, beyond the hints
+  ExpectHintsAreTheFirstContacts(g);
+  for (int i : {1, 2, 3, 4, 6, 7, 8, 9, 10}) MdtContactGroupDestroyContact(g, made[i]);
+  EXPECT_EQ(MdtContactGroupGetCount(g), 0);
+  ExpectHintsAreTheFirstContacts(g);
+  MdtContactGroupAppendContact(g, made[11]);
+  ExpectHintsAreTheFirstContacts(g);
+  MdtWorldDestroy(w);
+}
