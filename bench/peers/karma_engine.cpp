@@ -2,7 +2,8 @@
 // scene as scenes/anchor_scene.h builds it (Mst, defaults: the exact Kea
 // solver, unless SetKarmaIterativeRows sends large partitions to the
 // iterative one; SetKarmaMaxIterations caps the solver's iterations, the
-// sweeps of the iterative one; SetPeersSleep turns on the auto-disable the
+// sweeps of the iterative one; SetKarmaEpsilon and SetKarmaJointProjection
+// set the world's softness and joint projection; SetPeersSleep turns on the auto-disable the
 // anchor scenes turn off, at the guide's default thresholds), stepped
 // without the scene's own bookkeeping.
 #include "anchor_scene.h"
@@ -12,15 +13,19 @@ namespace karma::peers {
 
 namespace {
 
-int iterativeRows = -1;   // < 0: the engine's default
-int maxIterations = 0;    // MdtWorldSetKeaMaxIterations; 0: the engine's default
-bool peersSleep = false;  // SetPeersSleep, for every engine
+int iterativeRows = -1;    // < 0: the engine's default
+int maxIterations = 0;     // MdtWorldSetKeaMaxIterations; 0: the engine's default
+double epsilon = -1;       // MdtWorldSetEpsilon; < 0: the engine's default
+int jointProjection = -1;  // MdtWorldSetJointProjection; < 0: the engine's default
+bool peersSleep = false;   // SetPeersSleep, for every engine
 
 class KarmaEngine final : public PeerEngine {
  public:
   explicit KarmaEngine(const SceneSpec &spec) : scene_(spec) {
     if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene_.world(), iterativeRows);
     if (maxIterations > 0) MdtWorldSetKeaMaxIterations(scene_.world(), maxIterations);
+    if (epsilon > 0) MdtWorldSetEpsilon(scene_.world(), (MeReal)epsilon);
+    if (jointProjection >= 0) MdtWorldSetJointProjection(scene_.world(), jointProjection);
     if (PeersSleep()) MdtWorldSetAutoDisable(scene_.world(), 1);
   }
   void step() override { scene_.advance(); }
@@ -35,6 +40,8 @@ class KarmaEngine final : public PeerEngine {
 
 void SetKarmaIterativeRows(int rows) { iterativeRows = rows; }
 void SetKarmaMaxIterations(int count) { maxIterations = count; }
+void SetKarmaEpsilon(double e) { epsilon = e; }
+void SetKarmaJointProjection(int sweeps) { jointProjection = sweeps; }
 void SetPeersSleep(bool on) { peersSleep = on; }
 bool PeersSleep() { return peersSleep; }
 

@@ -21,6 +21,12 @@
 // --sleep lets every engine's resting bodies sleep by its own rule at its
 // default thresholds (SetPeersSleep); the line above the table says so.
 //
+// --epsilon E and --joint-projection N set Karma's world softness
+// (MdtWorldSetEpsilon; the guide's default 0.01) and joint projection
+// (MdtWorldSetJointProjection; off by default) in every scene, to show
+// what a setting the user chooses costs next to the peers' defaults; the
+// line above the table names them.
+//
 // --platform NAME picks Karma's platform backend (MdtPlatform.h) for the
 // whole run, with the usual fallback and warning when the CPU lacks it; the
 // line above the table names the backend Karma's worlds ran on.
@@ -28,6 +34,7 @@
 //   peer_bench [--scenes car,topple,...] [--engines karma,ode-step,...]
 //              [--reps N] [--steps N] [--pile-steps N] [--pile10k-steps N]
 //              [--ode-contacts N] [--iterative-rows N] [--max-iterations N]
+//              [--epsilon E] [--joint-projection N]
 //              [--platform reference|sse4|avx2|avx512] [--sleep]
 #include <algorithm>
 #include <chrono>
@@ -63,6 +70,8 @@ struct Options {
   int odeContacts = 8;
   int iterativeRows = -1;          // Karma's MdtWorldSetKeaIterativeRows; < 0: the engine's default
   int maxIterations = 0;           // Karma's MdtWorldSetKeaMaxIterations (the iterative solver's sweeps); 0: default
+  double epsilon = -1;             // Karma's MdtWorldSetEpsilon; < 0: the default
+  int jointProjection = -1;        // Karma's MdtWorldSetJointProjection; < 0: the default (off)
   const char *platform = nullptr;  // Karma's platform backend; nullptr: the process default
   bool sleep = false;              // every engine's sleeping on (SetPeersSleep)
 };
@@ -121,6 +130,10 @@ bool Parse(int argc, char **argv, Options &o) {
       o.iterativeRows = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--max-iterations") && hasValue && std::atoi(argv[i + 1]) > 0)
       o.maxIterations = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--epsilon") && hasValue && std::atof(argv[i + 1]) > 0)
+      o.epsilon = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--joint-projection") && hasValue && std::atoi(argv[i + 1]) >= 0)
+      o.jointProjection = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--platform") && hasValue && KnownPlatform(argv[i + 1]))
       o.platform = argv[++i];
     else if (!std::strcmp(argv[i], "--sleep"))
@@ -279,6 +292,8 @@ int main(int argc, char **argv) {
         "[--steps N (each scene's own)] [--pile-steps N (%d)] [--pile10k-steps N (%d)] "
         "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact; default: the engine's, 300)]\n"
         "  [--max-iterations N (Karma's iteration cap: the iterative solver's sweeps; default: the engine's)]\n"
+        "  [--epsilon E (Karma's world softness, > 0; default: the guide's 0.01)] [--joint-projection N (Karma's "
+        "joint projection sweeps; default: 0, off)]\n"
         "  [--platform reference|sse4|avx2|avx512 (Karma's platform backend; default: KARMA_PLATFORM, else the "
         "best the CPU runs)]\n"
         "  [--sleep (every engine's resting bodies sleep by its own rule and default thresholds; default: off)]\n"
@@ -291,6 +306,8 @@ int main(int argc, char **argv) {
 #endif
   karma::peers::SetKarmaIterativeRows(o.iterativeRows);
   karma::peers::SetKarmaMaxIterations(o.maxIterations);
+  karma::peers::SetKarmaEpsilon(o.epsilon);
+  karma::peers::SetKarmaJointProjection(o.jointProjection);
   karma::peers::SetPeersSleep(o.sleep);
   if (o.platform) MdtPlatformSetDefault(o.platform);
   std::vector<EngineKind> engines;
@@ -308,6 +325,9 @@ int main(int argc, char **argv) {
               KARMA_PEERS_LTO ? "link-time optimised (KARMA_LTO)" : "without link-time optimisation");
   // Every Karma world of the run is created after this and takes the default.
   std::printf("Karma platform backend: %s\n", MdtPlatformGetDefaultName());
+  if (o.epsilon > 0) std::printf("Karma epsilon: %g (set by --epsilon)\n", o.epsilon);
+  if (o.jointProjection >= 0)
+    std::printf("Karma joint projection: %d sweeps (set by --joint-projection)\n", o.jointProjection);
   std::printf("Sleeping: %s\n\n", o.sleep ? "on in every engine, by its own rule and default thresholds" : "off");
   std::printf(
       "| scene (steps) | engine | µs/step, median [range] | × ODE step | × ODE QuickStep | stable "
