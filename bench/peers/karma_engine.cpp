@@ -3,9 +3,9 @@
 // solver, unless SetKarmaIterativeRows sends large partitions to the
 // iterative one; SetKarmaMaxIterations caps the solver's iterations, the
 // sweeps of the iterative one; SetKarmaEpsilon and SetKarmaJointProjection
-// set the world's softness and joint projection; SetPeersSleep turns on the auto-disable the
-// anchor scenes turn off, at the guide's default thresholds), stepped
-// without the scene's own bookkeeping.
+// set the world's softness and joint projection; SetPeersSleep turns on
+// the auto-disable the anchor scenes turn off, at the guide's default
+// thresholds), stepped without the scene's own bookkeeping.
 #include "anchor_scene.h"
 #include "peer_engine.h"
 
@@ -24,7 +24,7 @@ class KarmaEngine final : public PeerEngine {
   explicit KarmaEngine(const SceneSpec &spec) : scene_(spec) {
     if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene_.world(), iterativeRows);
     if (maxIterations > 0) MdtWorldSetKeaMaxIterations(scene_.world(), maxIterations);
-    if (epsilon > 0) MdtWorldSetEpsilon(scene_.world(), (MeReal)epsilon);
+    if (epsilon >= 0) MdtWorldSetEpsilon(scene_.world(), (MeReal)epsilon);
     if (jointProjection >= 0) MdtWorldSetJointProjection(scene_.world(), jointProjection);
     if (PeersSleep()) MdtWorldSetAutoDisable(scene_.world(), 1);
   }

@@ -21,9 +21,10 @@
 // --sleep lets every engine's resting bodies sleep by its own rule at its
 // default thresholds (SetPeersSleep); the line above the table says so.
 //
-// --epsilon E and --joint-projection N set Karma's world softness
-// (MdtWorldSetEpsilon; the guide's default 0.01) and joint projection
-// (MdtWorldSetJointProjection; off by default) in every scene, to show
+// --epsilon E (>= 0) and --joint-projection N (>= 0) set Karma's world
+// softness (MdtWorldSetEpsilon; the guide's default, 0.01 at length scale
+// 1) and joint projection sweeps (MdtWorldSetJointProjection; 0, off, by
+// default) in every scene, to show
 // what a setting the user chooses costs next to the peers' defaults; the
 // line above the table names them.
 //
@@ -38,6 +39,7 @@
 //              [--platform reference|sse4|avx2|avx512] [--sleep]
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -75,6 +77,15 @@ struct Options {
   const char *platform = nullptr;  // Karma's platform backend; nullptr: the process default
   bool sleep = false;              // every engine's sleeping on (SetPeersSleep)
 };
+
+// Whether `text` is all of a finite number >= 0, stored in *out if so.
+bool NonNegativeNumber(const char *text, double *out) {
+  char *end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(v) || v < 0) return false;
+  *out = v;
+  return true;
+}
 
 bool KnownPlatform(const char *name) {
   for (int i = 0; i < MdtPlatformCount(); ++i)
@@ -130,8 +141,8 @@ bool Parse(int argc, char **argv, Options &o) {
       o.iterativeRows = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--max-iterations") && hasValue && std::atoi(argv[i + 1]) > 0)
       o.maxIterations = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--epsilon") && hasValue && std::atof(argv[i + 1]) > 0)
-      o.epsilon = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--epsilon") && hasValue && NonNegativeNumber(argv[i + 1], &o.epsilon))
+      ++i;
     else if (!std::strcmp(argv[i], "--joint-projection") && hasValue && std::atoi(argv[i + 1]) >= 0)
       o.jointProjection = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--platform") && hasValue && KnownPlatform(argv[i + 1]))
@@ -292,7 +303,7 @@ int main(int argc, char **argv) {
         "[--steps N (each scene's own)] [--pile-steps N (%d)] [--pile10k-steps N (%d)] "
         "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact; default: the engine's, 300)]\n"
         "  [--max-iterations N (Karma's iteration cap: the iterative solver's sweeps; default: the engine's)]\n"
-        "  [--epsilon E (Karma's world softness, > 0; default: the guide's 0.01)] [--joint-projection N (Karma's "
+        "  [--epsilon E (Karma's world softness, >= 0; default: the guide's, 0.01 at length scale 1)] [--joint-projection N (Karma's "
         "joint projection sweeps; default: 0, off)]\n"
         "  [--platform reference|sse4|avx2|avx512 (Karma's platform backend; default: KARMA_PLATFORM, else the "
         "best the CPU runs)]\n"
@@ -325,7 +336,7 @@ int main(int argc, char **argv) {
               KARMA_PEERS_LTO ? "link-time optimised (KARMA_LTO)" : "without link-time optimisation");
   // Every Karma world of the run is created after this and takes the default.
   std::printf("Karma platform backend: %s\n", MdtPlatformGetDefaultName());
-  if (o.epsilon > 0) std::printf("Karma epsilon: %g (set by --epsilon)\n", o.epsilon);
+  if (o.epsilon >= 0) std::printf("Karma epsilon: %g (set by --epsilon)\n", o.epsilon);
   if (o.jointProjection >= 0)
     std::printf("Karma joint projection: %d sweeps (set by --joint-projection)\n", o.jointProjection);
   std::printf("Sleeping: %s\n\n", o.sleep ? "on in every engine, by its own rule and default thresholds" : "off");

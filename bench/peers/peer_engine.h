@@ -47,7 +47,7 @@ std::unique_ptr<PeerEngine> MakeKarma(const SceneSpec &spec);
 // own default is left in place.
 void SetKarmaIterativeRows(int rows);
 void SetKarmaMaxIterations(int count);
-// MdtWorldSetEpsilon (> 0) and MdtWorldSetJointProjection (>= 0) for the
+// MdtWorldSetEpsilon (>= 0) and MdtWorldSetJointProjection (>= 0) for the
 // Karma engines built after the call; negative, the default: the engine's
 // own defaults (the guide's epsilon 0.01, no projection).
 void SetKarmaEpsilon(double epsilon);

@@ -337,6 +337,7 @@ MdtContactID MEAPI MdtContactGetNext(const MdtContactID c) {
 void MEAPI MdtContactSetNext(const MdtContactID c, const MdtContactID next) {
   if (!checkType(c, kContactType, "MdtContactSetNext")) return;
   c->next = next;
+  if (c->owner && c->owner->type == &kContactGroupType) refreshContactHints(static_cast<MdtContactGroup *>(c->owner));
 }
 
 void MEAPI MdtContactSetFeature(const MdtContactID c, const MeU32 feature) {

@@ -77,6 +77,12 @@ void destroy(MdtConstraint *c) {
 }  // namespace
 
 namespace karma::mdt {
+
+void refreshContactHints(MdtContactGroup *g) {
+  int j = 0;
+  for (MdtContact *k = g->first; k && j < kContactHints; k = k->next) g->hint[j++] = k;
+}
+
 extern const ConstraintType kContactGroupType = {MdtConstraintTypeContactGroup,
                                                  "ContactGroup",
                                                  sizeof(MdtContactGroup),
@@ -88,7 +94,7 @@ extern const ConstraintType kContactGroupType = {MdtConstraintTypeContactGroup,
                                                  destroy,
                                                  nullptr,
                                                  prefetch};
-}
+}  // namespace karma::mdt
 
 MDT_DEFINE_CONSTRAINT_TYPE(ContactGroup, kContactGroupType)
 
@@ -139,8 +145,7 @@ void MEAPI MdtContactGroupRemoveContact(const MdtContactGroupID g, const MdtCont
   c->enabled = FALSE;
   --g->count;
   g->warmRows = 0;
-  int j = 0;
-  for (MdtContact *k = g->first; k && j < kContactHints; k = k->next) g->hint[j++] = k;
+  refreshContactHints(g);  // the walk above has just read the links it follows
 }
 
 void MEAPI MdtContactGroupDestroyContact(const MdtContactGroupID g, const MdtContactID c) {
@@ -178,9 +183,14 @@ int MEAPI MdtContactGroupGetContacts(const MdtContactGroupID g, MdtContactID *co
   return n;
 }
 
+// Under link-time optimisation this is inlined into the bridge's loop; were
+// it not, GCC could take a function that only prefetches for one without
+// effects and drop its calls (docs/NOTES.md, "the contact memory").
 void MEAPI MdtContactGroupPrefetch(const MdtContactGroupID g) {
+  if (!g) return;
   __builtin_prefetch(g);
-  __builtin_prefetch(g->hint);
+  __builtin_prefetch(&g->hint[0]);
+  __builtin_prefetch(&g->hint[kContactHints - 1]);  // the array may straddle two lines
 }
 
 void MEAPI MdtContactGroupPrefetchContacts(const MdtContactGroupID g) {

@@ -40,11 +40,11 @@ struct MdtContactGroup : MdtConstraint {
   int count;
   MeReal normalForce;
   // The first min(count, kContactHints) contacts in list order, kept by
-  // Append and Remove, so that the memory of all of them can be asked for
-  // at once (MdtContactGroupPrefetchContacts) instead of one link at a time
-  // as a walk of the list would. A hint, never read for a result:
-  // MdtContactSetNext may relink the list behind it, and a prefetch of a
-  // stale address changes nothing.
+  // Append, Remove and MdtContactSetNext on a contact of the group
+  // (refreshContactHints), so that the memory of all of them can be asked
+  // for at once (MdtContactGroupPrefetchContacts, ConstraintType::prefetch)
+  // instead of one link at a time as a walk of the list would. Only ever
+  // prefetched, never read for a result.
   MdtContact *hint[karma::mdt::kContactHints];
 };
 
@@ -61,6 +61,8 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx);
 // normalised: the user's direction (MdtContactSetDirection), then the axis
 // last step's rows used (frictionAxis), then anyOrthogonal(n).
 void contactDirections(const MdtContact *c, MeVector3 d1, MeVector3 d2);
+// Sets g->hint to the first contacts of g's list.
+void refreshContactHints(MdtContactGroup *g);
 // Contact defaults (params, normal, penetration, no direction, no memory).
 void resetContact(MdtContact *c);
 // Stores the impulses of one contact's rows (normal first, then friction in

@@ -19,10 +19,10 @@ namespace {
 
 int rowCapacity(const MdtConstraint *c) { return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows; }
 
-// The largest |J| value of a row, as a tree of depth four: the rows' running
-// maximum then waits on one comparison a row instead of a chain of twelve.
-// (The maximum of values that are not NaN is the same in any order; a row
-// with a NaN fails the finiteness test, which discards the result.)
+// The largest |J| value of a row, its twelve values reduced as a tree of
+// depth four, so that the rows' running maximum waits on one comparison a
+// row. (The maximum of values that are not NaN is the same in any order; a
+// row with a NaN fails the finiteness test, which discards the result.)
 MeReal largestAbsJ(const Row &row) {
   MeReal block[4];
   for (int k = 0; k < 4; ++k)

@@ -2,8 +2,11 @@
 // test on the anchor scene it names (SCENES.md), at the setting under which
 // it holds: the guide's defaults where they suffice, and otherwise the one
 // knob that buys it (world softness epsilon, joint projection). Where a row
-// fails at the defaults, the defaults' figure is pinned too, two-sided, so
-// the test says how far they are and fails if it moves. Their costs are in
+// fails at the defaults, the defaults' figure is pinned too, within about
+// 5 % either side (the same in both precisions and on every platform
+// backend), so a change of the defaults' behaviour shows here; the figures
+// and why the defaults fall short: docs/NOTES.md, "Two of issue 13's
+// accuracy rows fail on the guide's default softness". Their costs are in
 // bench/peers (peer_bench --epsilon, --joint-projection).
 #include <gtest/gtest.h>
 
@@ -37,14 +40,15 @@ SceneFigures RunAndReport(AnchorScene &scene, const char *setting) {
 }
 
 // Speed at 5 s within 0.1 % of 16.18 m/s in any case; the wheels' sink is
-// the contacts' give, gamma d / h = epsilon lambda: about 8.5 mm at the
-// guide's epsilon 0.01 (issue 13 asks <= 2 mm), a hundredth of it at 1e-4.
+// the contacts' give, gamma d / h = epsilon lambda: 8.5 mm at the guide's
+// epsilon (0.01 at length scale 1; issue 13 asks <= 2 mm), a hundredth of
+// it at 1e-4.
 TEST(AccuracyRows, TheCarKeepsItsSpeedAndAtEpsilon1e4ItsWheelsSinkUnder2mm) {
   auto byDefault = karma::scenes::MakeCar();
   const SceneFigures d = RunAndReport(*byDefault, "defaults");
   EXPECT_NEAR(d.carVelocity, kCarSpeed, 0.001 * kCarSpeed);
-  EXPECT_GT(d.penetration, 0.006);  // the default softness's give, as documented
-  EXPECT_LT(d.penetration, 0.011);
+  EXPECT_GT(d.penetration, 0.0081);  // the default softness's give: 8.50 mm
+  EXPECT_LT(d.penetration, 0.0089);
 
   auto stiff = karma::scenes::MakeCar();
   MdtWorldSetEpsilon(stiff->world(), (MeReal)1e-4);
@@ -69,8 +73,8 @@ TEST(AccuracyRows, Stack21StandsAndAtEpsilon1e4ItsTopDropsUnder25mm) {
   auto byDefault = karma::scenes::MakeStack21();
   const SceneFigures d = RunAndReport(*byDefault, "defaults");  // stable: standing
   EXPECT_LE(d.drift, 0.001);
-  EXPECT_GT(d.drop, 0.025);  // the default softness's give, as documented
-  EXPECT_LT(d.drop, 0.070);
+  EXPECT_GT(d.drop, 0.056);  // the gaps and the default softness's give: 59.3 mm
+  EXPECT_LT(d.drop, 0.062);
 
   auto stiff = karma::scenes::MakeStack21();
   MdtWorldSetEpsilon(stiff->world(), (MeReal)1e-4);
@@ -85,10 +89,10 @@ TEST(AccuracyRows, Stack21StandsAndAtEpsilon1e4ItsTopDropsUnder25mm) {
 TEST(AccuracyRows, TheRagDollsJointsHoldWithJointProjection) {
   auto byDefault = karma::scenes::MakeRagdoll();
   const SceneFigures d = RunAndReport(*byDefault, "defaults");
-  EXPECT_GT(d.jointErrorMax, 0.010);  // as documented
-  EXPECT_LT(d.jointErrorMax, 0.060);
-  EXPECT_GT(d.jointErrorEnd, 0.001);
-  EXPECT_LT(d.jointErrorEnd, 0.005);
+  EXPECT_GT(d.jointErrorMax, 0.0455);  // 47.9 mm
+  EXPECT_LT(d.jointErrorMax, 0.0503);
+  EXPECT_GT(d.jointErrorEnd, 0.0024);  // 2.52 mm
+  EXPECT_LT(d.jointErrorEnd, 0.0027);
 
   auto projected = karma::scenes::MakeRagdoll();
   MdtWorldSetJointProjection(projected->world(), 4);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "contact_internal.h"
+#include "mdt_bridge.h"
 #include "step_scene.h"
 #include "support/warning_capture.h"
 
@@ -151,8 +152,8 @@ TEST(ContactMemory, BadArgumentsWarnAndDoNothing) {
 
 // The prefetch hints of a contact group (contact_internal.h) name its
 // first min(count, kContactHints) contacts in list order through appends,
-// removals from the front, the middle and the end, and growth past the
-// hint array.
+// removals from the front, the middle and the end, growth past the hint
+// array, and a list relinked by hand (MdtContactSetNext).
 namespace {
 
 void ExpectHintsAreTheFirstContacts(MdtContactGroupID g) {
@@ -163,8 +164,6 @@ void ExpectHintsAreTheFirstContacts(MdtContactGroupID g) {
     EXPECT_EQ(group->hint[j], k) << "hint " << j;
   EXPECT_EQ(j, std::min(MdtContactGroupGetCount(g), karma::mdt::kContactHints));
 }
-
-}  // namespace
 
 TEST(ContactMemory, AGroupsPrefetchHintsAreItsFirstContactsInOrder) {
   MdtWorldID w = MdtWorldCreate(4, 64, 1, 1);
@@ -183,6 +182,10 @@ TEST(ContactMemory, AGroupsPrefetchHintsAreItsFirstContactsInOrder) {
   ExpectHintsAreTheFirstContacts(g);
   MdtContactGroupRemoveContact(g, made[11]);  // the end, beyond the hints
   ExpectHintsAreTheFirstContacts(g);
+  MdtContactSetNext(made[2], made[4]);  // made[3] unlinked by hand
+  ExpectHintsAreTheFirstContacts(g);
+  MdtContactSetNext(made[2], made[3]);  // and linked back
+  ExpectHintsAreTheFirstContacts(g);
   for (int i : {1, 2, 3, 4, 6, 7, 8, 9, 10}) MdtContactGroupDestroyContact(g, made[i]);
   EXPECT_EQ(MdtContactGroupGetCount(g), 0);
   ExpectHintsAreTheFirstContacts(g);
@@ -190,3 +193,26 @@ TEST(ContactMemory, AGroupsPrefetchHintsAreItsFirstContactsInOrder) {
   ExpectHintsAreTheFirstContacts(g);
   MdtWorldDestroy(w);
 }
+
+// The bridge's prefetches take any group, a NULL one, or a constraint that
+// is not a group, and change nothing (run under the sanitizers in CI).
+TEST(ContactMemory, ThePrefetchesAcceptNullAndOtherConstraints) {
+  MdtWorldID w = MdtWorldCreate(4, 64, 1, 1);
+  MdtBodyID a = MdtBodyCreate(w);
+  MdtBodyEnable(a);
+  MdtContactGroupID g = MdtContactGroupCreate(w);
+  MdtContactGroupSetBodies(g, a, nullptr);
+  MdtContactGroupCreateContact(g);
+  MdtContactID alone = MdtContactCreate(w);
+  MdtContactGroupPrefetch(nullptr);
+  MdtContactGroupPrefetchContacts(nullptr);
+  MdtContactGroupPrefetch(g);
+  MdtContactGroupPrefetchContacts(g);
+  MdtContactGroupPrefetchContacts(reinterpret_cast<MdtContactGroupID>(alone));
+  EXPECT_EQ(MdtContactGroupGetCount(g), 1);
+  MdtContactGroupDestroy(g);
+  MdtWorldStep(w, kH);
+  MdtWorldDestroy(w);
+}
+
+}  // namespace
