@@ -9,6 +9,8 @@
 // solves column then counts the iterative solver's sweeps too. `--sleep`
 // turns the world's auto-disable on at its default thresholds (the anchor
 // scenes turn it off); the bodies column counts the bodies stepped.
+// `--epsilon E` (>= 0) and `--joint-projection N` set the world's softness
+// and joint projection sweeps, as peer_bench's options of the same names.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -21,11 +23,17 @@ int main(int argc, char **argv) {
   std::vector<char *> args;
   int iterativeRows = -1;
   bool sleep = false;
+  double epsilon = -1;       // < 0: the world's default
+  int jointProjection = -1;  // < 0: the world's default (off)
   for (int i = 0; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--iterative-rows") && i + 1 < argc)
       iterativeRows = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--sleep"))
       sleep = true;
+    else if (!std::strcmp(argv[i], "--epsilon") && i + 1 < argc)
+      epsilon = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--joint-projection") && i + 1 < argc)
+      jointProjection = std::atoi(argv[++i]);
     else
       args.push_back(argv[i]);
   }
@@ -40,13 +48,16 @@ int main(int argc, char **argv) {
                                        : !std::strcmp(name, "pile10k")  ? MakePile10k()
                                                                         : nullptr;
   if (!scene) {
-    std::fprintf(
-        stderr, "usage: %s car|topple|stack21|ragdoll|pile1000|pile10k [FIRST [LAST]] [--iterative-rows N] [--sleep]\n",
-        argv[0]);
+    std::fprintf(stderr,
+                 "usage: %s car|topple|stack21|ragdoll|pile1000|pile10k [FIRST [LAST]] [--iterative-rows N] [--sleep] "
+                 "[--epsilon E] [--joint-projection N]\n",
+                 argv[0]);
     return 2;
   }
   if (iterativeRows >= 0) MdtWorldSetKeaIterativeRows(scene->world(), iterativeRows);
   if (sleep) MdtWorldSetAutoDisable(scene->world(), 1);
+  if (epsilon >= 0) MdtWorldSetEpsilon(scene->world(), (MeReal)epsilon);
+  if (jointProjection >= 0) MdtWorldSetJointProjection(scene->world(), jointProjection);
   const int first = argc > 2 ? std::atoi(argv[2]) : 0;
   const int last = argc > 3 ? std::atoi(argv[3]) : scene->steps();
   std::printf("# platform backend: %s\n", MdtWorldGetPlatformName(scene->world()));
