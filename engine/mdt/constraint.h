@@ -132,8 +132,9 @@ struct ConstraintType {
   void (*attach)(MdtConstraint *c);
   // Optional: asks for the memory addRows and afterSolve will read beyond
   // the constraint's own struct (a contact group: its contacts), called a
-  // constraint ahead of its turn. Changes no result.
-  void (*prefetch)(const MdtConstraint *c);
+  // constraint ahead of its turn. Changes no result. (Defaults to none, so
+  // the types without one need not name it.)
+  void (*prefetch)(const MdtConstraint *c) = nullptr;
   // (Not yet a member: one that enumerates the bodies beyond body[0..1]
   // that rows touch; no type needs it, every row touches body[0] and
   // body[1] only.)

@@ -64,17 +64,8 @@ void relockTwist(MdtConstraint *c) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kAngular3Type = {MdtConstraintTypeAngular3,
-                                             "Angular3",
-                                             sizeof(MdtAngular3),
-                                             3,
-                                             nullptr,
-                                             reset,
-                                             addRows,
-                                             nullptr,
-                                             nullptr,
-                                             nullptr,
-                                             nullptr};
+extern const ConstraintType kAngular3Type = {
+    MdtConstraintTypeAngular3, "Angular3", sizeof(MdtAngular3), 3, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Angular3, kAngular3Type)

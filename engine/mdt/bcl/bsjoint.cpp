@@ -16,17 +16,8 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) { addPoint
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kBSJointType = {MdtConstraintTypeBSJoint,
-                                            "BSJoint",
-                                            sizeof(MdtBSJoint),
-                                            3,
-                                            nullptr,
-                                            reset,
-                                            addRows,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr};
+extern const ConstraintType kBSJointType = {
+    MdtConstraintTypeBSJoint, "BSJoint", sizeof(MdtBSJoint), 3, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(BSJoint, kBSJointType)

@@ -169,17 +169,8 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kCarWheelType = {MdtConstraintTypeCarWheel,
-                                             "CarWheel",
-                                             sizeof(MdtCarWheel),
-                                             7,
-                                             nullptr,
-                                             reset,
-                                             addRows,
-                                             nullptr,
-                                             nullptr,
-                                             nullptr,
-                                             nullptr};
+extern const ConstraintType kCarWheelType = {
+    MdtConstraintTypeCarWheel, "CarWheel", sizeof(MdtCarWheel), 7, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(CarWheel, kCarWheelType)

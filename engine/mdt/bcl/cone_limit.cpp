@@ -81,7 +81,6 @@ extern const ConstraintType kConeLimitType = {MdtConstraintTypeConeLimit,
                                               addRows,
                                               nullptr,
                                               nullptr,
-                                              nullptr,
                                               nullptr};
 }
 

@@ -261,17 +261,8 @@ void destroy(MdtConstraint *c) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kContactType = {MdtConstraintTypeContact,
-                                            "Contact",
-                                            sizeof(MdtContact),
-                                            3,
-                                            nullptr,
-                                            reset,
-                                            addRows,
-                                            afterSolve,
-                                            destroy,
-                                            nullptr,
-                                            nullptr};
+extern const ConstraintType kContactType = {
+    MdtConstraintTypeContact, "Contact", sizeof(MdtContact), 3, nullptr, reset, addRows, afterSolve, destroy, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Contact, kContactType)

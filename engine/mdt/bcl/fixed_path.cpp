@@ -69,7 +69,6 @@ extern const ConstraintType kFixedPathType = {MdtConstraintTypeFixedPath,
                                               addRows,
                                               afterSolve,
                                               nullptr,
-                                              nullptr,
                                               nullptr};
 }
 

@@ -37,7 +37,7 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 
 namespace karma::mdt {
 extern const ConstraintType kHingeType = {
-    MdtConstraintTypeHinge, "Hinge", sizeof(MdtHinge), 7, nullptr, reset, addRows, nullptr, nullptr, nullptr, nullptr};
+    MdtConstraintTypeHinge, "Hinge", sizeof(MdtHinge), 7, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Hinge, kHingeType)

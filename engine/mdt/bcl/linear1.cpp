@@ -29,17 +29,8 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kLinear1Type = {MdtConstraintTypeLinear1,
-                                            "Linear1",
-                                            sizeof(MdtLinear1),
-                                            1,
-                                            nullptr,
-                                            reset,
-                                            addRows,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr};
+extern const ConstraintType kLinear1Type = {
+    MdtConstraintTypeLinear1, "Linear1", sizeof(MdtLinear1), 1, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Linear1, kLinear1Type)

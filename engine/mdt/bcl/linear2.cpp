@@ -32,17 +32,8 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kLinear2Type = {MdtConstraintTypeLinear2,
-                                            "Linear2",
-                                            sizeof(MdtLinear2),
-                                            2,
-                                            nullptr,
-                                            reset,
-                                            addRows,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr};
+extern const ConstraintType kLinear2Type = {
+    MdtConstraintTypeLinear2, "Linear2", sizeof(MdtLinear2), 2, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Linear2, kLinear2Type)

@@ -67,7 +67,6 @@ extern const ConstraintType kPrismaticType = {MdtConstraintTypePrismatic,
                                               addRows,
                                               nullptr,
                                               nullptr,
-                                              nullptr,
                                               nullptr};
 }
 

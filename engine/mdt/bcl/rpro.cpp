@@ -84,8 +84,7 @@ extern const ConstraintType kRPROJointType = {MdtConstraintTypeRPROJoint,
                                               addRows,
                                               nullptr,
                                               nullptr,
-                                              attach,
-                                              nullptr};
+                                              attach};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(RPROJoint, kRPROJointType)

@@ -130,17 +130,8 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kSkeletalType = {MdtConstraintTypeSkeletal,
-                                             "Skeletal",
-                                             sizeof(MdtSkeletal),
-                                             5,
-                                             nullptr,
-                                             reset,
-                                             addRows,
-                                             nullptr,
-                                             nullptr,
-                                             nullptr,
-                                             nullptr};
+extern const ConstraintType kSkeletalType = {
+    MdtConstraintTypeSkeletal, "Skeletal", sizeof(MdtSkeletal), 5, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Skeletal, kSkeletalType)

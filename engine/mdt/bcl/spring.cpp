@@ -129,17 +129,8 @@ void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kSpringType = {MdtConstraintTypeSpring,
-                                           "Spring",
-                                           sizeof(MdtSpring),
-                                           2,
-                                           nullptr,
-                                           reset,
-                                           addRows,
-                                           nullptr,
-                                           nullptr,
-                                           attach,
-                                           nullptr};
+extern const ConstraintType kSpringType = {
+    MdtConstraintTypeSpring, "Spring", sizeof(MdtSpring), 2, nullptr, reset, addRows, nullptr, nullptr, attach};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Spring, kSpringType)

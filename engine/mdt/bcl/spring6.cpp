@@ -88,17 +88,8 @@ MeReal getValue(const MdtSpring6 *j, bool damping, int first, unsigned axis, con
 }  // namespace
 
 namespace karma::mdt {
-extern const ConstraintType kSpring6Type = {MdtConstraintTypeSpring6,
-                                            "Spring6",
-                                            sizeof(MdtSpring6),
-                                            6,
-                                            nullptr,
-                                            reset,
-                                            addRows,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr};
+extern const ConstraintType kSpring6Type = {
+    MdtConstraintTypeSpring6, "Spring6", sizeof(MdtSpring6), 6, nullptr, reset, addRows, nullptr, nullptr, nullptr};
 }
 
 MDT_DEFINE_CONSTRAINT_TYPE(Spring6, kSpring6Type)

@@ -73,7 +73,6 @@ extern const ConstraintType kUniversalType = {MdtConstraintTypeUniversal,
                                               addRows,
                                               nullptr,
                                               nullptr,
-                                              nullptr,
                                               nullptr};
 }
 
