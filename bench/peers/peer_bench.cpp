@@ -24,9 +24,8 @@
 // --epsilon E (>= 0) and --joint-projection N (>= 0) set Karma's world
 // softness (MdtWorldSetEpsilon; the guide's default, 0.01 at length scale
 // 1) and joint projection sweeps (MdtWorldSetJointProjection; 0, off, by
-// default) in every scene, to show
-// what a setting the user chooses costs next to the peers' defaults; the
-// line above the table names them.
+// default) in every scene, to show what a setting the user chooses costs
+// next to the peers' defaults; the line above the table names them.
 //
 // --platform NAME picks Karma's platform backend (MdtPlatform.h) for the
 // whole run, with the usual fallback and warning when the CPU lacks it; the
@@ -303,8 +302,8 @@ int main(int argc, char **argv) {
         "[--steps N (each scene's own)] [--pile-steps N (%d)] [--pile10k-steps N (%d)] "
         "[--ode-contacts 1..8 (8)] [--iterative-rows N (0: exact; default: the engine's, 300)]\n"
         "  [--max-iterations N (Karma's iteration cap: the iterative solver's sweeps; default: the engine's)]\n"
-        "  [--epsilon E (Karma's world softness, >= 0; default: the guide's, 0.01 at length scale 1)] [--joint-projection N (Karma's "
-        "joint projection sweeps; default: 0, off)]\n"
+        "  [--epsilon E (Karma's world softness, >= 0; default: the guide's, 0.01 at length scale 1)]\n"
+        "  [--joint-projection N (Karma's joint projection sweeps; default: 0, off)]\n"
         "  [--platform reference|sse4|avx2|avx512 (Karma's platform backend; default: KARMA_PLATFORM, else the "
         "best the CPU runs)]\n"
         "  [--sleep (every engine's resting bodies sleep by its own rule and default thresholds; default: off)]\n"

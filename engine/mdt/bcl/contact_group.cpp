@@ -185,7 +185,8 @@ int MEAPI MdtContactGroupGetContacts(const MdtContactGroupID g, MdtContactID *co
 
 // Under link-time optimisation this is inlined into the bridge's loop; were
 // it not, GCC could take a function that only prefetches for one without
-// effects and drop its calls (docs/NOTES.md, "the contact memory").
+// effects and drop its calls, as it did a first version of the bridge's
+// own prefetch (docs/NOTES.md, "String instructions in hot loops").
 void MEAPI MdtContactGroupPrefetch(const MdtContactGroupID g) {
   if (!g) return;
   __builtin_prefetch(g);
