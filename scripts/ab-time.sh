@@ -12,11 +12,12 @@
 #        scripts/ab-time.sh /tmp/pb_before build/bench/bench/peers/peer_bench 6 \
 #            --scenes pile1000 --pile-steps 600
 #
-# Each run is `peer_bench OPTIONS --reps 1 --engines karma`; give one scene.
+# Each run is `peer_bench --reps 1 --engines karma OPTIONS`; give one scene
+# (and, for a short one, more repetitions: --reps 9 takes the median of 9).
 set -euo pipefail
 
 if [ $# -lt 3 ]; then
-  sed -n '2,15p' "$0" >&2
+  sed -n '2,16p' "$0" >&2
   exit 2
 fi
 a=$1
@@ -26,7 +27,7 @@ shift 3
 
 # The µs per step of one run: the first number of the table's third column.
 time_of() {
-  "$1" "${@:2}" --reps 1 --engines karma 2>/dev/null |
+  "$1" --reps 1 --engines karma "${@:2}" 2>/dev/null |
     awk -F'|' '$3 ~ /karma/ { split($4, t, " "); gsub(",", "", t[1]); print t[1]; exit }'
 }
 
