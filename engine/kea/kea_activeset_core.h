@@ -45,8 +45,8 @@ namespace karma::kea::detail {
 enum RowSet : unsigned char { Free = 0, AtLo = 1, AtHi = 2 };
 
 /* KeaOptions::acceptWarmStart keeps a warm start whose residual is at most
- * the solved threshold divided by KeaOptions::warmAcceptDivisor, whose
- * default is this. Not the threshold itself: when every call may keep its
+ * the solved threshold divided by KeaOptions::warmAcceptDivisor; this is
+ * its default, by name. Not the threshold itself: when every call may keep its
  * warm start, at rest the kept impulses err by up to the threshold step
  * after step (each kept warm start is the last one, checked against a
  * slightly changed problem), and in single precision that error turns a
@@ -56,8 +56,7 @@ enum RowSet : unsigned char { Free = 0, AtLo = 1, AtHi = 2 };
  * At a sixteenth none of that happens (the tests that measure them pass),
  * while most resting steps of topple and of the car still keep their warm
  * start (docs/NOTES.md, "Warm starts that are already answers"). */
-inline constexpr MeReal kWarmAcceptDivisor = 16;
-static_assert(KeaOptions{}.warmAcceptDivisor == kWarmAcceptDivisor, "the option's default is this divisor");
+inline constexpr MeReal kWarmAcceptDivisor = KeaOptions{}.warmAcceptDivisor;
 
 /* The warm-start check (KeaOptions::acceptWarmStart) costs one product with
  * A and saves, when it accepts, at least a triangular solve and the product
