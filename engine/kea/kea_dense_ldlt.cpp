@@ -25,9 +25,10 @@ void SubtractTwoScaledLanes(MeReal *__restrict y, const MeReal *__restrict x0, M
 
 /* Row j of the factorisation, columns from .. from + Width - 1 (from = j
  * rounded down to kLanes, from + Width = the stride): every update
- *     a_jc <- a_jc - l_jk u_kc,   l_jk = u_kj r_k,   k = 0 .. j - 1
- * in ascending k, the row held in `acc` (registers, for a fixed Width)
- * while the finished rows k stream past. Writes l_jk to lowerJ[k], notes
+ *     a_jc <- a_jc - l_jk u_kc,   l_jk = u_kj r_k,   k in meet (ascending;
+ * every k < j for which u_kj may be nonzero), the row held in `acc`
+ * (registers, for a fixed Width) while the finished rows k stream past.
+ * Writes l_jk to lowerJ[k] (zero for the rows not in meet), notes
  * the group of each nonzero l_jk in *lowerGroupsJ and, for each nonzero
  * u_kj (a finished entry of row k), the group of column j in
  * upperGroups[k]: every u_kc with c > k is read here once. A row
@@ -36,8 +37,9 @@ void SubtractTwoScaledLanes(MeReal *__restrict y, const MeReal *__restrict x0, M
  * whose start-up made a 75-row factorisation 8 % slower (docs/NOTES.md,
  * "String instructions in hot loops"). */
 template <std::size_t Width>
-void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::size_t j, const MeReal *reciprocal,
-                  MeReal *lowerJ, DenseLdlt::GroupMask *upperGroups, DenseLdlt::GroupMask *lowerGroupsJ) {
+void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::size_t j, const DenseLdlt::RowBits &meet,
+                  const MeReal *reciprocal, MeReal *lowerJ, DenseLdlt::GroupMask *upperGroups,
+                  DenseLdlt::GroupMask *lowerGroupsJ) {
   constexpr bool kInPlace = Width * sizeof(MeReal) > 16 * 16;
   constexpr auto kLanes = static_cast<std::size_t>(DenseLdlt::kLanes);
   const std::size_t from = stride - Width;
@@ -47,16 +49,19 @@ void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::si
   MeReal *const acc = kInPlace ? rowJ + from : local;
   if constexpr (!kInPlace)
     for (std::size_t c = 0; c < Width; ++c) acc[c] = rowJ[from + c];
-  for (std::size_t k = 0; k < j; ++k) {
-    const MeReal *rowK = upper + k * stride;
-    const MeReal u = rowK[j];
-    if (u != 0) upperGroups[k] |= groupJ;
-    const MeReal l = u * reciprocal[k];
-    lowerJ[k] = l;
-    if (l == 0) continue; /* rows k and j do not interact: nothing to subtract */
-    lowerMask |= DenseLdlt::GroupMask(1) << (k / kLanes);
-    for (std::size_t c = 0; c < Width; ++c) acc[c] = acc[c] - l * rowK[from + c];
-  }
+  std::fill(lowerJ, lowerJ + j, MeReal(0));
+  for (std::size_t w = 0; w < meet.size(); ++w)
+    for (std::uint64_t bits = meet[w]; bits != 0; bits &= bits - 1) {
+      const std::size_t k = w * 64 + static_cast<std::size_t>(std::countr_zero(bits));
+      const MeReal *rowK = upper + k * stride;
+      const MeReal u = rowK[j];
+      if (u != 0) upperGroups[k] |= groupJ;
+      const MeReal l = u * reciprocal[k];
+      lowerJ[k] = l;
+      if (l == 0) continue; /* rows k and j do not interact: nothing to subtract */
+      lowerMask |= DenseLdlt::GroupMask(1) << (k / kLanes);
+      for (std::size_t c = 0; c < Width; ++c) acc[c] = acc[c] - l * rowK[from + c];
+    }
   *lowerGroupsJ = lowerMask;
   if constexpr (!kInPlace)
     for (std::size_t c = 0; c < Width; ++c) rowJ[from + c] = acc[c];
@@ -67,13 +72,43 @@ void EliminateRow(MeReal *rowJ, const MeReal *upper, std::size_t stride, std::si
  * kMaxRows / kLanes): a run-time width picks its compiled instance. */
 template <std::size_t... Groups>
 void EliminateRowOf(std::size_t groups, std::index_sequence<Groups...>, MeReal *rowJ, const MeReal *upper,
-                    std::size_t stride, std::size_t j, const MeReal *reciprocal, MeReal *lowerJ,
-                    DenseLdlt::GroupMask *upperGroups, DenseLdlt::GroupMask *lowerGroupsJ) {
+                    std::size_t stride, std::size_t j, const DenseLdlt::RowBits &meet, const MeReal *reciprocal,
+                    MeReal *lowerJ, DenseLdlt::GroupMask *upperGroups, DenseLdlt::GroupMask *lowerGroupsJ) {
   constexpr auto kLanes = static_cast<std::size_t>(DenseLdlt::kLanes);
-  (void)((groups == Groups + 1 &&
-          (EliminateRow<(Groups + 1) * kLanes>(rowJ, upper, stride, j, reciprocal, lowerJ, upperGroups, lowerGroupsJ),
-           true)) ||
+  (void)((groups == Groups + 1 && (EliminateRow<(Groups + 1) * kLanes>(rowJ, upper, stride, j, meet, reciprocal, lowerJ,
+                                                                       upperGroups, lowerGroupsJ),
+                                   true)) ||
          ...);
+}
+
+/* The symbolic elimination of the header ("Which rows meet"): widens each
+ * pattern[k] to P_k, handing it on to its parent p(k) = min P_k, and sets
+ * bit k of meets[c] for every c in P_k. */
+void MeetingRows(std::size_t m, std::vector<DenseLdlt::RowBits> &pattern, std::vector<DenseLdlt::RowBits> &meets) {
+  meets.assign(m, DenseLdlt::RowBits{});
+  for (std::size_t k = 0; k < m; ++k) {
+    const DenseLdlt::RowBits &bits = pattern[k];
+    const std::size_t word = bits[0] != 0 ? 0 : 1;
+    if (bits[word] == 0) continue;
+    const std::size_t parent = word * 64 + static_cast<std::size_t>(std::countr_zero(bits[word]));
+    DenseLdlt::RowBits &up = pattern[parent];
+    for (std::size_t w = 0; w < bits.size(); ++w) up[w] |= bits[w];
+    up[parent / 64] &= ~(std::uint64_t(1) << (parent % 64)); /* P_k - {p(k)}: all of it lies past p(k) */
+    const std::uint64_t bitK = std::uint64_t(1) << (k % 64);
+    for (std::size_t w = 0; w < bits.size(); ++w)
+      for (std::uint64_t x = bits[w]; x != 0; x &= x - 1)
+        meets[w * 64 + static_cast<std::size_t>(std::countr_zero(x))][k / 64] |= bitK;
+  }
+}
+
+/* meets[j] = every row before j. */
+void AllRowsMeet(std::size_t m, std::vector<DenseLdlt::RowBits> &meets) {
+  meets.resize(m);
+  for (std::size_t j = 0; j < m; ++j)
+    for (std::size_t w = 0; w < meets[j].size(); ++w) {
+      const std::size_t below = j > 64 * w ? std::min<std::size_t>(j - 64 * w, 64) : 0;
+      meets[j][w] = below == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << below) - 1;
+    }
 }
 
 /* SubtractTwoScaledLanes on the groups of kLanes values whose bits are set
@@ -103,10 +138,14 @@ void DenseLdlt::reserve(std::size_t rows) {
   lowerGroups.reserve(rows);
   work.reserve(Padded(rows));
   diagonal.reserve(rows);
+  pattern.reserve(rows);
+  meets.reserve(rows);
 }
 
-void DenseLdlt::begin(int rows) {
+void DenseLdlt::begin(int rows, Pattern known) {
   m = rows;
+  known_ = known;
+  if (known == Pattern::Noted) pattern.assign(static_cast<std::size_t>(rows), RowBits{});
   stride = static_cast<int>(Padded(static_cast<std::size_t>(rows)));
   const auto s = static_cast<std::size_t>(stride);
   const auto lanes = static_cast<std::size_t>(kLanes);
@@ -129,12 +168,16 @@ bool DenseLdlt::factor() {
   diagonal.resize(n);
   upperGroups.assign(n, 0);
   lowerGroups.resize(n);
+  if (known_ == Pattern::Noted)
+    MeetingRows(n, pattern, meets);
+  else if (known_ == Pattern::Unknown || meets.size() != n)
+    AllRowsMeet(n, meets);
   for (std::size_t j = 0; j < n; ++j) {
     MeReal *rowJ = upper.data() + j * s;
     diagonal[j] = rowJ[j];
     const std::size_t groups = (s - j / lanes * lanes) / lanes;
-    EliminateRowOf(groups, std::make_index_sequence<kMaxRows / kLanes>(), rowJ, upper.data(), s, j, reciprocal.data(),
-                   lower.data() + j * s, upperGroups.data(), &lowerGroups[j]);
+    EliminateRowOf(groups, std::make_index_sequence<kMaxRows / kLanes>(), rowJ, upper.data(), s, j, meets[j],
+                   reciprocal.data(), lower.data() + j * s, upperGroups.data(), &lowerGroups[j]);
     const MeReal d = rowJ[j];
     if (!(diagonal[j] > 0) || !(d > kPivotFloor * diagonal[j])) return false;
     reciprocal[j] = MeReal(1) / d;

@@ -30,6 +30,27 @@
  * the caller chose: rows of few nonzeros first (a car's contacts before its
  * joints, which all share the chassis) keep it low.
  *
+ * Which rows meet (symbolic elimination). Row j's updates come from the
+ * rows k < j with u_kj != 0. Without more knowledge every k is tested; a
+ * caller that knows which entries of the upper triangle it fills (from its
+ * sparse source: begin(rows, Pattern::Noted), then notePattern for each
+ * off-diagonal entry) lets factor() find them first, from the pattern
+ * alone, and keep them for the next block of that pattern
+ * (Pattern::Kept). With P_k the columns c > k where u_kc may be nonzero
+ * and p(k) = min P_k (row k's parent in the elimination tree),
+ *     P_k = {c > k : a_kc noted}  union  (P_i - {k} for each i with p(i) = k)
+ * (George & Liu, "Computer Solution of Large Sparse Positive Definite
+ * Systems", sec. 5.4, row k of U for column k of L). Row j then visits
+ * only the rows k with j in P_k, in ascending k as before. The pattern
+ * holds every entry that can be nonzero, so a row left out would have
+ * subtracted l_jk = 0 exactly and been skipped all the same: the bits are
+ * those of the full test. Where few rows meet (a rag doll's tree) most of
+ * the m^2 / 2 tests are skipped; the pattern is found from the caller's
+ * bits in O(m) word operations and O(entries of U) bit sets. A caller
+ * that says Kept promises the pattern of the last block factorised, of
+ * the same size (a block of another size falls back to testing every
+ * pair).
+ *
  * Breakdown as in the envelope LDL^T: a pivot d_k <= kPivotFloor * (the
  * original a_kk), or a_kk <= 0, stops the factorisation and factor()
  * returns false; the caller takes another path.
@@ -54,6 +75,7 @@
 
 #include "MePrecision.h"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -78,15 +100,40 @@ struct DenseLdlt {
   static_assert(kMaxRows / kLanes <= 32, "a group per bit");
   std::vector<GroupMask> upperGroups, lowerGroups;
   std::vector<MeReal> diagonal; /* the original a_kk, for the pivot floor */
+  /* Per row k, the columns c > k where the block may be nonzero (bit c),
+   * as noted by the caller; factor() widens each row's to the factor's
+   * (P_k above). */
+  using RowBits = std::array<std::uint64_t, 2>;
+  static_assert(kMaxRows <= 128, "a column per bit");
+  std::vector<RowBits> pattern;
+  /* Per row j, the rows k < j that may meet it (bit k: j in P_k). */
+  std::vector<RowBits> meets;
+  /* What begin() was told of the block's pattern. */
+  enum class Pattern {
+    Unknown, /* every pair of rows may meet */
+    Noted,   /* the caller marks each entry it fills (notePattern) */
+    Kept,    /* that of the last block factorised, of the same size */
+  };
   /* solve()'s scratch, one padded row (so solve() is const but not safe to
    * call from two threads on one factor). */
   mutable std::vector<MeReal> work;
 
+ private:
+  Pattern known_ = Pattern::Unknown;
+
+ public:
   /* Room for blocks of up to `rows` rows. */
   void reserve(std::size_t rows);
   /* A new m x m block, zero wherever factor() and solve() read: row j from
-   * column j rounded down to kLanes (which covers the upper triangle). */
-  void begin(int rows);
+   * column j rounded down to kLanes (which covers the upper triangle).
+   * `known` says how factor() learns which rows meet (Pattern; see "Which
+   * rows meet"). */
+  void begin(int rows, Pattern known = Pattern::Unknown);
+  /* Entry (i, j), i < j, may be nonzero (after begin(rows, Pattern::Noted)). */
+  void notePattern(int i, int j) {
+    const auto c = static_cast<unsigned>(j);
+    pattern[static_cast<std::size_t>(i)][c / 64] |= std::uint64_t(1) << (c % 64);
+  }
   /* Entry (i, j) of the upper triangle, j >= i. */
   MeReal &at(int i, int j) {
     return upper[static_cast<std::size_t>(i) * static_cast<std::size_t>(stride) + static_cast<std::size_t>(j)];

@@ -134,6 +134,7 @@ void SparseBackend::keepOrderings(const SparseLcpProblem &p) {
   orderChosen_ = useBandOrder_ = denseCheaper_ = false;
   degreeOrder_.clear();
   denseMapRows_.clear();
+  denseMeetRows_.clear();
   denseCandidateRows_.clear();
 }
 
@@ -169,6 +170,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   ReserveRoom(denseRows_, n);
   ReserveRoom(degreeOrder_, n);
   ReserveRoom(denseMapRows_, n);
+  ReserveRoom(denseMeetRows_, n);
   ReserveRoom(denseCandidateRows_, n);
   /* Reverse Cuthill-McKee scratch (computeBandOrder). */
   ReserveRoom(bandRank_, n);
@@ -197,6 +199,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
    * once a free set comes back, so reserved here). */
   const std::size_t denseRowsMax = std::min(room, kDenseRows);
   denseFill_.reserve(std::min(Room(U(p.rowStart[n])), denseRowsMax * (denseRowsMax + 1) / 2));
+  ReserveRoom(densePattern_, denseRowsMax);
   envelopeRows_ = envelopeRows;
   keepOrderings(p);
   ReserveRoom(bandRows_, n);
@@ -875,8 +878,10 @@ void SparseBackend::fillEnvelope(const std::vector<int> &rows, std::size_t from)
 void SparseBackend::mapDense() {
   const auto stride = U(dense_.stride);
   denseFill_.clear();
+  densePattern_.assign(denseRows_.size(), DenseLdlt::RowBits{});
   forEachFreeEntry(denseRows_, [&](std::size_t a, std::size_t c, int k) {
     if (c >= a) denseFill_.emplace_back(k, static_cast<int>(a * stride + c));
+    if (c > a) densePattern_[a][c / 64] |= std::uint64_t(1) << (c % 64);
   });
   denseMapRows_ = denseRows_;
 }
@@ -907,7 +912,10 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   for (int i : degreeOrder_)
     if (set[U(i)] == Free) rows.push_back(i);
   const std::size_t m = rows.size();
-  dense_.begin(static_cast<int>(m));
+  /* The pattern, and so which rows meet, depends on the sparsity and the
+   * free rows only: the last dense factor's is kept while they stay. */
+  const bool samePattern = rows == denseMeetRows_;
+  dense_.begin(static_cast<int>(m), samePattern ? DenseLdlt::Pattern::Kept : DenseLdlt::Pattern::Noted);
   MeReal *upper = dense_.upper.data();
   /* The map pays when the same free rows come back (the next step's first
    * factorisation, from the warm start's active set); while pivots change
@@ -916,13 +924,17 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   if (rows != denseMapRows_ && rows != denseCandidateRows_) {
     const auto stride = U(dense_.stride);
     forEachFreeEntry(rows, [&](std::size_t a, std::size_t c, int k) {
-      if (c >= a) upper[a * stride + c] = val[U(k)];
+      if (c < a) return;
+      upper[a * stride + c] = val[U(k)];
+      if (c > a && !samePattern) dense_.notePattern(static_cast<int>(a), static_cast<int>(c));
     });
     denseCandidateRows_ = rows;
   } else {
     if (rows != denseMapRows_) mapDense();
     for (const auto &[k, at] : denseFill_) upper[U(at)] = val[U(k)];
+    if (!samePattern) std::copy(densePattern_.begin(), densePattern_.end(), dense_.pattern.begin());
   }
+  denseMeetRows_ = rows;
   for (std::size_t a = 0; a < m; ++a) upper[a * U(dense_.stride) + a] += eps_;
   if (!dense_.factor()) return false;
   factor_ = Factor::Dense;

@@ -367,7 +367,11 @@ class SparseBackend {
    * rows that map was made for (mapDense). */
   std::vector<int> degreeOrder_, denseRows_;
   std::vector<std::pair<int, int>> denseFill_;
+  std::vector<DenseLdlt::RowBits> densePattern_; /* the map's entries as DenseLdlt::notePattern marks them */
   std::vector<int> denseMapRows_;
+  /* The free rows of the last dense factorisation, whose pattern dense_
+   * keeps (DenseLdlt::Pattern::Kept). */
+  std::vector<int> denseMeetRows_;
   /* The free rows of the last dense factorisation made without the map:
    * the map is made when they come back. */
   std::vector<int> denseCandidateRows_;

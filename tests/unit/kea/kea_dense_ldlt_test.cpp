@@ -3,7 +3,8 @@
 // factorisation, agrees with the envelope LDL^T, leaves the padding of its
 // rows zero, reports a breakdown on a singular or indefinite block, refuses
 // a block larger than kMaxRows, and gives the same bits on every run and
-// the bits of its documented order taken one scalar at a time.
+// the bits of its documented order taken one scalar at a time, also when
+// it is told which entries may be nonzero (a tree's pattern).
 #include "kea_dense_ldlt.h"
 #include "kea_envelope_ldlt.h"
 
@@ -232,4 +233,99 @@ TEST(DenseLdlt, GivesTheBitsOfTheScalarOrder) {
         ASSERT_EQ(std::bit_cast<Bits>(x[(size_t)i]), std::bit_cast<Bits>(expected[(size_t)i]))
             << "m = " << m << ", band = " << band << ", x[" << i << "]";
     }
+}
+
+namespace {
+
+// A = J J^T + I of rows on a tree of bodies, as a rag doll's: `bodies`
+// bodies, body b > 0 joined to a random earlier one by three rows on both,
+// and two to four rows on each body alone (its contacts); six random J
+// entries per row and body. Rows share a nonzero exactly when they share a
+// body. The rows are shuffled, so that no band follows the tree. `values`
+// seeds J alone: two seeds give two matrices of one pattern.
+std::vector<double> TreeSpd(int bodies, std::uint32_t shape, std::uint32_t values, int &m) {
+  std::vector<std::vector<int>> rowBodies;
+  for (int b = 1; b < bodies; ++b) {
+    const int parent = (int)((Unit(shape, (std::uint32_t)b) + 1) / 2 * b) % b;
+    for (int r = 0; r < 3; ++r) rowBodies.push_back({parent, b});
+  }
+  for (int b = 0; b < bodies; ++b) {
+    const int contacts = 2 + (int)((Unit(shape + 1, (std::uint32_t)b) + 1) * 1.5) % 3;
+    for (int r = 0; r < contacts; ++r) rowBodies.push_back({b});
+  }
+  for (size_t i = rowBodies.size(); i > 1; --i) {
+    const auto j = (size_t)((Unit(shape + 2, (std::uint32_t)i) + 1) / 2 * (double)i);
+    std::swap(rowBodies[i - 1], rowBodies[std::min(j, i - 1)]);
+  }
+  m = (int)rowBodies.size();
+  const int cols = 6 * bodies;
+  std::vector<double> jac((size_t)m * cols, 0.0), a((size_t)m * m, 0.0);
+  for (int i = 0; i < m; ++i)
+    for (int b : rowBodies[(size_t)i])
+      for (int k = 0; k < 6; ++k)
+        jac[(size_t)i * cols + 6 * b + k] = Unit(values, (std::uint32_t)(i * cols + 6 * b + k));
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      double s = i == j ? 1.0 : 0.0;
+      for (int k = 0; k < cols; ++k) s += jac[(size_t)i * cols + k] * jac[(size_t)j * cols + k];
+      a[(size_t)i * m + j] = s;
+    }
+  return a;
+}
+
+// Fills the nonzeros of a's upper triangle, noting each off-diagonal one
+// (and, with `extra`, also every entry (i, i + 2) whether or not it is
+// zero: a pattern may hold more than the nonzeros).
+void FillNoting(DenseLdlt &d, const std::vector<double> &a, int m, DenseLdlt::Pattern known, bool extra = false) {
+  d.begin(m, known);
+  for (int i = 0; i < m; ++i)
+    for (int j = i; j < m; ++j) {
+      const bool nonzero = a[(size_t)i * m + j] != 0;
+      if (nonzero) d.at(i, j) = (MeReal)a[(size_t)i * m + j];
+      if (known == DenseLdlt::Pattern::Noted && j > i && (nonzero || (extra && j == i + 2))) d.notePattern(i, j);
+    }
+}
+
+void ExpectScalarBits(const DenseLdlt &d, const std::vector<double> &a, int m, const char *what) {
+  std::vector<MeReal> b((size_t)m), x((size_t)m);
+  for (int i = 0; i < m; ++i) b[(size_t)i] = (MeReal)Unit(41u, (std::uint32_t)i);
+  d.solve(b, x);
+  const std::vector<MeReal> expected = ScalarLdltSolve(a, m, b);
+  for (int i = 0; i < m; ++i)
+    ASSERT_EQ(std::bit_cast<Bits>(x[(size_t)i]), std::bit_cast<Bits>(expected[(size_t)i]))
+        << what << ", m = " << m << ", x[" << i << "]";
+}
+
+}  // namespace
+
+// A factor told which entries it fills visits only the rows the symbolic
+// elimination says can meet, and one told that the pattern is the last
+// one's reuses that: both give the bits of the full test, on trees whose
+// rows are shuffled (fill reaches across the block), in one word of
+// columns and in two.
+TEST(DenseLdlt, ANotedOrKeptPatternGivesTheBitsOfTheFullTest) {
+  DenseLdlt d;
+  d.reserve(DenseLdlt::kMaxRows);
+  int tested = 0;
+  for (int bodies : {3, 6, 10, 13, 16})
+    for (std::uint32_t shape = 1; shape <= 3; ++shape) {
+      int m = 0;
+      const std::vector<double> a = TreeSpd(bodies, shape * 17, 5, m);
+      if (m > DenseLdlt::kMaxRows) continue;
+      FillNoting(d, a, m, DenseLdlt::Pattern::Noted);
+      ASSERT_TRUE(d.factor());
+      ExpectScalarBits(d, a, m, "noted");
+      int again = 0;
+      const std::vector<double> next = TreeSpd(bodies, shape * 17, 6, again);  // the same pattern, new values
+      ASSERT_EQ(again, m);
+      FillNoting(d, next, m, DenseLdlt::Pattern::Kept);
+      ASSERT_TRUE(d.factor());
+      ExpectScalarBits(d, next, m, "kept");
+      FillNoting(d, a, m, DenseLdlt::Pattern::Noted, true);
+      ASSERT_TRUE(d.factor());
+      ExpectScalarBits(d, a, m, "noted with extra entries");
+      ++tested;
+      if (m > 64) ++tested;
+    }
+  EXPECT_GE(tested, 16);  // every tree fits; some pass 64 rows
 }
