@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <utility>
 
 namespace karma::kea::detail {
@@ -142,10 +143,10 @@ void DenseLdlt::reserve(std::size_t rows) {
   meets.reserve(rows);
 }
 
-void DenseLdlt::begin(int rows, Pattern known) {
+void DenseLdlt::begin(int rows, Pattern told) {
   m = rows;
-  known_ = known;
-  if (known == Pattern::Noted) pattern.assign(static_cast<std::size_t>(rows), RowBits{});
+  known = told;
+  if (told == Pattern::Noted) pattern.assign(static_cast<std::size_t>(rows), RowBits{});
   stride = static_cast<int>(Padded(static_cast<std::size_t>(rows)));
   const auto s = static_cast<std::size_t>(stride);
   const auto lanes = static_cast<std::size_t>(kLanes);
@@ -168,10 +169,13 @@ bool DenseLdlt::factor() {
   diagonal.resize(n);
   upperGroups.assign(n, 0);
   lowerGroups.resize(n);
-  if (known_ == Pattern::Noted)
+  if (known == Pattern::Noted) {
     MeetingRows(n, pattern, meets);
-  else if (known_ == Pattern::Unknown || meets.size() != n)
+    meetsNoted = true;
+  } else if (known == Pattern::Unknown || !meetsNoted || meets.size() != n) {
     AllRowsMeet(n, meets);
+    meetsNoted = false;
+  }
   for (std::size_t j = 0; j < n; ++j) {
     MeReal *rowJ = upper.data() + j * s;
     diagonal[j] = rowJ[j];
@@ -181,6 +185,7 @@ bool DenseLdlt::factor() {
     const MeReal d = rowJ[j];
     if (!(diagonal[j] > 0) || !(d > kPivotFloor * diagonal[j])) return false;
     reciprocal[j] = MeReal(1) / d;
+    if (!std::isfinite(reciprocal[j])) return false; /* a subnormal pivot (see the header) */
   }
   return true;
 }

@@ -41,19 +41,21 @@
  *     P_k = {c > k : a_kc noted}  union  (P_i - {k} for each i with p(i) = k)
  * (George & Liu, "Computer Solution of Large Sparse Positive Definite
  * Systems", sec. 5.4, row k of U for column k of L). Row j then visits
- * only the rows k with j in P_k, in ascending k as before. The pattern
- * holds every entry that can be nonzero, so a row left out would have
+ * only the rows k with j in P_k, in ascending k (the order above). The
+ * pattern holds every entry that can be nonzero, so a row left out would have
  * subtracted l_jk = 0 exactly and been skipped all the same: the bits are
  * those of the full test. Where few rows meet (a rag doll's tree) most of
  * the m^2 / 2 tests are skipped; the pattern is found from the caller's
  * bits in O(m) word operations and O(entries of U) bit sets. A caller
- * that says Kept promises the pattern of the last block factorised, of
- * the same size (a block of another size falls back to testing every
- * pair).
+ * that says Kept promises the pattern of the last block whose pattern was
+ * noted, of the same size (otherwise, or when no noted pattern has been
+ * analysed since the last Unknown block, every pair is tested).
  *
  * Breakdown as in the envelope LDL^T: a pivot d_k <= kPivotFloor * (the
  * original a_kk), or a_kk <= 0, stops the factorisation and factor()
- * returns false; the caller takes another path.
+ * returns false; the caller takes another path. So does a pivot whose
+ * reciprocal overflows (a subnormal d_k, possible only with eps = 0): with
+ * r_k infinite every later l_jk would be infinite or NaN.
  *
  * Solve: L D L^T x = b as
  *     z_k = y_k r_k,  y_c <- y_c - u_kc z_k  (k ascending, c > k),
@@ -76,6 +78,7 @@
 #include "MePrecision.h"
 
 #include <array>
+#include <cassert>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -112,25 +115,26 @@ struct DenseLdlt {
   enum class Pattern {
     Unknown, /* every pair of rows may meet */
     Noted,   /* the caller marks each entry it fills (notePattern) */
-    Kept,    /* that of the last block factorised, of the same size */
+    Kept,    /* that of the last noted block, of the same size */
   };
+  Pattern known = Pattern::Unknown; /* set by begin() */
+  /* Whether `meets` holds the analysis of a noted pattern (what Kept
+   * reuses). */
+  bool meetsNoted = false;
   /* solve()'s scratch, one padded row (so solve() is const but not safe to
    * call from two threads on one factor). */
   mutable std::vector<MeReal> work;
-
- private:
-  Pattern known_ = Pattern::Unknown;
-
- public:
   /* Room for blocks of up to `rows` rows. */
   void reserve(std::size_t rows);
   /* A new m x m block, zero wherever factor() and solve() read: row j from
    * column j rounded down to kLanes (which covers the upper triangle).
-   * `known` says how factor() learns which rows meet (Pattern; see "Which
+   * `told` says how factor() learns which rows meet (Pattern; see "Which
    * rows meet"). */
-  void begin(int rows, Pattern known = Pattern::Unknown);
-  /* Entry (i, j), i < j, may be nonzero (after begin(rows, Pattern::Noted)). */
+  void begin(int rows, Pattern told = Pattern::Unknown);
+  /* Entry (i, j) may be nonzero; 0 <= i < j < m (after begin(m,
+   * Pattern::Noted)). */
   void notePattern(int i, int j) {
+    assert(0 <= i && i < j && j < m);
     const auto c = static_cast<unsigned>(j);
     pattern[static_cast<std::size_t>(i)][c / 64] |= std::uint64_t(1) << (c % 64);
   }

@@ -134,7 +134,7 @@ void SparseBackend::keepOrderings(const SparseLcpProblem &p) {
   orderChosen_ = useBandOrder_ = denseCheaper_ = false;
   degreeOrder_.clear();
   denseMapRows_.clear();
-  denseMeetRows_.clear();
+  densePatternRows_.clear();
   denseCandidateRows_.clear();
 }
 
@@ -170,7 +170,7 @@ void SparseBackend::reset(const SparseLcpProblem &p, MeReal eps, int envelopeRow
   ReserveRoom(denseRows_, n);
   ReserveRoom(degreeOrder_, n);
   ReserveRoom(denseMapRows_, n);
-  ReserveRoom(denseMeetRows_, n);
+  ReserveRoom(densePatternRows_, n);
   ReserveRoom(denseCandidateRows_, n);
   /* Reverse Cuthill-McKee scratch (computeBandOrder). */
   ReserveRoom(bandRank_, n);
@@ -904,8 +904,9 @@ void SparseBackend::computeDegreeOrder() {
  * block, with its least-squares fallback). */
 bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   const std::span<const MeReal> val = values();
-  /* The order and the map depend on the sparsity only (and the map on the
-   * free rows): keepOrderings drops both for a problem of another one. */
+  /* The order, the map and the pattern depend on the sparsity only (the
+   * map and the pattern on the free rows too): keepOrderings drops all
+   * three for a problem of another one. */
   if (degreeOrder_.empty()) computeDegreeOrder();
   std::vector<int> &rows = denseRows_;
   rows.clear();
@@ -914,7 +915,7 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
   const std::size_t m = rows.size();
   /* The pattern, and so which rows meet, depends on the sparsity and the
    * free rows only: the last dense factor's is kept while they stay. */
-  const bool samePattern = rows == denseMeetRows_;
+  const bool samePattern = rows == densePatternRows_;
   dense_.begin(static_cast<int>(m), samePattern ? DenseLdlt::Pattern::Kept : DenseLdlt::Pattern::Noted);
   MeReal *upper = dense_.upper.data();
   /* The map pays when the same free rows come back (the next step's first
@@ -934,7 +935,7 @@ bool SparseBackend::factoriseDense(const std::vector<unsigned char> &set) {
     for (const auto &[k, at] : denseFill_) upper[U(at)] = val[U(k)];
     if (!samePattern) std::copy(densePattern_.begin(), densePattern_.end(), dense_.pattern.begin());
   }
-  denseMeetRows_ = rows;
+  densePatternRows_ = rows;
   for (std::size_t a = 0; a < m; ++a) upper[a * U(dense_.stride) + a] += eps_;
   if (!dense_.factor()) return false;
   factor_ = Factor::Dense;

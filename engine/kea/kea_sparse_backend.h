@@ -371,7 +371,7 @@ class SparseBackend {
   std::vector<int> denseMapRows_;
   /* The free rows of the last dense factorisation, whose pattern dense_
    * keeps (DenseLdlt::Pattern::Kept). */
-  std::vector<int> denseMeetRows_;
+  std::vector<int> densePatternRows_;
   /* The free rows of the last dense factorisation made without the map:
    * the map is made when they come back. */
   std::vector<int> denseCandidateRows_;

@@ -8,9 +8,11 @@
 // factor falls back to a factorisation and still agrees; another sparsity
 // or another epsilon (or another sparsity stamp) never uses the kept factor;
 // a stamped sparsity gives the unstamped answers; without a factor memory
-// nothing is kept; WhenCheaper keeps a factor while its stale solves pay.
+// nothing is kept; WhenCheaper keeps a factor while its stale solves pay;
+// the dense factor's kept pattern never serves another sparsity.
 #include "kea_tolerance.h"
 #include "kea_contact_problems.h"
+#include "kea_hash_unit.h"
 #include "kea_lcp.h"
 #include "kea_sparse_backend.h"
 
@@ -481,4 +483,62 @@ TEST(KeaFactorMemory, WithUpdatesARestingSequenceReachesItsKeptFactor) {
   }
   ASSERT_GT(resting, 1);
   EXPECT_GE(reusing, resting - 1);
+}
+
+namespace {
+
+// An unbounded 12-row problem whose rows all have six entries, at the
+// column offsets 0, +-a, +-b and 6 (mod 12; symmetric, diagonally
+// dominant): every row has the same degree, so the dense path orders the
+// rows the same way whatever a and b, and its free rows are all of them.
+ContactProblem Circulant(int a, int b, std::uint32_t seed) {
+  constexpr int n = 12;
+  ContactProblem p;
+  p.n = n;
+  std::vector<double> dense((size_t)n * n, 0.0);
+  for (int i = 0; i < n; ++i) {
+    dense[(size_t)(i * n + i)] = 10;
+    for (int offset : {a, -a, b, -b, 6}) {
+      const int j = ((i + offset) % n + n) % n;
+      const int lo = std::min(i, j), hi = std::max(i, j);
+      const double v = kea_test::Unit(seed, (std::uint32_t)(lo * n + hi));
+      dense[(size_t)(i * n + j)] = dense[(size_t)(j * n + i)] = v;
+    }
+  }
+  p.rowStart.push_back(0);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j)
+      if (dense[(size_t)(i * n + j)] != 0) {
+        p.col.push_back(j);
+        p.val.push_back((MeReal)dense[(size_t)(i * n + j)]);
+      }
+    p.rowStart.push_back((int)p.col.size());
+    p.b.push_back((MeReal)kea_test::Unit(seed + 1, (std::uint32_t)i));
+    p.lo.push_back(-std::numeric_limits<MeReal>::infinity());
+    p.hi.push_back(std::numeric_limits<MeReal>::infinity());
+  }
+  return p;
+}
+
+}  // namespace
+
+// The dense factor keeps which rows meet while the free rows stay
+// (DenseLdlt::Pattern::Kept); a problem of another sparsity whose free rows
+// are the same row numbers must not inherit them: it gets the bits of a
+// solve in a fresh workspace.
+TEST(KeaFactorMemory, AnotherSparsityWithTheSameFreeRowsIsAnalysedAgain) {
+  const ContactProblem first = Circulant(1, 2, 3), second = Circulant(3, 4, 5);
+  ASSERT_EQ(first.col.size(), 72u);
+  ASSERT_EQ(second.col.size(), 72u);
+  Workspace workspace(KeaWorkspaceCreate());
+  KeaResult r;
+  KeaSolveSparse(first.sparse(), KeaOptions{}, *workspace, r);
+  ASSERT_EQ(r.status, KeaStatus::Solved);
+  KeaSolveSparse(second.sparse(), KeaOptions{}, *workspace, r);
+  ASSERT_EQ(r.status, KeaStatus::Solved);
+  Workspace fresh(KeaWorkspaceCreate());
+  KeaResult expected;
+  KeaSolveSparse(second.sparse(), KeaOptions{}, *fresh, expected);
+  ASSERT_EQ(r.lambda.size(), expected.lambda.size());
+  for (std::size_t i = 0; i < r.lambda.size(); ++i) EXPECT_EQ(r.lambda[i], expected.lambda[i]) << "row " << i;
 }
