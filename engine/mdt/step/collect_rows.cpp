@@ -8,9 +8,9 @@
 // (capping.cpp) marks the rows to leave out, and each kept row gets its
 // index in the solve.
 #include <algorithm>
-#include <cmath>
 
 #include "MeMessage.h"
+#include "row_scan.h"
 #include "step.h"
 
 namespace karma::mdt {
@@ -19,38 +19,16 @@ namespace {
 
 int rowCapacity(const MdtConstraint *c) { return c->type->rowCapacity ? c->type->rowCapacity(c) : c->type->maxRows; }
 
-// The largest |J| value of a row, its twelve values reduced as a tree of
-// depth four, so that the rows' running maximum waits on one comparison a
-// row. (The maximum of values that are not NaN is the same in any order; a
-// row with a NaN fails the finiteness test, which discards the result.)
-MeReal largestAbsJ(const Row &row) {
-  MeReal block[4];
-  for (int k = 0; k < 4; ++k)
-    block[k] = std::max(std::max(std::fabs(row.J[k][0]), std::fabs(row.J[k][1])), std::fabs(row.J[k][2]));
-  return std::max(std::max(block[0], block[1]), std::max(block[2], block[3]));
-}
-
-// Whether every row is finite; adds the rows that ask for a bounce
-// (bounceAfter > 0) to out->bounceRows and raises out->largestJ and
-// out->largestSoftness to the largest |J| value and |softness| of the rows.
+// Whether every row is finite; adds the rows that ask for a bounce to
+// out->bounceRows and raises out->largestJ and out->largestSoftness to the
+// rows' largest |J| value and |softness| (row_scan.h).
 bool scanRows(const Row *rows, int n, PartitionRows *out) {
-  bool finite = true;
-  int asking = 0;
-  MeReal largestJ = 0, largestSoftness = 0;
-  for (int r = 0; r < n; ++r) {
-    const Row &row = rows[r];
-    for (int k = 0; k < 4; ++k) finite = finite && MeVector3AllFinite(row.J[k]);
-    finite = finite && std::isfinite(row.speed) && std::isfinite(row.softness);
-    largestJ = std::max(largestJ, largestAbsJ(row));
-    largestSoftness = std::max(largestSoftness, std::fabs(row.softness));
-    asking += row.bounceAfter > 0 ? 1 : 0;
-  }
-  if (finite) {
-    out->bounceRows += asking;
-    out->largestJ = std::max(out->largestJ, largestJ);
-    out->largestSoftness = std::max(out->largestSoftness, largestSoftness);
-  }
-  return finite;
+  const RowScan scan = scanRowValues(rows, n);
+  if (!scan.finite) return false;
+  out->bounceRows += scan.asking;
+  out->largestJ = std::max(out->largestJ, scan.largestJ);
+  out->largestSoftness = std::max(out->largestSoftness, scan.largestSoftness);
+  return true;
 }
 
 // Writes constraint c's rows at rows[n...]; returns how many it kept and
