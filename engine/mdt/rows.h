@@ -19,6 +19,10 @@ Anchors anchorsOf(const MdtConstraint *c);
 // driving d . (p1 - p0) (the separation to close) with gamma.
 Row &addLinearRow(RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d);
 
+// The same row's J alone, its speed left at 0: for a caller that sets the
+// speed itself (contacts).
+Row &addLinearJacobianRow(RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d);
+
 // One angular row about world axis e: J v = e . (w0 - w1), with target
 // speed gamma * error / h.
 Row &addAngularRow(RowSink &sink, const StepContext &ctx, const MeVector3 e, MeReal error);

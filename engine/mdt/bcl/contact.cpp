@@ -72,7 +72,8 @@ int contactRowCount(const MdtContact *c) {
 }
 
 int storeContactImpulses(MdtContact *c, const Row *rows, const MeReal *impulse, int n) {
-  const int count = contactRowCount(c) < n ? contactRowCount(c) : n;
+  const int written = contactRowCount(c);
+  const int count = written < n ? written : n;
   c->warmNormal = count > 0 ? impulse[0] : 0;
   MeVector3Set(c->warmFriction, 0, 0, 0);
   // A friction row's linear Jacobian on body 0 is its direction (frictionRow).
@@ -123,7 +124,7 @@ MeReal predictedRowVelocity(const MdtContact *c, const Row &row) {
 
 void frictionRow(MdtContact *c, RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d,
                  int normalRow, MdtFrictionModel model, MeReal limit, MeReal coefficient, MeReal slip, MeReal slide) {
-  Row &row = addLinearRow(sink, ctx, a, d);
+  Row &row = addLinearJacobianRow(sink, ctx, a, d);
   row.role = RowRole::ContactFriction;
   row.contact = c;
   row.depth = c->penetration;
@@ -170,6 +171,12 @@ void speculativeBounce(const MdtContact *c, Row &n, const StepContext &ctx) {
 }  // namespace
 
 void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
+  MeVector3 origin[2];
+  for (int i = 0; i < 2; ++i) bodyOrigin(c, i, origin[i]);
+  addContactRows(c, sink, ctx, origin);
+}
+
+void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx, const MeVector3 origin[2]) {
   // Against the world, the body acts at its own surface point: the contact
   // position lies midway between the surfaces, depth d apart along n, so
   // body 0's point is p - (d/2) n. Friction then turns it about its true
@@ -180,14 +187,10 @@ void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx) {
   attachmentPoint(c, 0, a.p[0]);
   if (!c->body[1]) MeVector3MultiplyAdd(a.p[0], -(MeReal)0.5 * c->penetration, c->normal);
   MeVector3Copy(a.p[1], a.p[0]);
-  for (int i = 0; i < 2; ++i) {
-    MeVector3 x;
-    bodyOrigin(c, i, x);
-    MeVector3Subtract(a.r[i], a.p[i], x);
-  }
+  for (int i = 0; i < 2; ++i) MeVector3Subtract(a.r[i], a.p[i], origin[i]);
   const MdtContactParams &prm = c->params;
   const int normalRow = sink.count();
-  Row &n = addLinearRow(sink, ctx, a, c->normal);
+  Row &n = addLinearJacobianRow(sink, ctx, a, c->normal);  // its speed is set below
   n.role = RowRole::ContactNormal;
   n.contact = c;
   n.depth = c->penetration;

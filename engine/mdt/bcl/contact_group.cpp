@@ -23,9 +23,11 @@ void syncBodies(MdtContactGroup *g, MdtContact *k) {
 
 void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
   auto *g = as<MdtContactGroup>(c);
+  MeVector3 origin[2];
+  for (int i = 0; i < 2; ++i) bodyOrigin(g, i, origin[i]);
   for (MdtContact *k = g->first; k; k = k->next) {
     syncBodies(g, k);
-    addContactRows(k, sink, ctx);
+    addContactRows(k, sink, ctx, origin);
   }
 }
 

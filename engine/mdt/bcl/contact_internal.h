@@ -56,6 +56,9 @@ extern const ConstraintType kContactGroupType;
 // Rows of one contact (normal, then friction per its type) appended to
 // `sink`; friction rows refer to the normal row by its index in the sink.
 void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx);
+// The same with the contact's body origins (bodyOrigin) given: a group
+// finds them once for all its contacts.
+void addContactRows(MdtContact *c, RowSink &sink, const StepContext &ctx, const MeVector3 origin[2]);
 // The friction directions in use: primary d1 and secondary d2 = n x d1.
 // d1 is the first of these whose part in the tangent plane is long enough,
 // normalised: the user's direction (MdtContactSetDirection), then the axis
