@@ -16,15 +16,6 @@ Anchors anchorsOf(const MdtConstraint *c) {
   return a;
 }
 
-Row &addLinearJacobianRow(RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d) {
-  Row &row = sink.add(ctx);
-  MeVector3Copy(row.J[0], d);
-  MeVector3Cross(row.J[1], a.r[0], d);
-  MeVector3MultiplyScalar(row.J[2], d, -1);
-  MeVector3Cross(row.J[3], d, a.r[1]);  // -(r1 x d)
-  return row;
-}
-
 Row &addLinearRow(RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d) {
   Row &row = addLinearJacobianRow(sink, ctx, a, d);
   MeVector3 gap;

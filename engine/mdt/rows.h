@@ -20,8 +20,17 @@ Anchors anchorsOf(const MdtConstraint *c);
 Row &addLinearRow(RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d);
 
 // The same row's J alone, its speed left at 0: for a caller that sets the
-// speed itself (contacts).
-Row &addLinearJacobianRow(RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d);
+// speed itself (contacts). Inline, so that a caller's anchors can stay in
+// registers: read back from memory as wider loads than the stores that
+// wrote them, they stall (store forwarding fails).
+inline Row &addLinearJacobianRow(RowSink &sink, const StepContext &ctx, const Anchors &a, const MeVector3 d) {
+  Row &row = sink.add(ctx);
+  MeVector3Copy(row.J[0], d);
+  MeVector3Cross(row.J[1], a.r[0], d);
+  MeVector3MultiplyScalar(row.J[2], d, -1);
+  MeVector3Cross(row.J[3], d, a.r[1]);  // -(r1 x d)
+  return row;
+}
 
 // One angular row about world axis e: J v = e . (w0 - w1), with target
 // speed gamma * error / h.
