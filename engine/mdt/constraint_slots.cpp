@@ -40,7 +40,7 @@ bool grow(MdtWorldPrivate *p) {
   for (int k = 0; k < p->overflowCount; ++k) total += p->overflow[k].maxCount;
   const int size = (int)(total < 16 ? 16 : total > INT_MAX / 4 ? INT_MAX / 4 : total);
   MePool *pool = &p->overflow[p->overflowCount];
-  if (!MePoolInit(pool, size, (int)p->constraintSlotSize, (int)alignof(std::max_align_t))) return false;
+  if (!MePoolInit(pool, size, (int)p->constraintSlotSize, kConstraintSlotAlignment)) return false;
   MePoolSetName(pool, "MdtWorld constraints (grown)");
   ++p->overflowCount;
   if (!p->grewConstraints) {

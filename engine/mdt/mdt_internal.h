@@ -78,6 +78,9 @@ struct StepScratch;
 // Constraint pools a world may have: the first and up to this many grown
 // ones, each doubling the slots (constraint_slots.cpp).
 inline constexpr int kMaxConstraintPools = 24;
+// Constraint slots start on a cache line, so that the fields a type keeps
+// together in one line (contact_internal.h) take one line.
+inline constexpr int kConstraintSlotAlignment = 64;
 struct ActiveSets;
 }  // namespace karma::mdt
 

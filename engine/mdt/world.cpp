@@ -67,7 +67,7 @@ MdtWorldID MEAPI MdtWorldCreate(const unsigned int maxBodies, const unsigned int
     ok = bodiesOk = MePoolInit(&p->bodies, (int)maxBodies, (int)sizeof(MdtBody), (int)alignof(MdtBody));
   }
   if (ok) {
-    ok = constraintsOk = MePoolInit(&p->constraints, (int)maxConstraints, (int)slot, (int)alignof(std::max_align_t));
+    ok = constraintsOk = MePoolInit(&p->constraints, (int)maxConstraints, (int)slot, kConstraintSlotAlignment);
   }
   if (ok) {
     p->scratch = new (std::nothrow) StepScratch();

@@ -49,8 +49,8 @@ void afterSolve(MdtConstraint *c, const Row *rows, const MeReal *impulse, int n,
 
 // The lines of each hinted contact (MdtContactGroup::hint) that the bridge,
 // addContactRows and storeContactImpulses read or write: the base's first
-// (type, bodies, attachment), the params, the normal to the warm memory, and
-// the friction axis.
+// (type, bodies, attachment), the params, and the line from the normal to
+// the warm memory (contact_internal.h).
 void prefetch(const MdtConstraint *c) {
   const auto *g = static_cast<const MdtContactGroup *>(c);
   const int n = std::min(g->count, kContactHints);
@@ -59,7 +59,6 @@ void prefetch(const MdtConstraint *c) {
     __builtin_prefetch(k);
     __builtin_prefetch(&k->params);
     __builtin_prefetch(&k->normal);
-    __builtin_prefetch(&k->frictionAxis);
   }
 }
 

@@ -5,10 +5,20 @@
 #include "MdtContact.h"
 #include "bcl_type.h"
 
+// The fields every step reads or writes (the bridge, the rows, the
+// impulses' memory) come first after the params, in one 64-byte line with
+// the slot aligned to 64 bytes (kConstraintSlotAlignment); `direction`,
+// read only when the user set one, comes last.
 struct MdtContact : MdtConstraint {
   MdtContactParams params;
-  MeVector3 normal;     // world frame, unit, from body 1 into body 0
-  MeVector3 direction;  // world frame, primary friction direction if set
+  MeVector3 normal;  // world frame, unit, from body 1 into body 0
+  // The primary friction direction of last step's rows (world frame, unit;
+  // zero before the first rows): without a direction set by the user, the next
+  // step keeps it, projected onto the new tangent plane, while it stays
+  // clear of the normal (contactDirections). So the friction rows turn with
+  // the normal instead of jumping by a quarter turn where anyOrthogonal's
+  // choice of axis switches (near-vertical normals, |n_x| close to |n_z|).
+  MeVector3 frictionAxis;
   MeBool directionSet;
   MeReal penetration;
   MdtContact *next;    // the next contact of the pair / group
@@ -22,13 +32,7 @@ struct MdtContact : MdtConstraint {
   // its projections onto them).
   MeReal warmNormal;
   MeVector3 warmFriction;
-  // The primary friction direction of last step's rows (world frame, unit;
-  // zero before the first rows): without a direction set by the user, the next
-  // step keeps it, projected onto the new tangent plane, while it stays
-  // clear of the normal (contactDirections). So the friction rows turn with
-  // the normal instead of jumping by a quarter turn where anyOrthogonal's
-  // choice of axis switches (near-vertical normals, |n_x| close to |n_z|).
-  MeVector3 frictionAxis;
+  MeVector3 direction;  // world frame, primary friction direction if set
 };
 
 namespace karma::mdt {

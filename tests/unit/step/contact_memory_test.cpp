@@ -3,6 +3,8 @@
 // its impulses; new contacts start from zero; lost ones go.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "contact_internal.h"
 #include "mdt_bridge.h"
@@ -216,3 +218,29 @@ TEST(ContactMemory, ThePrefetchesAcceptNullAndOtherConstraints) {
 }
 
 }  // namespace
+
+// Every constraint slot starts on a cache line (kConstraintSlotAlignment),
+// in the first pool and in the pools the world grows, and in single
+// precision the contact fields every step touches, from the normal to the
+// warm memory, lie in one line (contact_internal.h).
+TEST(ContactMemory, ContactSlotsStartOnALineAndKeepTheirStepFieldsInOne) {
+  MdtWorldID w = MdtWorldCreate(4, 4, 1, 1);
+  MdtBodyID a = MdtBodyCreate(w);
+  MdtContactGroupID g = MdtContactGroupCreate(w);
+  MdtContactGroupSetBodies(g, a, nullptr);
+  WarningCapture grown;  // a world of 4 constraints grows its pools below
+  std::vector<MdtContactID> made;
+  for (int i = 0; i < 40; ++i) made.push_back(MdtContactGroupCreateContact(g));
+  EXPECT_TRUE(grown.saw("MdtWorld"));
+  for (MdtContactID k : made) {
+    ASSERT_NE(k, nullptr);
+    const auto at = [](const void *p) { return reinterpret_cast<std::uintptr_t>(p); };
+    EXPECT_EQ(at(k) % karma::mdt::kConstraintSlotAlignment, 0u);
+    if (sizeof(MeReal) == 4) {
+      EXPECT_EQ(at(&k->normal) / 64, at(&k->warmFriction[2]) / 64);
+      EXPECT_EQ(at(&k->normal) / 64, at(&k->frictionAxis[2]) / 64);
+      EXPECT_EQ(at(&k->normal) / 64, at(&k->next) / 64);
+    }
+  }
+  MdtWorldDestroy(w);
+}
