@@ -145,34 +145,42 @@ constexpr int kMaxWarmRows = 16;  // warm-start memory per constraint
 }  // namespace karma::mdt
 
 // The base of every constraint. Each type's struct derives from it.
+// Ordered by when a step touches the fields, the slot starting on a cache
+// line (kConstraintSlotAlignment): in single precision the first 64 bytes
+// hold what every type's rows and the bridge read (the type, the bodies,
+// the attachment points), the next 64 what the gather and the partitions
+// read (the flags, the sort key, the body lists), the next 112 what every
+// step writes after the solve (force, torque, warm memory); the rest is
+// read when a user asks or a joint's rows need it.
 struct MdtConstraint {
   const karma::mdt::ConstraintType *type;
   MdtWorldID world;
   MdtBodyID body[2];  // body[1] NULL: the world
-  // Attachment frame per body, in that body's frame (world frame for the world).
+  // Attachment point per body, in that body's frame (world frame for the world).
   MeVector3 localPos[2];
-  MeVector3 localAxis[2];   // primary
-  MeVector3 localOrtho[2];  // secondary, orthogonal to the primary
+  // Contacts owned by a contact group are stepped through the group.
+  MdtConstraint *owner;
   MeBool enabled;
-  void *userData;
   MeI32 sortKey;
   std::uint64_t serial;
-  MeVector3 force[2];  // last step, world frame
-  MeVector3 torque[2];
-  // Warm start: last step's impulses, valid for `warmRows` rows.
-  MeReal warm[karma::mdt::kMaxWarmRows];
-  int warmRows;
   // Scratch of the step (partitioning).
   int mark;
+  int warmRows;  // rows of `warm` that hold last step's impulses
   // The body lists (active_sets.h): the bodies whose lists hold this
   // constraint and its neighbours there; gatherStamp marks it as reached
   // by the current gather.
   MdtBody *linked[2];
   MdtConstraint *linkNext[2];
-  MdtConstraint *linkPrev[2];
   std::uint64_t gatherStamp;
-  // Contacts owned by a contact group are stepped through the group.
-  MdtConstraint *owner;
+  MeVector3 force[2];  // last step, world frame
+  MeVector3 torque[2];
+  // Warm start: last step's impulses, valid for `warmRows` rows.
+  MeReal warm[karma::mdt::kMaxWarmRows];
+  MdtConstraint *linkPrev[2];
+  // Attachment axes per body, in that body's frame (world frame for the world).
+  MeVector3 localAxis[2];   // primary
+  MeVector3 localOrtho[2];  // secondary, orthogonal to the primary
+  void *userData;
 };
 
 namespace karma::mdt {

@@ -5,12 +5,13 @@
 #include "MdtContact.h"
 #include "bcl_type.h"
 
-// The fields every step reads or writes (the bridge, the rows, the
-// impulses' memory) come first after the params, in one 64-byte line with
-// the slot aligned to 64 bytes (kConstraintSlotAlignment); `direction`,
-// read only when the user set one, comes last.
+// The params start a cache line of their own (the slot starts on one:
+// kConstraintSlotAlignment), and the fields every step reads or writes
+// (the bridge, the rows, the impulses' memory) come next, in one line in
+// single precision; `direction`, read only when the user set one, comes
+// last.
 struct MdtContact : MdtConstraint {
-  MdtContactParams params;
+  alignas(64) MdtContactParams params;
   MeVector3 normal;  // world frame, unit, from body 1 into body 0
   // The primary friction direction of last step's rows (world frame, unit;
   // zero before the first rows): without a direction set by the user, the next
@@ -39,8 +40,11 @@ namespace karma::mdt {
 inline constexpr int kContactHints = 8;
 }
 
+// The group's own fields start a cache line (as a contact's params do), so
+// that the list's head and the hints are one or two lines the bridge
+// prefetches together (MdtContactGroupPrefetch).
 struct MdtContactGroup : MdtConstraint {
-  MdtContact *first;
+  alignas(64) MdtContact *first;
   int count;
   MeReal normalForce;
   // The first min(count, kContactHints) contacts in list order, kept by
@@ -51,6 +55,9 @@ struct MdtContactGroup : MdtConstraint {
   // prefetched, never read for a result.
   MdtContact *hint[karma::mdt::kContactHints];
 };
+static_assert(alignof(MdtContact) <= karma::mdt::kConstraintSlotAlignment &&
+                  alignof(MdtContactGroup) <= karma::mdt::kConstraintSlotAlignment,
+              "a slot keeps a contact's and a group's alignment");
 
 namespace karma::mdt {
 

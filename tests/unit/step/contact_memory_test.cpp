@@ -222,7 +222,7 @@ TEST(ContactMemory, ThePrefetchesAcceptNullAndOtherConstraints) {
 // Every constraint slot starts on a cache line (kConstraintSlotAlignment),
 // in the first pool and in the pools the world grows, and in single
 // precision the contact fields every step touches, from the normal to the
-// warm memory, lie in one line (contact_internal.h).
+// warm memory, lie in one line, after the params' own (contact_internal.h).
 TEST(ContactMemory, ContactSlotsStartOnALineAndKeepTheirStepFieldsInOne) {
   MdtWorldID w = MdtWorldCreate(4, 4, 1, 1);
   MdtBodyID a = MdtBodyCreate(w);
@@ -236,6 +236,7 @@ TEST(ContactMemory, ContactSlotsStartOnALineAndKeepTheirStepFieldsInOne) {
     ASSERT_NE(k, nullptr);
     const auto at = [](const void *p) { return reinterpret_cast<std::uintptr_t>(p); };
     EXPECT_EQ(at(k) % karma::mdt::kConstraintSlotAlignment, 0u);
+    EXPECT_EQ(at(&k->params) % 64, 0u);
     if (sizeof(MeReal) == 4) {
       EXPECT_EQ(at(&k->normal) / 64, at(&k->warmFriction[2]) / 64);
       EXPECT_EQ(at(&k->normal) / 64, at(&k->frictionAxis[2]) / 64);
