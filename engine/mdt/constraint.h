@@ -151,7 +151,8 @@ constexpr int kMaxWarmRows = 16;  // warm-start memory per constraint
 // the attachment points), the next 64 what the gather and the partitions
 // read (the flags, the sort key, the body lists), the next 112 what every
 // step writes after the solve (force, torque, warm memory); the rest is
-// read when a user asks or a joint's rows need it.
+// read when a user asks, a joint's rows need it, or a constraint joins or
+// leaves a body's list (linkPrev).
 struct MdtConstraint {
   const karma::mdt::ConstraintType *type;
   MdtWorldID world;

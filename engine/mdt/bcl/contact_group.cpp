@@ -50,7 +50,8 @@ void afterSolve(MdtConstraint *c, const Row *rows, const MeReal *impulse, int n,
 // The lines of each hinted contact (MdtContactGroup::hint) that the bridge,
 // addContactRows and storeContactImpulses read or write: the base's first
 // (type, bodies, attachment), the params, and the line from the normal to
-// the warm memory (contact_internal.h).
+// the warm memory (contact_internal.h); in double precision those fields
+// take two more lines.
 void prefetch(const MdtConstraint *c) {
   const auto *g = static_cast<const MdtContactGroup *>(c);
   const int n = std::min(g->count, kContactHints);
@@ -59,6 +60,10 @@ void prefetch(const MdtConstraint *c) {
     __builtin_prefetch(k);
     __builtin_prefetch(&k->params);
     __builtin_prefetch(&k->normal);
+    if constexpr (sizeof(MeReal) > 4) {
+      __builtin_prefetch(&k->next);
+      __builtin_prefetch(&k->warmFriction[2]);
+    }
   }
 }
 

@@ -5,13 +5,13 @@
 #include "MdtContact.h"
 #include "bcl_type.h"
 
-// The params start a cache line of their own (the slot starts on one:
+// The params start a cache line of their own (as the slot does:
 // kConstraintSlotAlignment), and the fields every step reads or writes
 // (the bridge, the rows, the impulses' memory) come next, in one line in
 // single precision; `direction`, read only when the user set one, comes
 // last.
 struct MdtContact : MdtConstraint {
-  alignas(64) MdtContactParams params;
+  alignas(karma::mdt::kConstraintSlotAlignment) MdtContactParams params;
   MeVector3 normal;  // world frame, unit, from body 1 into body 0
   // The primary friction direction of last step's rows (world frame, unit;
   // zero before the first rows): without a direction set by the user, the next
@@ -44,7 +44,7 @@ inline constexpr int kContactHints = 8;
 // that the list's head and the hints are one or two lines the bridge
 // prefetches together (MdtContactGroupPrefetch).
 struct MdtContactGroup : MdtConstraint {
-  alignas(64) MdtContact *first;
+  alignas(karma::mdt::kConstraintSlotAlignment) MdtContact *first;
   int count;
   MeReal normalForce;
   // The first min(count, kContactHints) contacts in list order, kept by

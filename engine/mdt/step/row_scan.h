@@ -38,10 +38,11 @@ inline constexpr MagnitudeBits kExponentBits =
     sizeof(MeReal) == 4 ? MagnitudeBits(0x7f800000) : MagnitudeBits(0x7ff0000000000000ll);
 inline constexpr MagnitudeBits kMagnitudeMask = std::numeric_limits<MagnitudeBits>::max();
 
-// Magnitude bits in lanes 16 bytes wide (every x86-64 processor has them).
+// Magnitude bits in lanes 16 bytes wide (GCC's vector extension).
 using MagnitudeLanes = MagnitudeBits __attribute__((vector_size(16)));
 inline constexpr int kPerLanes = 16 / (int)sizeof(MeReal);
 static_assert(sizeof(Row::J) % 16 == 0, "J fills whole lanes");
+static_assert(sizeof(MagnitudeLanes[sizeof(Row::J) / 16]) == sizeof(Row::J));
 inline constexpr int kJLanes = (int)(sizeof(Row::J) / 16);
 
 inline MagnitudeBits magnitudeBits(MeReal x) { return std::bit_cast<MagnitudeBits>(x) & kMagnitudeMask; }
@@ -55,11 +56,11 @@ inline RowScan scanRowValues(const Row *rows, int n) {
   RowScan scan;
   for (int r = 0; r < n; ++r) {
     const Row &row = rows[r];
+    MagnitudeLanes lanes[kJLanes];
+    std::memcpy(lanes, row.J, sizeof lanes);
     for (int k = 0; k < kJLanes; ++k) {
-      MagnitudeLanes lanes;
-      std::memcpy(&lanes, &row.J[0][0] + k * kPerLanes, sizeof lanes);
-      lanes &= kMagnitudeMask;
-      largestJ = lanes > largestJ ? lanes : largestJ;
+      const MagnitudeLanes magnitudes = lanes[k] & kMagnitudeMask;
+      largestJ = magnitudes > largestJ ? magnitudes : largestJ;
     }
     largestSpeed = std::max(largestSpeed, magnitudeBits(row.speed));
     largestSoftness = std::max(largestSoftness, magnitudeBits(row.softness));

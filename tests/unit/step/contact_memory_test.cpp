@@ -219,6 +219,8 @@ TEST(ContactMemory, ThePrefetchesAcceptNullAndOtherConstraints) {
 
 }  // namespace
 
+namespace {
+
 // Every constraint slot starts on a cache line (kConstraintSlotAlignment),
 // in the first pool and in the pools the world grows, and in single
 // precision the contact fields every step touches, from the normal to the
@@ -243,5 +245,9 @@ TEST(ContactMemory, ContactSlotsStartOnALineAndKeepTheirStepFieldsInOne) {
       EXPECT_EQ(at(&k->normal) / 64, at(&k->next) / 64);
     }
   }
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(&g->first) % 64, 0u);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(&g->first) / 64, reinterpret_cast<std::uintptr_t>(&g->hint[0]) / 64);
   MdtWorldDestroy(w);
 }
+
+}  // namespace

@@ -35,7 +35,7 @@ RowScan scalarScan(const std::vector<Row> &rows) {
 
 // Values of every kind a finite row may hold: zeros of both signs,
 // subnormals, the extremes, and ordinary values of both signs.
-MeReal finiteValue(std::mt19937 &rng) {
+MeReal finiteValue(std::mt19937 &rng, bool extremes) {
   const MeReal special[] = {0,
                             -(MeReal)0,
                             std::numeric_limits<MeReal>::denorm_min(),
@@ -47,20 +47,20 @@ MeReal finiteValue(std::mt19937 &rng) {
                             -1};
   std::uniform_int_distribution<int> pick(0, 19);
   const int k = pick(rng);
-  if (k < 9) return special[k];
+  if (k < 9 && (extremes || (k != 5 && k != 6))) return special[k];
   std::uniform_real_distribution<MeReal> mantissa(-1, 1);
   std::uniform_int_distribution<int> exponent(-40, 40);
   return std::ldexp(mantissa(rng), exponent(rng));
 }
 
-std::vector<Row> randomRows(std::mt19937 &rng, int n) {
+std::vector<Row> randomRows(std::mt19937 &rng, int n, bool extremes = true) {
   std::vector<Row> rows((size_t)n);
   std::bernoulli_distribution bounce(0.3);
   for (Row &row : rows) {
     for (int k = 0; k < 4; ++k)
-      for (int c = 0; c < 3; ++c) row.J[k][c] = finiteValue(rng);
-    row.speed = finiteValue(rng);
-    row.softness = finiteValue(rng);
+      for (int c = 0; c < 3; ++c) row.J[k][c] = finiteValue(rng, extremes);
+    row.speed = finiteValue(rng, extremes);
+    row.softness = finiteValue(rng, extremes);
     row.bounceAfter = bounce(rng) ? 1 : 0;
   }
   return rows;
@@ -72,10 +72,12 @@ void expectSameBits(MeReal a, MeReal b) {
       << a << " vs " << b;
 }
 
+// With the extremes (+-ME_REAL_MAX) among the values and, in every other
+// trial, without them, so that the order among ordinary values decides.
 TEST(RowScan, FiniteRowsGiveTheBitsOfTheScalarScan) {
   std::mt19937 rng(20261205);
-  for (int trial = 0; trial < 400; ++trial) {
-    const std::vector<Row> rows = randomRows(rng, trial % 13);
+  for (int trial = 0; trial < 800; ++trial) {
+    const std::vector<Row> rows = randomRows(rng, trial % 13, trial % 2 == 0);
     const RowScan fast = scanRowValues(rows.data(), (int)rows.size());
     const RowScan plain = scalarScan(rows);
     ASSERT_TRUE(plain.finite);
@@ -83,6 +85,28 @@ TEST(RowScan, FiniteRowsGiveTheBitsOfTheScalarScan) {
     expectSameBits(fast.largestJ, plain.largestJ);
     expectSameBits(fast.largestSoftness, plain.largestSoftness);
     EXPECT_EQ(fast.asking, plain.asking);
+  }
+}
+
+// Rows whose largest magnitude is a zero of either sign, a subnormal of
+// either sign, or a value beside its negation.
+TEST(RowScan, TheLargestIsFoundAmongZerosSubnormalsAndOpposites) {
+  const MeReal tiny = std::numeric_limits<MeReal>::denorm_min();
+  const MeReal cases[][2] = {{0, -(MeReal)0}, {-(MeReal)0, 0}, {-tiny, 0}, {0, -2 * tiny}, {(MeReal)1.5, -(MeReal)1.5},
+                             {-(MeReal)1.5, (MeReal)1.5}, {-(MeReal)3, (MeReal)2.5}};
+  for (const auto &c : cases) {
+    std::vector<Row> rows(2);
+    for (int r = 0; r < 2; ++r) {
+      for (int k = 0; k < 4; ++k)
+        for (int e = 0; e < 3; ++e) rows[(size_t)r].J[k][e] = 0;
+      rows[(size_t)r].J[r + 1][r] = c[r];
+      rows[(size_t)r].softness = c[1 - r];
+    }
+    const RowScan fast = scanRowValues(rows.data(), 2);
+    const RowScan plain = scalarScan(rows);
+    EXPECT_TRUE(fast.finite);
+    expectSameBits(fast.largestJ, plain.largestJ);
+    expectSameBits(fast.largestSoftness, plain.largestSoftness);
   }
 }
 
