@@ -42,7 +42,6 @@ inline constexpr MagnitudeBits kMagnitudeMask = std::numeric_limits<MagnitudeBit
 using MagnitudeLanes = MagnitudeBits __attribute__((vector_size(16)));
 inline constexpr int kPerLanes = 16 / (int)sizeof(MeReal);
 static_assert(sizeof(Row::J) % 16 == 0, "J fills whole lanes");
-static_assert(sizeof(MagnitudeLanes[sizeof(Row::J) / 16]) == sizeof(Row::J));
 inline constexpr int kJLanes = (int)(sizeof(Row::J) / 16);
 
 inline MagnitudeBits magnitudeBits(MeReal x) { return std::bit_cast<MagnitudeBits>(x) & kMagnitudeMask; }
@@ -56,11 +55,12 @@ inline RowScan scanRowValues(const Row *rows, int n) {
   RowScan scan;
   for (int r = 0; r < n; ++r) {
     const Row &row = rows[r];
-    MagnitudeLanes lanes[kJLanes];
-    std::memcpy(lanes, row.J, sizeof lanes);
+    const auto *bytes = reinterpret_cast<const unsigned char *>(row.J);  // J's object representation
     for (int k = 0; k < kJLanes; ++k) {
-      const MagnitudeLanes magnitudes = lanes[k] & kMagnitudeMask;
-      largestJ = magnitudes > largestJ ? magnitudes : largestJ;
+      MagnitudeLanes lanes;
+      std::memcpy(&lanes, bytes + k * sizeof lanes, sizeof lanes);
+      lanes &= kMagnitudeMask;
+      largestJ = lanes > largestJ ? lanes : largestJ;
     }
     largestSpeed = std::max(largestSpeed, magnitudeBits(row.speed));
     largestSoftness = std::max(largestSoftness, magnitudeBits(row.softness));
