@@ -4,6 +4,8 @@
 // its warm-start memory for the next step (row by row, up to kMaxWarmRows;
 // contacts keep theirs in their own frame through afterSolve). Rows that
 // capping dropped count as zero impulse.
+#include <cstring>
+
 #include "lanes16.h"
 #include "step.h"
 
@@ -11,14 +13,28 @@ namespace karma::mdt {
 
 namespace {
 
-// imp += lambda J (12 values each: lin0, ang0, lin1, ang1), element by
-// element in 16-byte lanes: each element rounds as MeVector3MultiplyAdd's
-// v + s a does.
-void addScaledJ(MeReal imp[12], MeReal lambda, const MeReal J[12]) {
-  using platform::LoadLanes16;
-  static_assert(12 % platform::kPerLanes16 == 0);
-  for (std::size_t l = 0; l < 12; l += platform::kPerLanes16)
-    platform::StoreLanes16(imp + l, LoadLanes16(imp + l) + lambda * LoadLanes16(J + l));
+using platform::Lanes16;
+constexpr std::size_t kPer = platform::kPerLanes16;
+static_assert(12 % kPer == 0);
+constexpr std::size_t kImpulseLanes = 12 / kPer;
+
+// A constraint's impulse sum(lambda_r J_r) over its rows r0..r1 (12 values:
+// lin0, ang0, lin1, ang1), element by element in 16-byte lanes held in
+// registers: each element starts at 0 and rounds as MeVector3MultiplyAdd's
+// v + s a does, row after row. Read back element by element, so that no
+// load spans the lanes' stores (a wider load than the stores that wrote
+// its bytes waits for them to reach the cache).
+void constraintImpulse(const Row *rows, const MeReal *lambda, int count, MeVector3 imp[4]) {
+  Lanes16 sum[kImpulseLanes] = {};
+  for (int r = 0; r < count; ++r) {
+    const auto *J = reinterpret_cast<const unsigned char *>(rows[r].J);  // J's object representation
+    for (std::size_t l = 0; l < kImpulseLanes; ++l) {
+      Lanes16 j;
+      std::memcpy(&j, J + l * sizeof j, sizeof j);
+      sum[l] = sum[l] + lambda[r] * j;
+    }
+  }
+  for (std::size_t i = 0; i < 12; ++i) imp[i / 3][i % 3] = sum[i / kPer][i % kPer];
 }
 
 }  // namespace
@@ -33,9 +49,9 @@ void applyImpulses(StepScratch &s, const Partition &part, const PartitionRows &r
   for (int i = 0; i < part.constraintCount; ++i) {
     MdtConstraint *c = s.partConstraints[(size_t)(part.constraintStart + i)];
     const int r0 = rows.constraintRowStart[(size_t)i], r1 = rows.constraintRowStart[(size_t)i + 1];
-    MeVector3 imp[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    MeVector3 imp[4];
     static_assert(sizeof imp == 12 * sizeof(MeReal) && sizeof(Row::J) == 12 * sizeof(MeReal));
-    for (int r = r0; r < r1; ++r) addScaledJ(&imp[0][0], all[(size_t)r], &rows.rows[(size_t)r].J[0][0]);
+    constraintImpulse(rows.rows.data() + r0, all.data() + r0, r1 - r0, imp);
     for (int k = 0; k < 2; ++k) {
       MeVector3MultiplyScalar(c->force[k], imp[2 * k], ctx.invH);
       MeVector3MultiplyScalar(c->torque[k], imp[2 * k + 1], ctx.invH);
