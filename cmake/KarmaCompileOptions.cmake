@@ -29,6 +29,17 @@ function(karma_library target export_name)
     # file, in case a shared library's user replaces it. Nobody does.
     target_compile_options(${target} PRIVATE
       $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-fno-semantic-interposition>)
+    # GCC on x86-64 expands a memset or memcpy of known size up to 512
+    # bytes as an unrolled loop of vector stores, and calls the library
+    # beyond: its default for mid sizes, `rep stos` / `rep movs`, pays a
+    # start-up of tens of cycles on the AMD EPYC the benchmarks run on
+    # (docs/NOTES.md, "String instructions in hot loops"). The same bytes
+    # are written either way.
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
+      target_compile_options(${target} PRIVATE
+        -mmemset-strategy=unrolled_loop:512:noalign,libcall:-1:noalign
+        -mmemcpy-strategy=unrolled_loop:512:noalign,libcall:-1:noalign)
+    endif()
     # With KARMA_LTO, ordinary code beside the intermediate form in the
     # archives (KarmaLinkTimeOptimisation.cmake).
     if(KARMA_LTO)
