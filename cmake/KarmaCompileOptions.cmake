@@ -12,6 +12,20 @@ target_compile_options(karma_build_flags INTERFACE
   $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-Wall -Wextra -ffp-contract=off -fno-fast-math>
   $<$<AND:$<COMPILE_LANGUAGE:CXX>,$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>>:-Wpedantic>)
 
+# The memset and memcpy strategy of karma_library's targets (below), where
+# the compiler takes it (GCC on x86).
+include(CheckCXXCompilerFlag)
+set(KARMA_STRING_STRATEGY_FLAGS "")
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+  check_cxx_compiler_flag(-mmemset-strategy=unrolled_loop:512:noalign,libcall:-1:noalign KARMA_HAS_MEMSET_STRATEGY)
+  check_cxx_compiler_flag(-mmemcpy-strategy=unrolled_loop:512:noalign,libcall:-1:noalign KARMA_HAS_MEMCPY_STRATEGY)
+  if(KARMA_HAS_MEMSET_STRATEGY AND KARMA_HAS_MEMCPY_STRATEGY)
+    set(KARMA_STRING_STRATEGY_FLAGS
+      -mmemset-strategy=unrolled_loop:512:noalign,libcall:-1:noalign
+      -mmemcpy-strategy=unrolled_loop:512:noalign,libcall:-1:noalign)
+  endif()
+endif()
+
 if(KARMA_WARNINGS_AS_ERRORS)
   target_compile_options(karma_build_flags INTERFACE
     $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-Werror>)
@@ -29,16 +43,16 @@ function(karma_library target export_name)
     # file, in case a shared library's user replaces it. Nobody does.
     target_compile_options(${target} PRIVATE
       $<$<OR:$<CXX_COMPILER_ID:GNU>,$<CXX_COMPILER_ID:Clang>>:-fno-semantic-interposition>)
-    # GCC on x86-64 expands a memset or memcpy of known size up to 512
-    # bytes as an unrolled loop of vector stores, and calls the library
-    # beyond: its default for mid sizes, `rep stos` / `rep movs`, pays a
-    # start-up of tens of cycles on the AMD EPYC the benchmarks run on
-    # (docs/NOTES.md, "String instructions in hot loops"). The same bytes
-    # are written either way.
-    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
-      target_compile_options(${target} PRIVATE
-        -mmemset-strategy=unrolled_loop:512:noalign,libcall:-1:noalign
-        -mmemcpy-strategy=unrolled_loop:512:noalign,libcall:-1:noalign)
+    # GCC on x86 expands a memset or memcpy of known size up to 512 bytes
+    # as an unrolled loop of 8-byte stores, and calls the library beyond:
+    # its default for mid sizes, `rep stos` / `rep movs`, pays a start-up of
+    # tens of cycles on the AMD EPYC the benchmarks run on (docs/NOTES.md,
+    # "String instructions in hot loops"). The same bytes are written either
+    # way. With KARMA_LTO, GCC's link merges target options, so the whole
+    # program linked (the benchmarks' harness too, or a consumer's program
+    # linked with link-time optimisation against these archives) gets it.
+    if(KARMA_STRING_STRATEGY_FLAGS)
+      target_compile_options(${target} PRIVATE ${KARMA_STRING_STRATEGY_FLAGS})
     endif()
     # With KARMA_LTO, ordinary code beside the intermediate form in the
     # archives (KarmaLinkTimeOptimisation.cmake).

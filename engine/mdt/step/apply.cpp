@@ -27,7 +27,7 @@ constexpr std::size_t kImpulseLanes = 12 / kPer;
 void constraintImpulse(const Row *rows, const MeReal *lambda, int count, MeVector3 imp[4]) {
   Lanes16 sum[kImpulseLanes] = {};
   for (int r = 0; r < count; ++r) {
-    const auto *J = reinterpret_cast<const unsigned char *>(rows[r].J);  // J's object representation
+    const auto *J = reinterpret_cast<const unsigned char *>(&rows[r].J);  // J's object representation
     for (std::size_t l = 0; l < kImpulseLanes; ++l) {
       Lanes16 j;
       std::memcpy(&j, J + l * sizeof j, sizeof j);

@@ -55,7 +55,7 @@ inline RowScan scanRowValues(const Row *rows, int n) {
   RowScan scan;
   for (int r = 0; r < n; ++r) {
     const Row &row = rows[r];
-    const auto *bytes = reinterpret_cast<const unsigned char *>(row.J);  // J's object representation
+    const auto *bytes = reinterpret_cast<const unsigned char *>(&row.J);  // J's object representation
     for (int k = 0; k < kJLanes; ++k) {
       MagnitudeLanes lanes;
       std::memcpy(&lanes, bytes + k * sizeof lanes, sizeof lanes);

@@ -244,6 +244,12 @@ TEST(ContactMemory, ContactSlotsStartOnALineAndKeepTheirStepFieldsInOne) {
       EXPECT_EQ(at(&k->normal) / 64, at(&k->frictionAxis[2]) / 64);
       EXPECT_EQ(at(&k->normal) / 64, at(&k->next) / 64);
     }
+    // Every line from the params to the end of the warm memory is one the
+    // group's prefetch names (contact_group.cpp; two more in double).
+    std::vector<std::uintptr_t> named = {at(&k->params) / 64, at(&k->normal) / 64};
+    if (sizeof(MeReal) > 4) named.insert(named.end(), {at(&k->next) / 64, at(&k->warmFriction[2]) / 64});
+    for (std::uintptr_t line = at(&k->params) / 64; line <= at(&k->warmFriction[2]) / 64; ++line)
+      EXPECT_NE(std::find(named.begin(), named.end(), line), named.end()) << "line " << line;
   }
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(&g->first) % 64, 0u);
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(&g->first) / 64, reinterpret_cast<std::uintptr_t>(&g->hint[0]) / 64);
