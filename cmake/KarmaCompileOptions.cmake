@@ -15,14 +15,14 @@ target_compile_options(karma_build_flags INTERFACE
 # The memset and memcpy strategy of karma_library's targets (below), where
 # the compiler takes it (GCC on x86).
 include(CheckCXXCompilerFlag)
+set(_karma_memset_strategy -mmemset-strategy=unrolled_loop:512:noalign,libcall:-1:noalign)
+set(_karma_memcpy_strategy -mmemcpy-strategy=unrolled_loop:512:noalign,libcall:-1:noalign)
 set(KARMA_STRING_STRATEGY_FLAGS "")
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-  check_cxx_compiler_flag(-mmemset-strategy=unrolled_loop:512:noalign,libcall:-1:noalign KARMA_HAS_MEMSET_STRATEGY)
-  check_cxx_compiler_flag(-mmemcpy-strategy=unrolled_loop:512:noalign,libcall:-1:noalign KARMA_HAS_MEMCPY_STRATEGY)
+  check_cxx_compiler_flag(${_karma_memset_strategy} KARMA_HAS_MEMSET_STRATEGY)
+  check_cxx_compiler_flag(${_karma_memcpy_strategy} KARMA_HAS_MEMCPY_STRATEGY)
   if(KARMA_HAS_MEMSET_STRATEGY AND KARMA_HAS_MEMCPY_STRATEGY)
-    set(KARMA_STRING_STRATEGY_FLAGS
-      -mmemset-strategy=unrolled_loop:512:noalign,libcall:-1:noalign
-      -mmemcpy-strategy=unrolled_loop:512:noalign,libcall:-1:noalign)
+    set(KARMA_STRING_STRATEGY_FLAGS ${_karma_memset_strategy} ${_karma_memcpy_strategy})
   endif()
 endif()
 

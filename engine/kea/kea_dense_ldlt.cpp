@@ -95,10 +95,9 @@ void MeetingRows(std::size_t m, std::vector<DenseLdlt::RowBits> &pattern, std::v
     DenseLdlt::RowBits &up = pattern[parent];
     for (std::size_t w = 0; w < bits.size(); ++w) up[w] |= bits[w];
     up[parent / 64] &= ~(std::uint64_t(1) << (parent % 64)); /* P_k - {p(k)}: all of it lies past p(k) */
-    const std::uint64_t bitK = std::uint64_t(1) << (k % 64);
     for (std::size_t w = 0; w < bits.size(); ++w)
       for (std::uint64_t x = bits[w]; x != 0; x &= x - 1)
-        meets[w * 64 + static_cast<std::size_t>(std::countr_zero(x))][k / 64] |= bitK;
+        DenseLdlt::SetRowBit(meets[w * 64 + static_cast<std::size_t>(std::countr_zero(x))], k);
   }
 }
 

@@ -108,6 +108,8 @@ struct DenseLdlt {
    * (P_k above). */
   using RowBits = std::array<std::uint64_t, 2>;
   static_assert(kMaxRows <= 128, "a column per bit");
+  /* Sets bit c (0 <= c < 128) of `bits`. */
+  static void SetRowBit(RowBits &bits, std::size_t c) { bits[c / 64] |= std::uint64_t(1) << (c % 64); }
   std::vector<RowBits> pattern;
   /* Per row j, the rows k < j that may meet it (bit k: j in P_k). */
   std::vector<RowBits> meets;
@@ -135,8 +137,7 @@ struct DenseLdlt {
    * Pattern::Noted)). */
   void notePattern(int i, int j) {
     assert(0 <= i && i < j && j < m);
-    const auto c = static_cast<unsigned>(j);
-    pattern[static_cast<std::size_t>(i)][c / 64] |= std::uint64_t(1) << (c % 64);
+    SetRowBit(pattern[static_cast<std::size_t>(i)], static_cast<std::size_t>(j));
   }
   /* Entry (i, j) of the upper triangle, j >= i. */
   MeReal &at(int i, int j) {

@@ -881,7 +881,7 @@ void SparseBackend::mapDense() {
   densePattern_.assign(denseRows_.size(), DenseLdlt::RowBits{});
   forEachFreeEntry(denseRows_, [&](std::size_t a, std::size_t c, int k) {
     if (c >= a) denseFill_.emplace_back(k, static_cast<int>(a * stride + c));
-    if (c > a) densePattern_[a][c / 64] |= std::uint64_t(1) << (c % 64);
+    if (c > a) DenseLdlt::SetRowBit(densePattern_[a], c);
   });
   denseMapRows_ = denseRows_;
 }
