@@ -139,13 +139,10 @@ MEPUBLIC void MEAPI MeMatrix4TMGetRotation(MeMatrix3 R, MECONSTMATRIX MeMatrix4 
 MEPUBLIC void MEAPI MeMatrix4TMCompose(MeMatrix4 out, MECONSTMATRIX MeMatrix4 a, MECONSTMATRIX MeMatrix4 b);
 /* out = tm^-1 for a rigid tm: R' = R^T, t' = -t R^T */
 MEPUBLIC void MEAPI MeMatrix4TMInverse(MeMatrix4 out, MECONSTMATRIX MeMatrix4 tm);
-/* TMTransform (out = p R + t, a body point into the world) and TMRotate
- * (out = v R, a body direction into the world) are defined inline in
- * MeMathInline.h. */
-/* out = (p - t) R^T: a world point into body coordinates */
-MEPUBLIC void MEAPI MeMatrix4TMInverseTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p);
-/* out = v R^T: a world direction into body coordinates */
-MEPUBLIC void MEAPI MeMatrix4TMInverseRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 v);
+/* TMTransform (out = p R + t, a body point into the world), TMRotate
+ * (out = v R, a body direction into the world) and their inverses
+ * TMInverseTransform (out = (p - t) R^T) and TMInverseRotate (out = v R^T)
+ * are defined inline in MeMathInline.h. */
 /* TRUE when rows 0..2 form a proper rotation within tol and column 3 is
  * (0, 0, 0, 1) within tol */
 MEPUBLIC MeBool MEAPI MeMatrix4IsTM(MECONSTMATRIX MeMatrix4 tm, MeReal tol);

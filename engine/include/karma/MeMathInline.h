@@ -135,6 +135,17 @@ ME_MATH_INLINE void MEAPI MeMatrix4TMTransform(MeVector3 out, MECONSTMATRIX MeMa
                x * tm[0][2] + y * tm[1][2] + z * tm[2][2] + tm[3][2]);
 }
 
+/* out = v R^T: a world direction into body coordinates */
+ME_MATH_INLINE void MEAPI MeMatrix4TMInverseRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 v) {
+  MeVector3Set(out, MeVector3Dot(tm[0], v), MeVector3Dot(tm[1], v), MeVector3Dot(tm[2], v));
+}
+
+/* out = (p - t) R^T: a world point into body coordinates */
+ME_MATH_INLINE void MEAPI MeMatrix4TMInverseTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p) {
+  const MeVector3 d = {p[0] - tm[3][0], p[1] - tm[3][1], p[2] - tm[3][2]};
+  MeVector3Set(out, MeVector3Dot(tm[0], d), MeVector3Dot(tm[1], d), MeVector3Dot(tm[2], d));
+}
+
 ME_EXTERN_C_END
 
 #endif /* KARMA_MEMATHINLINE_H */

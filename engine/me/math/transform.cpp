@@ -93,19 +93,6 @@ void MEAPI MeMatrix4TMInverse(MeMatrix4 out, MECONSTMATRIX MeMatrix4 tm) {
   storeTM(out, rt, t);
 }
 
-void MEAPI MeMatrix4TMInverseTransform(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 p) {
-  const MeReal d[3] = {p[0] - tm[3][0], p[1] - tm[3][1], p[2] - tm[3][2]};
-  MeReal b[3];
-  rowTimesTranspose(b, d, rotationOf(tm));
-  MeVector3Copy(out, b);
-}
-
-void MEAPI MeMatrix4TMInverseRotate(MeVector3 out, MECONSTMATRIX MeMatrix4 tm, const MeVector3 v) {
-  MeReal b[3];
-  rowTimesTranspose(b, v, rotationOf(tm));
-  MeVector3Copy(out, b);
-}
-
 MeBool MEAPI MeMatrix4IsTM(MECONSTMATRIX MeMatrix4 tm, MeReal tol) {
   MeMatrix3 R;
   MeMatrix4TMGetRotation(R, tm);
