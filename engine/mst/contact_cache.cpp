@@ -102,14 +102,18 @@ MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeRe
     MdtContactGroupDestroyContact(g, old[j]);
     ++counts.removed;
   }
+  bool poolFull = false;
   for (int i = 0; i < n; ++i) {
     MdtContactID c = nullptr;
     if (match[i] != kNone) {
       c = old[match[i]];
       ++counts.kept;
     } else {
-      c = MdtContactGroupCreateContact(g);
-      if (!c) break;  // the constraint pool is full (it warned)
+      c = poolFull ? nullptr : MdtContactGroupCreateContact(g);
+      if (!c) {  // the pool is full (it warned once): this new contact and the later new ones are dropped
+        poolFull = true;
+        continue;
+      }
       ++counts.created;
     }
     Assign(c, cc[i], sign, params);

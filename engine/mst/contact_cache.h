@@ -62,8 +62,8 @@ struct MatchCounts {
 // with the parameters `params`. `matchDistance` is kMatchDistance already
 // scaled to the world. Calls `perContact` for every contact made or kept
 // (it may reject one: the contact is destroyed). Never allocates beyond the
-// world's constraint pool; a full pool drops the remaining new contacts
-// (the pool warned).
+// world's constraint pool; a full pool drops the new contacts it has no
+// room for (the pool warned), while every kept contact is still updated.
 MatchCounts MatchContacts(MdtContactGroupID g, const McdContact *cc, int n, MeReal sign, const MdtContactParams &params,
                           MeReal matchDistance, MstPerContactCBPtr perContact, McdIntersectResult *result);
 

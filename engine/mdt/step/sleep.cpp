@@ -5,8 +5,9 @@
 // speed, acceleration and angular acceleration are all below the world's
 // thresholds. When a partition goes to sleep depends on the alive-window
 // mode:
-//   IdleSeconds   every body idle for the last aliveWindow seconds
-//                 (idleTime >= aliveWindow; enabling restarts idleTime);
+//   IdleSeconds   every body idle now and for the last aliveWindow seconds
+//                 (idleTime >= aliveWindow; enabling restarts idleTime; a
+//                 window of 0 needs the body idle now all the same);
 //   AwakeSeconds  every body idle now and enabled for >= aliveWindow s;
 //   AwakeSteps    every body idle now and enabled for >= aliveWindow steps.
 //
@@ -54,7 +55,7 @@ bool windowAllowsSleep(MdtBody *b, const MdtWorldParams &w, MdtAliveWindowMode m
       return still && (MeReal)b->awakeSteps >= w.aliveWindow;
     case MdtAliveWindowIdleSeconds:
     default:
-      return b->idleTime >= w.aliveWindow;
+      return still && b->idleTime >= w.aliveWindow;
   }
 }
 

@@ -113,6 +113,21 @@ TEST(AutoDisable, DefaultWindowIsSecondsBelowEveryThreshold) {
   EXPECT_LE(m, 21);
 }
 
+TEST(AutoDisable, AZeroIdleWindowStillWaitsForRest) {
+  // A window of 0 s puts a body to sleep at its first step at rest, and
+  // never while it moves.
+  OneBody s;
+  MdtWorldSetAutoDisableAliveWindow(s.w, 0);
+  MdtBodySetLinearVelocity(s.b, 5, 0, 0);
+  for (int i = 0; i < 10; ++i) {
+    MdtWorldStep(s.w, kH);
+    ASSERT_TRUE(MdtBodyIsEnabled(s.b)) << "step " << i;
+  }
+  EXPECT_NEAR(s.speed(), 5, 1e-5);
+  MdtBodySetLinearVelocity(s.b, 0, 0, 0);
+  EXPECT_EQ(s.stepsUntilDisabled(), 1);
+}
+
 TEST(AutoDisable, AwakeSecondsWindowCountsFromWaking) {
   OneBody s;
   MdtWorldSetAutoDisableAliveWindowMode(s.w, MdtAliveWindowAwakeSeconds);

@@ -69,6 +69,49 @@ TEST(MstUniverse, ModelAndBodyShareTransformAndVelocity) {
   EXPECT_EQ(McdSpaceGetModelCount(s.u->space), 0);
 }
 
+TEST(MstUniverse, AModelGivenAnotherBodyGetsContactsBetweenItsNewBodies) {
+  // A box rests (and falls asleep) on a fixed box; then the fixed model is
+  // given a heavy enabled body of its own. The model must collide from then
+  // on, and the pair's contacts act between the box and that body with
+  // normals that push them apart: the two fall together, the box on top,
+  // one box height apart. (The model used to stay frozen, so the base fell
+  // away from the sleeping box; and with both awake the old group acted on
+  // the box alone with its normals reversed, and the box fell through.)
+  Scene s(false);
+  MeMatrix4TMMakeIdentity(s.groundTM);
+  s.groundTM[3][2] = (MeReal)-0.5;
+  McdModelID ground = MstFixedModelCreate(s.u, McdBoxCreate(s.u->frame, 10, 10, 1), s.groundTM);
+  McdModelID box = MstModelAndBodyCreate(s.u, McdBoxCreate(s.u->frame, 1, 1, 1), 100);
+  MdtBodySetPosition(McdModelGetBody(box), 0, 0, (MeReal)0.5);
+  s.step(60);
+  ASSERT_NEAR(Scene::z(box), 0.5, 0.02);
+
+  MdtBodyID base = MdtBodyCreate(s.u->world);
+  MstAutoSetMassProperties(base, McdModelGetGeometry(ground), (MeReal)1e4);  // 1e6 kg
+  MdtBodySetPosition(base, 0, 0, (MeReal)-0.5);
+  MdtBodyEnable(base);
+  McdModelSetBody(ground, base);
+  s.step();
+  MdtBodyID top = McdModelGetBody(box);
+  int contacts = 0;
+  for (MdtContactID c = MdtBodyGetFirstContact(top); c; c = MdtBodyGetNextContact(top, c), ++contacts) {
+    MdtBodyID b0 = MdtContactGetBody(c, 0), b1 = MdtContactGetBody(c, 1);
+    ASSERT_TRUE((b0 == top && b1 == base) || (b0 == base && b1 == top));
+    MeVector3 n, p0, p1;
+    MdtContactGetNormal(c, n);
+    MdtBodyGetPosition(b0, p0);
+    MdtBodyGetPosition(b1, p1);
+    EXPECT_GT(n[0] * (p0[0] - p1[0]) + n[1] * (p0[1] - p1[1]) + n[2] * (p0[2] - p1[2]), 0);  // toward body 0
+  }
+  EXPECT_GT(contacts, 0);
+  for (int i = 0; i < 30; ++i) {
+    s.step();
+    MeVector3 under;
+    MdtBodyGetPosition(base, under);
+    ASSERT_NEAR(Scene::z(box) - under[2], 1.0, 0.02) << "step " << i;
+  }
+}
+
 TEST(MstUniverse, FixedModelKeepsItsTransformAndIsFrozen) {
   Scene s;
   EXPECT_EQ(McdModelGetTransformPtr(s.ground), (MeMatrix4Ptr)s.groundTM);
