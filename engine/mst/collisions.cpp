@@ -101,9 +101,19 @@ void Collide(McdModelPair *pair, MdtWorldID world, MstBridge *b) {
   McdModelID m1 = pair->model1, m2 = pair->model2;
   if (McdSpaceModelIsFrozen(m1) && McdSpaceModelIsFrozen(m2)) return;
   MdtBodyID b1 = McdModelGetBody(m1), b2 = McdModelGetBody(m2);
-  if (!b1 && !b2) return;
   const bool flip = b1 == nullptr;
   auto group = static_cast<MdtContactGroupID>(pair->responseData);
+  // A group acts between the bodies the models had when it was made, with
+  // the normal's sign that goes with them; a model given another body since
+  // (McdModelSetBody, between steps or in a callback), or none, needs a new
+  // one or none.
+  if (group && (MdtContactGroupGetBody(group, 0) != (flip ? b2 : b1) ||
+                MdtContactGroupGetBody(group, 1) != (flip ? nullptr : b2))) {
+    MdtContactGroupDestroy(group);
+    pair->responseData = nullptr;
+    group = nullptr;
+  }
+  if (!b1 && !b2) return;
 
   McdIntersectResult r{};
   r.contacts = b->contacts;

@@ -53,7 +53,6 @@ void MEAPI McdModelSetBody(McdModelID model, MdtBodyID body) {
   ME_REQUIRE_ARG(model != nullptr, "McdModelSetBody", "model is NULL");
   MdtBodyID old = McdModelGetBody(model);
   if (old && MdtBodyGetCollisionModel(old) == model) MdtBodySetCollisionModel(old, nullptr);
-  if (body != old) karma::mst::DropModelContactGroups(model);
   McdModelStoreBody(model, body);
   if (!body) {  // a fixed model keeps its transform pointer
     McdModelSetLinearVelocityPtr(model, nullptr);

@@ -39,11 +39,6 @@ MaterialEntry *Entry(MstBridge *b, MstMaterialID m1, MstMaterialID m2, const cha
 // its pairs and saying McdGoodbye to them, so the goodbyes that follow no
 // longer need the model or its body. Warns (naming fn) outside a block.
 bool RemoveModelAndItsContacts(McdModelID model, const char *fn);
-// Destroys the contact groups of a model's pairs, which stay in the space:
-// a group acts between the bodies its pair's models had when it was made,
-// with the normal's sign that goes with them (collisions.cpp), so a model
-// given another body needs new groups. The next collision step makes them.
-void DropModelContactGroups(McdModelID model);
 // Before a universe step of size h: each model in the universe's space
 // inherits its body's sort key and gets its bounds padding for the step
 // (the rules are in step_bounds.cpp).

@@ -112,6 +112,20 @@ TEST(MstUniverse, AModelGivenAnotherBodyGetsContactsBetweenItsNewBodies) {
   }
 }
 
+TEST(MstUniverse, AModelLeftWithoutABodyTakesItsContactsOffTheOldOne) {
+  // A ball resting on the ground plane loses its body: the pair now joins
+  // two bodiless models, and the old body must not keep the contacts.
+  Scene s;
+  McdModelID m = s.ball((MeReal)0.5, 0, 0, (MeReal)0.5);
+  MdtBodyID b = McdModelGetBody(m);
+  MdtWorldSetAutoDisable(s.u->world, FALSE);
+  s.step(10);
+  ASSERT_NE(MdtBodyGetFirstContact(b), nullptr);
+  McdModelSetBody(m, nullptr);
+  s.step();
+  EXPECT_EQ(MdtBodyGetFirstContact(b), nullptr);
+}
+
 TEST(MstUniverse, FixedModelKeepsItsTransformAndIsFrozen) {
   Scene s;
   EXPECT_EQ(McdModelGetTransformPtr(s.ground), (MeMatrix4Ptr)s.groundTM);
