@@ -127,7 +127,10 @@ namespace {
 // McdIntersect after its argument checks; `reuse` false tests every call.
 int Intersect(McdModelPair *pair, McdIntersectResult *result, bool reuse) {
   const McdInteractions *e = pair->m_interaction;
-  if (!e) return 0;  // no interaction for these types: ignored
+  // No interaction for these types, or the table entry the pair said hello
+  // to has been cleared since (McdFrameworkSetInteraction(..., NULL)): the
+  // pair is ignored, as a pair of types without one is.
+  if (!e || !e->intersectFn) return 0;
   const int resultCap = result->contactMaxCount;
   const int cap = karma::mcd::EffectiveContactCap(pair, resultCap);
   McdFramework *fw = pair->model1->framework;

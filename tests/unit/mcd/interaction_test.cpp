@@ -162,6 +162,19 @@ TEST(McdInteraction, UnregisteredPairsAreIgnored) {
   EXPECT_EQ(now.touch, 1);
 }
 
+TEST(McdInteraction, AnInteractionClearedWhileAPairIsLiveIgnoresThePair) {
+  Framework fw;
+  Body ground(McdPlaneCreate(fw), 0, 0, 0);
+  Body ball(McdSphereCreate(fw, 1), 0, 0, (MeReal)0.9);  // 0.1 into the plane
+  Query t(ball.model, ground.model);  // said hello to the sphere-plane entry
+  ASSERT_EQ(t.touch, 1);
+  McdFrameworkSetInteraction(fw, kMcdGeometryTypeSphere, kMcdGeometryTypePlane, nullptr);
+  McdFrameworkSetInteraction(fw, kMcdGeometryTypePlane, kMcdGeometryTypeSphere, nullptr);
+  t.r.contactCount = 0;
+  EXPECT_EQ(McdIntersect(t.pair, &t.r), 0);
+  EXPECT_EQ(t.r.contactCount, 0);
+}
+
 int gHello = 0, gGoodbye = 0;
 McdModelID gFirstSeen = nullptr;
 void MEAPI UserHello(McdModelPair *p) {
