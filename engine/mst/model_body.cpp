@@ -53,6 +53,7 @@ void MEAPI McdModelSetBody(McdModelID model, MdtBodyID body) {
   ME_REQUIRE_ARG(model != nullptr, "McdModelSetBody", "model is NULL");
   MdtBodyID old = McdModelGetBody(model);
   if (old && MdtBodyGetCollisionModel(old) == model) MdtBodySetCollisionModel(old, nullptr);
+  if (body != old) karma::mst::DropModelContactGroups(model);
   McdModelStoreBody(model, body);
   if (!body) {  // a fixed model keeps its transform pointer
     McdModelSetLinearVelocityPtr(model, nullptr);
@@ -65,7 +66,7 @@ void MEAPI McdModelSetBody(McdModelID model, MdtBodyID body) {
   MdtBodySetCollisionModel(body, model);
   // A frozen model (a fixed one) given an enabled body collides from now
   // on, as when the body of a model is enabled.
-  if (MdtBodyIsEnabled(body) && McdSpaceModelIsFrozen(model)) BodyEnableHandler(body, TRUE, nullptr);
+  if (body != old && MdtBodyIsEnabled(body) && McdSpaceModelIsFrozen(model)) BodyEnableHandler(body, TRUE, nullptr);
 }
 
 void MEAPI McdModelDynamicsReset(McdModelID model) {

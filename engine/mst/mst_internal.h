@@ -39,6 +39,11 @@ MaterialEntry *Entry(MstBridge *b, MstMaterialID m1, MstMaterialID m2, const cha
 // its pairs and saying McdGoodbye to them, so the goodbyes that follow no
 // longer need the model or its body. Warns (naming fn) outside a block.
 bool RemoveModelAndItsContacts(McdModelID model, const char *fn);
+// Destroys the contact groups of a model's pairs (the pairs stay), when its
+// space is in a change block (between steps: no collision step holds a
+// group then). A pair of frozen models is not collided, so the collision
+// step's own check of a group's bodies (collisions.cpp) would not reach it.
+void DropModelContactGroups(McdModelID model);
 // Before a universe step of size h: each model in the universe's space
 // inherits its body's sort key and gets its bounds padding for the step
 // (the rules are in step_bounds.cpp).

@@ -26,6 +26,16 @@ bool RemoveModelAndItsContacts(McdModelID model, const char *fn) {
   return McdSpaceRemoveModel(model) != 0;
 }
 
+void DropModelContactGroups(McdModelID model) {
+  auto *space = static_cast<McdSpace *>(McdModelGetSpace(model));
+  if (!space || !McdSpaceIsChanging(space)) return;
+  for (McdModelPair &pair : space->pairs) {
+    if ((pair.model1 != model && pair.model2 != model) || !pair.responseData) continue;
+    MdtContactGroupDestroy(static_cast<MdtContactGroupID>(pair.responseData));
+    pair.responseData = nullptr;
+  }
+}
+
 }  // namespace karma::mst
 
 using namespace karma::mst;

@@ -15,11 +15,15 @@
  * Transitions: a hello pair gets McdHello; a goodbye pair loses its contact
  * group (pair->responseData, destroyed) and gets McdGoodbye.
  * Collisions: for each hello or staying pair with at least one model not
- * frozen and at least one body, McdIntersect; the pair's MdtContactGroup is
- * created on first touch and kept until the goodbye; its contacts are
- * re-created every step from the collision contacts with the contact
- * parameters of the two models' materials. A pair of two frozen models is
- * left as it is (its group keeps its contacts while the bodies sleep). When
+ * frozen and two different bodies (or one), McdIntersect; the pair's
+ * MdtContactGroup is the bridge's: created on first touch and kept until the
+ * goodbye, or until a model of the pair is given another body or none
+ * (McdModelSetBody), when it is destroyed and, on touch, made again between
+ * the new bodies (a group ID kept from a callback then dangles; a program
+ * does not set a bridge group's bodies itself). Its contacts are re-created
+ * every step from the collision contacts with the contact parameters of the
+ * two models' materials. A pair of two frozen models is otherwise left as it
+ * is (its group keeps its contacts while the bodies sleep). When
  * one model has no body, the dynamic body is the group's body 0 (the
  * guide's body1) and the normals are turned to point towards it.
  *

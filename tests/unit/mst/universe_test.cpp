@@ -113,17 +113,40 @@ TEST(MstUniverse, AModelGivenAnotherBodyGetsContactsBetweenItsNewBodies) {
 }
 
 TEST(MstUniverse, AModelLeftWithoutABodyTakesItsContactsOffTheOldOne) {
-  // A ball resting on the ground plane loses its body: the pair now joins
-  // two bodiless models, and the old body must not keep the contacts.
+  // A ball falls asleep on the ground plane (both models frozen), then its
+  // model gives up the body: the pair now joins two bodiless models, and
+  // the old body must not keep the plane's contacts. Woken, it falls.
   Scene s;
   McdModelID m = s.ball((MeReal)0.5, 0, 0, (MeReal)0.5);
   MdtBodyID b = McdModelGetBody(m);
-  MdtWorldSetAutoDisable(s.u->world, FALSE);
-  s.step(10);
+  s.step(100);
+  ASSERT_FALSE(MdtBodyIsEnabled(b));
   ASSERT_NE(MdtBodyGetFirstContact(b), nullptr);
   McdModelSetBody(m, nullptr);
   s.step();
   EXPECT_EQ(MdtBodyGetFirstContact(b), nullptr);
+  MdtBodyEnable(b);
+  s.step(50);
+  MeVector3 p;
+  MdtBodyGetPosition(b, p);
+  EXPECT_LT(p[2], 0);  // about -0.7 after 0.5 s of free fall
+}
+
+TEST(MstUniverse, TwoModelsOfOneBodyMakeNoContactGroup) {
+  // Two overlapping models of one body: nothing to push apart, so no group
+  // is made and nothing is warned (a group between a body and itself is
+  // refused with a warning).
+  Scene s(false);
+  MdtWorldSetGravity(s.u->world, 0, 0, 0);
+  McdModelID a = s.ball((MeReal)0.5, 0, 0, 0);
+  McdModelID c = s.ball((MeReal)0.5, (MeReal)0.5, 0, 0);
+  MdtBodyID other = McdModelGetBody(c);
+  McdModelSetBody(c, McdModelGetBody(a));
+  MdtBodyDestroy(other);
+  WarningCapture warnings;
+  s.step(5);
+  EXPECT_EQ(warnings.count(), 0u);
+  EXPECT_EQ(MdtBodyGetFirstContact(McdModelGetBody(a)), nullptr);
 }
 
 TEST(MstUniverse, FixedModelKeepsItsTransformAndIsFrozen) {
