@@ -99,6 +99,7 @@ int IntersectWithMargin(McdModelPair *pair, McdIntersectResult *r, MeReal extra)
 
 void Collide(McdModelPair *pair, MdtWorldID world, MstBridge *b) {
   McdModelID m1 = pair->model1, m2 = pair->model2;
+  if (McdSpaceModelIsFrozen(m1) && McdSpaceModelIsFrozen(m2)) return;
   MdtBodyID b1 = McdModelGetBody(m1), b2 = McdModelGetBody(m2);
   const bool flip = b1 == nullptr;
   auto group = static_cast<MdtContactGroupID>(pair->responseData);
@@ -109,11 +110,9 @@ void Collide(McdModelPair *pair, MdtWorldID world, MstBridge *b) {
   // a new one or none.
   if (group && (MdtContactGroupGetBody(group, 0) != (flip ? b2 : b1) ||
                 MdtContactGroupGetBody(group, 1) != (flip ? nullptr : b2))) {
-    MdtContactGroupDestroy(group);
-    pair->responseData = nullptr;
+    DropContactGroup(pair);
     group = nullptr;
   }
-  if (McdSpaceModelIsFrozen(m1) && McdSpaceModelIsFrozen(m2)) return;
   if (b1 == b2) return;  // no body, or one body's two models: nothing to push apart
 
   McdIntersectResult r{};

@@ -39,6 +39,8 @@ MaterialEntry *Entry(MstBridge *b, MstMaterialID m1, MstMaterialID m2, const cha
 // its pairs and saying McdGoodbye to them, so the goodbyes that follow no
 // longer need the model or its body. Warns (naming fn) outside a block.
 bool RemoveModelAndItsContacts(McdModelID model, const char *fn);
+// Destroys the pair's contact group (pair->responseData), if it has one.
+void DropContactGroup(McdModelPair *pair);
 // Destroys the contact groups of a model's pairs (the pairs stay), when its
 // space is in a change block (between steps: no collision step holds a
 // group then). A pair of frozen models is not collided, so the collision

@@ -12,10 +12,7 @@ void MEAPI MstHandleTransitions(McdModelPairContainer *pairs) {
   ME_REQUIRE_ARG(pairs != nullptr, "MstHandleTransitions", "container is NULL");
   for (int i = pairs->goodbyeFirst; i < pairs->goodbyeEnd; ++i) {
     McdModelPair *p = pairs->array[i];
-    if (p->responseData) {
-      MdtContactGroupDestroy(static_cast<MdtContactGroupID>(p->responseData));
-      p->responseData = nullptr;
-    }
+    karma::mst::DropContactGroup(p);
     McdGoodbye(p);
   }
   for (int i = pairs->helloFirst; i < pairs->helloEnd; ++i) McdHello(pairs->array[i]);

@@ -5,6 +5,12 @@
 
 namespace karma::mst {
 
+void DropContactGroup(McdModelPair *pair) {
+  if (!pair->responseData) return;
+  MdtContactGroupDestroy(static_cast<MdtContactGroupID>(pair->responseData));
+  pair->responseData = nullptr;
+}
+
 bool RemoveModelAndItsContacts(McdModelID model, const char *fn) {
   auto *space = static_cast<McdSpace *>(McdModelGetSpace(model));
   if (!space) return true;
@@ -17,10 +23,7 @@ bool RemoveModelAndItsContacts(McdModelID model, const char *fn) {
   for (McdModelPair &pair : space->pairs) {
     McdModelPair *p = &pair;
     if (p->model1 != model && p->model2 != model) continue;
-    if (p->responseData) {
-      MdtContactGroupDestroy(static_cast<MdtContactGroupID>(p->responseData));
-      p->responseData = nullptr;
-    }
+    DropContactGroup(p);
     McdGoodbye(p);
   }
   return McdSpaceRemoveModel(model) != 0;
@@ -29,11 +32,8 @@ bool RemoveModelAndItsContacts(McdModelID model, const char *fn) {
 void DropModelContactGroups(McdModelID model) {
   auto *space = static_cast<McdSpace *>(McdModelGetSpace(model));
   if (!space || !McdSpaceIsChanging(space)) return;
-  for (McdModelPair &pair : space->pairs) {
-    if ((pair.model1 != model && pair.model2 != model) || !pair.responseData) continue;
-    MdtContactGroupDestroy(static_cast<MdtContactGroupID>(pair.responseData));
-    pair.responseData = nullptr;
-  }
+  for (McdModelPair &pair : space->pairs)
+    if (pair.model1 == model || pair.model2 == model) DropContactGroup(&pair);
 }
 
 }  // namespace karma::mst
