@@ -12,9 +12,18 @@
 //  - Child instances come from framework->instances and go back there when
 //    the model is destroyed; the pointer array `children` comes from
 //    MeMemoryAPI.
-//  - Interaction table: entry (a, b) lives at table[a * typeMax + b]; an
-//    entry is live when intersectFn != NULL; explicit[a * typeMax + b] is 1
-//    when registered for that order itself (a mirror never overwrites it).
+//  - Interaction table: entry (a, b) is table[a * typeMax + b], a slot or
+//    NULL; a slot's fns always has an intersectFn; explicit[a * typeMax + b]
+//    is 1 when registered for that order itself (a mirror never overwrites
+//    it).
+//  - Interaction slots (interaction_table.cpp): a slot's fns never change
+//    once the table holds it, except for m_builtIn in the registration that
+//    made it. A pair between McdHello and McdGoodbye points at the fns of
+//    the slot it was greeted with (McdModelPair::m_interaction) and counts
+//    in its `pairs`; a registration that replaces or clears the entry
+//    retires the slot, which lives on (on the framework's retired list)
+//    until its last pair's goodbye, so that pair's queries and goodbye run
+//    the functions its hello ran, on the data its hello made.
 #pragma once
 
 #include "Mcd.h"
@@ -24,6 +33,17 @@
 struct McdFramework;
 
 namespace karma::mcd {
+
+// One registration's functions, shared by the pairs greeted with them (see
+// the invariants above). fns is the first member: a pair's m_interaction
+// points at it and InteractionSlotOf goes back.
+struct InteractionSlot {
+  McdInteractions fns;
+  int pairs;                    // pairs greeted with it and not yet said goodbye
+  bool retired;                 // no longer in the table
+  InteractionSlot *nextRetired; // the framework's retired list
+  McdFramework *framework;      // the table's owner
+};
 
 // What the framework knows about a geometry type. Mass properties are for
 // density 1 (mass == volume); each type file defines one record.
@@ -97,6 +117,14 @@ int EffectiveContactCap(const McdModelPair *pair, int resultCap);
 // written. For queries at poses of their own (McdSafeTime).
 int IntersectWithoutReuse(McdModelPair *pair, McdIntersectResult *result);
 
+// The interaction slots' lifetime (interaction_table.cpp). A pair greeted
+// with the slot of `fns` (McdHello) holds it; its goodbye lets it go, and a
+// retired slot goes with its last pair. FreeInteractionSlots frees every
+// slot, in the table and retired (McdTerm).
+void HoldInteraction(const McdInteractions *fns);
+void ReleaseInteraction(const McdInteractions *fns);
+void FreeInteractionSlots(McdFramework *fw);
+
 }  // namespace karma::mcd
 
 // Aggregate layout (shared by aggregate.cpp, instance.cpp and mass code).
@@ -146,7 +174,8 @@ struct McdFramework {
   unsigned shapeRevision;       // counts size changes of any geometry (contact_reuse.h)
   int typeMax;                             // built-in + user slots
   const karma::mcd::GeometryType **types;  // typeMax, NULL = unregistered
-  McdInteractions *table;                  // typeMax * typeMax
+  karma::mcd::InteractionSlot **table;     // typeMax * typeMax, NULL = no interaction
+  karma::mcd::InteractionSlot *retired;    // slots replaced while pairs used them
   unsigned char *explicitEntry;            // typeMax * typeMax
   MePool models;
   MePool instances;

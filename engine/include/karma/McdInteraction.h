@@ -65,10 +65,15 @@ typedef struct McdInteractions {
 /* Registers `fns` (copied) for (type1, type2) and, unless registered on its
  * own, the mirrored (type2, type1). Both types must be registered and
  * fns->intersectFn set, else a warning and nothing happens. Registering
- * again replaces. fns NULL removes the entry (and its automatic mirror). */
+ * again replaces. fns NULL removes the entry (and its automatic mirror).
+ * A pair already greeted (McdHello) keeps the interaction it was greeted
+ * with until its McdGoodbye: its tests and its goodbye run the functions
+ * its hello ran, on the data that hello made. The change reaches the pairs
+ * greeted after it. */
 MEPUBLIC void MEAPI McdFrameworkSetInteraction(McdFrameworkID framework, int type1, int type2,
                                                const McdInteractions *fns);
-/* The entry for (type1, type2), or NULL when none is registered. */
+/* The entry for (type1, type2), or NULL when none is registered. The
+ * pointer is valid until the entry is registered again or removed. */
 MEPUBLIC const McdInteractions *MEAPI McdFrameworkGetInteraction(McdFrameworkID framework, int type1, int type2);
 
 /* Built-in interactions, one family per call. Each registers (A, B) for the

@@ -35,7 +35,7 @@ typedef struct McdModelPair {
   void *userData;
   void *responseData;
   /* private: the framework's */
-  const struct McdInteractions *m_interaction; /* cached by McdHello */
+  const struct McdInteractions *m_interaction; /* cached by McdHello, kept to McdGoodbye */
   void *m_cachedData;                          /* the interaction's own */
   int m_helloed;                               /* 1 between hello and goodbye */
   /* private: the space's */

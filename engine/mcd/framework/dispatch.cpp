@@ -96,6 +96,7 @@ void MEAPI McdHello(McdModelPair *pair) {
   const McdInteractions *e = McdFrameworkGetInteraction(fw, McdGeometryGetTypeId(pair->model1->instance.geometry),
                                                         McdGeometryGetTypeId(pair->model2->instance.geometry));
   pair->m_interaction = e;
+  karma::mcd::HoldInteraction(e);
   if (e && e->helloFn) InOrder(pair, e->swap != 0, [&] { e->helloFn(pair); });
 }
 
@@ -104,6 +105,7 @@ void MEAPI McdGoodbye(McdModelPair *pair) {
   if (!pair->m_helloed) return;
   const McdInteractions *e = pair->m_interaction;
   if (e && e->goodbyeFn) InOrder(pair, e->swap != 0, [&] { e->goodbyeFn(pair); });
+  karma::mcd::ReleaseInteraction(e);
   pair->m_interaction = nullptr;
   pair->m_cachedData = nullptr;
   karma::mcd::Forget(pair);
@@ -126,11 +128,10 @@ namespace {
 
 // McdIntersect after its argument checks; `reuse` false tests every call.
 int Intersect(McdModelPair *pair, McdIntersectResult *result, bool reuse) {
+  // The interaction the pair was greeted with, even if the table has been
+  // given another or none since; a pair greeted with none is ignored.
   const McdInteractions *e = pair->m_interaction;
-  // No interaction for these types, or the table entry the pair said hello
-  // to has been cleared since (McdFrameworkSetInteraction(..., NULL)): the
-  // pair is ignored, as a pair of types without one is.
-  if (!e || !e->intersectFn) return 0;
+  if (!e) return 0;
   const int resultCap = result->contactMaxCount;
   const int cap = karma::mcd::EffectiveContactCap(pair, resultCap);
   McdFramework *fw = pair->model1->framework;

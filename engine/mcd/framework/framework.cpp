@@ -53,7 +53,7 @@ McdFrameworkID MEAPI McdInit(int geoTypeMaxCount, int modelCount, int instanceCo
   fw->typeMax = kMcdGeometryBuiltInTypes + geoTypeMaxCount;
   const std::size_t cells = (std::size_t)fw->typeMax * (std::size_t)fw->typeMax;
   fw->types = static_cast<const GeometryType **>(Zeroed(sizeof(GeometryType *) * fw->typeMax));
-  fw->table = static_cast<McdInteractions *>(Zeroed(sizeof(McdInteractions) * cells));
+  fw->table = static_cast<InteractionSlot **>(Zeroed(sizeof(InteractionSlot *) * cells));
   fw->explicitEntry = static_cast<unsigned char *>(Zeroed(cells));
   const bool pools = MePoolInit(&fw->models, modelCount, (int)sizeof(McdModel), 0) &&
                      MePoolInit(&fw->instances, instanceCount, (int)sizeof(McdGeometryInstance), 0);
@@ -83,6 +83,7 @@ void MEAPI McdTerm(McdFrameworkID fw) {
   if (fw->types) McdFrameworkDestroyAllModelsAndGeometries(fw);
   MePoolDestroy(&fw->models);
   MePoolDestroy(&fw->instances);
+  FreeInteractionSlots(fw);
   MeMemoryAPI.destroy(fw->explicitEntry);
   MeMemoryAPI.destroy(fw->table);
   MeMemoryAPI.destroy(fw->types);

@@ -3,13 +3,57 @@
 // Entry (a, b) answers a pair whose model1 has type a and model2 type b.
 // Registering (a, b) explicitly also fills (b, a) as a mirror (swap = 1)
 // unless (b, a) was registered explicitly itself; the dispatcher
-// (dispatch.cpp) turns a mirrored call round.
+// (dispatch.cpp) turns a mirrored call round. Each registration makes new
+// slots (mcd_internal.h): a pair keeps the functions it was greeted with
+// until its goodbye, whatever the table holds by then.
 #include "mcd_internal.h"
 #include "nearfield/nearfield.h"
 
 namespace {
 
+using karma::mcd::InteractionSlot;
+
 bool ValidType(const McdFramework *fw, int t) { return t >= 0 && t < fw->typeMax && fw->types[t] != nullptr; }
+
+InteractionSlot *SlotOf(const McdInteractions *fns) {
+  return reinterpret_cast<InteractionSlot *>(const_cast<McdInteractions *>(fns));
+}
+
+void FreeSlot(InteractionSlot *slot) { MeMemoryAPI.destroy(slot); }
+
+// A slot holding `fns` with the table's own fields set; NULL (warned) when
+// memory runs out.
+InteractionSlot *NewSlot(McdFramework *fw, const McdInteractions &fns, int swap, const char *fn) {
+  auto *slot = static_cast<InteractionSlot *>(MeMemoryAPI.createZeroed(sizeof(InteractionSlot)));
+  if (!slot) {
+    MeWarning(0, "%s: out of memory; the interaction table is unchanged", fn);
+    return nullptr;
+  }
+  slot->fns = fns;
+  slot->fns.swap = swap;
+  slot->fns.m_builtIn = 0;
+  slot->framework = fw;
+  return slot;
+}
+
+// The slot leaves the table: freed now if no pair holds it, else kept on
+// the retired list until its last pair's goodbye.
+void Retire(McdFramework *fw, InteractionSlot *slot) {
+  if (!slot) return;
+  if (slot->pairs == 0) {
+    FreeSlot(slot);
+    return;
+  }
+  slot->retired = true;
+  slot->nextRetired = fw->retired;
+  fw->retired = slot;
+}
+
+void Put(McdFramework *fw, int cell, InteractionSlot *slot) {
+  InteractionSlot *old = fw->table[cell];
+  fw->table[cell] = slot;
+  Retire(fw, old);
+}
 
 }  // namespace
 
@@ -18,11 +62,39 @@ namespace karma::mcd {
 void RegisterInteractionQuietly(McdFramework *fw, int a, int b, const McdInteractions &fns) {
   if (!fw || !ValidType(fw, a) || !ValidType(fw, b)) return;
   McdFrameworkSetInteraction(fw, a, b, &fns);
-  // The entries this call wrote are the engine's own.
+  // The slots this call made are the engine's own.
   const int n = fw->typeMax;
-  McdInteractions &ab = fw->table[a * n + b], &ba = fw->table[b * n + a];
-  ab.m_builtIn = 1;
-  if (a != b && !fw->explicitEntry[b * n + a]) ba.m_builtIn = 1;
+  if (InteractionSlot *ab = fw->table[a * n + b]) ab->fns.m_builtIn = 1;
+  if (a != b && !fw->explicitEntry[b * n + a])
+    if (InteractionSlot *ba = fw->table[b * n + a]) ba->fns.m_builtIn = 1;
+}
+
+void HoldInteraction(const McdInteractions *fns) {
+  if (fns) ++SlotOf(fns)->pairs;
+}
+
+void ReleaseInteraction(const McdInteractions *fns) {
+  if (!fns) return;
+  InteractionSlot *slot = SlotOf(fns);
+  if (--slot->pairs > 0 || !slot->retired) return;
+  for (InteractionSlot **link = &slot->framework->retired; *link; link = &(*link)->nextRetired)
+    if (*link == slot) {
+      *link = slot->nextRetired;
+      break;
+    }
+  FreeSlot(slot);
+}
+
+void FreeInteractionSlots(McdFramework *fw) {
+  if (fw->table)
+    for (int cell = 0; cell < fw->typeMax * fw->typeMax; ++cell) {
+      FreeSlot(fw->table[cell]);
+      fw->table[cell] = nullptr;
+    }
+  while (InteractionSlot *slot = fw->retired) {
+    fw->retired = slot->nextRetired;
+    FreeSlot(slot);
+  }
 }
 
 }  // namespace karma::mcd
@@ -36,29 +108,29 @@ void MEAPI McdFrameworkSetInteraction(McdFrameworkID fw, int a, int b, const Mcd
                  b);
   ME_REQUIRE_ARG(fns == nullptr || fns->intersectFn != nullptr, fn, "the interaction has no intersectFn");
   const int n = fw->typeMax;
-  McdInteractions &ab = fw->table[a * n + b];
-  McdInteractions &ba = fw->table[b * n + a];
+  const bool mirror = a != b && !fw->explicitEntry[b * n + a];
   if (!fns) {
-    ab = McdInteractions{};
+    Put(fw, a * n + b, nullptr);
     fw->explicitEntry[a * n + b] = 0;
-    if (a != b && !fw->explicitEntry[b * n + a]) ba = McdInteractions{};
+    if (mirror) Put(fw, b * n + a, nullptr);
     return;
   }
-  ab = *fns;
-  ab.swap = 0;
-  ab.m_builtIn = 0;
-  fw->explicitEntry[a * n + b] = 1;
-  if (a != b && !fw->explicitEntry[b * n + a]) {
-    ba = *fns;
-    ba.swap = 1;
-    ba.m_builtIn = 0;
+  InteractionSlot *ab = NewSlot(fw, *fns, 0, fn);
+  InteractionSlot *ba = mirror ? NewSlot(fw, *fns, 1, fn) : nullptr;
+  if (!ab || (mirror && !ba)) {
+    FreeSlot(ab);
+    FreeSlot(ba);
+    return;
   }
+  Put(fw, a * n + b, ab);
+  fw->explicitEntry[a * n + b] = 1;
+  if (mirror) Put(fw, b * n + a, ba);
 }
 
 const McdInteractions *MEAPI McdFrameworkGetInteraction(McdFrameworkID fw, int a, int b) {
   if (!fw || a < 0 || b < 0 || a >= fw->typeMax || b >= fw->typeMax) return nullptr;
-  const McdInteractions &e = fw->table[a * fw->typeMax + b];
-  return e.intersectFn ? &e : nullptr;
+  const InteractionSlot *slot = fw->table[a * fw->typeMax + b];
+  return slot ? &slot->fns : nullptr;
 }
 
 }  // extern "C"

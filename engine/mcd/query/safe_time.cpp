@@ -117,7 +117,7 @@ MeBool MEAPI McdSafeTime(McdModelPair *pair, MeReal maxTime, McdSafeTimeResult *
   }
   McdModel *models[2] = {pair->model1, pair->model2};
   const McdGeometry *g0 = models[0]->instance.geometry, *g1 = models[1]->instance.geometry;
-  if (!g0 || !g1 || !pair->m_interaction || !pair->m_interaction->intersectFn ||
+  if (!g0 || !g1 || !pair->m_interaction ||
       !SupportedPair(g0->m_type, g1->m_type) || !models[0]->instance.tm ||
       !models[1]->instance.tm)
     return 0;

@@ -162,17 +162,22 @@ TEST(McdInteraction, UnregisteredPairsAreIgnored) {
   EXPECT_EQ(now.touch, 1);
 }
 
-TEST(McdInteraction, AnInteractionClearedWhileAPairIsLiveIgnoresThePair) {
+TEST(McdInteraction, APairKeepsTheInteractionItWasGreetedWithWhenTheEntryIsCleared) {
   Framework fw;
   Body ground(McdPlaneCreate(fw), 0, 0, 0);
   Body ball(McdSphereCreate(fw, 1), 0, 0, (MeReal)0.9);  // 0.1 into the plane
-  Query t(ball.model, ground.model);  // said hello to the sphere-plane entry
+  Query t(ball.model, ground.model);  // greeted with the sphere-plane test
   ASSERT_EQ(t.touch, 1);
   McdFrameworkSetInteraction(fw, kMcdGeometryTypeSphere, kMcdGeometryTypePlane, nullptr);
   McdFrameworkSetInteraction(fw, kMcdGeometryTypePlane, kMcdGeometryTypeSphere, nullptr);
-  t.r.contactCount = 3;  // McdIntersect clears the result
-  EXPECT_EQ(McdIntersect(t.pair, &t.r), 0);
-  EXPECT_EQ(t.r.contactCount, 0);
+  ASSERT_EQ(McdFrameworkGetInteraction(fw, kMcdGeometryTypeSphere, kMcdGeometryTypePlane), nullptr);
+  t.r.contactCount = 0;
+  EXPECT_EQ(McdIntersect(t.pair, &t.r), 1);  // still the test it was greeted with
+  ASSERT_EQ(t.r.contactCount, 1);
+  EXPECT_NEAR(t.contacts[0].separation, -0.1, tol(1));
+  Query later(ball.model, ground.model);  // greeted after the change: no test
+  EXPECT_EQ(later.touch, 0);
+  EXPECT_EQ(later.r.contactCount, 0);
 }
 
 int gHello = 0, gGoodbye = 0;
@@ -233,6 +238,60 @@ TEST(McdInteraction, UserInteractionIsMirroredAutomatically) {
   McdFrameworkSetInteraction(fw, kMcdGeometryTypeBox, kMcdGeometryTypeCylinder, nullptr);
   McdFrameworkSetInteraction(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypeBox, nullptr);
   EXPECT_EQ(McdFrameworkGetInteraction(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypeBox), nullptr);
+}
+
+// A second user interaction for the cylinder-box entry, with its own data.
+int gHelloB = 0, gGoodbyeB = 0;
+void MEAPI UserHelloB(McdModelPair *p) {
+  ++gHelloB;
+  p->m_cachedData = &gHelloB;
+}
+void MEAPI UserGoodbyeB(McdModelPair *p) {
+  ++gGoodbyeB;
+  EXPECT_EQ(p->m_cachedData, &gHelloB);
+}
+int MEAPI UserIntersectB(McdModelPair *p, McdIntersectResult *r) {
+  EXPECT_EQ(p->m_cachedData, &gHelloB);
+  r->contactCount = 0;
+  r->touch = 0;
+  return 0;
+}
+
+TEST(McdInteraction, AnInteractionReplacedWhileAPairIsLiveServesThatPairToItsGoodbye) {
+  Framework fw(32, 64, 1, false);
+  McdPrimitivesRegisterTypes(fw);
+  McdInteractions a{}, b{};
+  a.helloFn = UserHello;
+  a.intersectFn = UserIntersect;
+  a.goodbyeFn = UserGoodbye;  // checks that the data is its own hello's
+  b.helloFn = UserHelloB;
+  b.intersectFn = UserIntersectB;
+  b.goodbyeFn = UserGoodbyeB;
+  McdFrameworkSetInteraction(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypeBox, &a);
+  Body can(McdCylinderCreate(fw, 1, 1), 0, 0, 0), box(McdBoxCreate(fw, 1, 1, 1), 0, 0, 0);
+  gHello = gGoodbye = gHelloB = gGoodbyeB = 0;
+  {
+    Query first(can.model, box.model);  // greeted with a
+    ASSERT_EQ(first.touch, 1);
+    McdFrameworkSetInteraction(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypeBox, &b);
+    McdFrameworkSetInteraction(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypeBox, &b);  // replaced twice
+    {
+      Query second(can.model, box.model);  // greeted with b
+      EXPECT_EQ(second.touch, 0);
+      EXPECT_EQ(gHelloB, 1);
+    }
+    EXPECT_EQ(gGoodbyeB, 1);
+    EXPECT_EQ(McdIntersect(first.pair, &first.r), 1);  // a's test, on a's data
+    EXPECT_EQ(gGoodbye, 0);
+  }
+  // The first pair's goodbye was a's, on a's data; b never saw that pair.
+  EXPECT_EQ(gHello, 1);
+  EXPECT_EQ(gGoodbye, 1);
+  EXPECT_EQ(gGoodbyeB, 1);
+  // A pair greeted with an entry outlives its removal too.
+  Query last(can.model, box.model);  // greeted with b
+  McdFrameworkSetInteraction(fw, kMcdGeometryTypeCylinder, kMcdGeometryTypeBox, nullptr);
+  EXPECT_EQ(McdIntersect(last.pair, &last.r), 0);  // b's test ran (it checks its data)
 }
 
 TEST(McdInteraction, GuideDirectTestWithCallocPair) {
