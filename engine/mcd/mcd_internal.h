@@ -181,4 +181,5 @@ struct McdFramework {
   MePool instances;
   McdGeometry *geometries;  // list head
   int geometryCount;
+  int spaceCount;  // spaces made on the framework and not yet destroyed
 };

@@ -62,11 +62,14 @@ typedef enum McdGeometryType {
 MEPUBLIC McdFrameworkID MEAPI McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, MeReal lengthScale);
 
 /* Destroys the framework and everything it still owns (models, geometries,
- * tables). Handles into it become invalid. NULL is ignored. */
+ * tables). Handles into it become invalid. NULL is ignored. While a space
+ * made on it still exists (McdSpaceDestroy first), it warns and frees
+ * nothing. */
 MEPUBLIC void MEAPI McdTerm(McdFrameworkID framework);
 
 /* Destroys every model, then every geometry of the framework, regardless of
- * reference counts. The framework and its registrations stay. */
+ * reference counts. The framework and its registrations stay. While any
+ * model is in a space it warns and destroys nothing. */
 MEPUBLIC void MEAPI McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID framework);
 
 /* The framework's length scale, model capacity and models alive. */

@@ -49,7 +49,8 @@ typedef void(MEAPI *McdModelUpdateCallback)(McdModelID model);
  * no body, material 0. */
 MEPUBLIC McdModelID MEAPI McdModelCreate(McdGeometryID geometry);
 /* Releases the model, its child instances and its geometry reference.
- * (Remove it from its space first.) NULL is ignored. */
+ * A model still in a space is not destroyed (a warning): remove it from
+ * the space first. NULL is ignored. */
 MEPUBLIC void MEAPI McdModelDestroy(McdModelID model);
 
 MEPUBLIC McdGeometryID MEAPI McdModelGetGeometry(McdModelID model);

@@ -34,10 +34,11 @@
  * frozen models are not reported" (they then say goodbye).
  *
  * Capacity: objectCount models; pairCount reported pairs to begin with.
- * More overlapping pairs than that: the space grows its pair storage (by as
- * much again, at least 16; pairs keep their addresses), reports every pair,
- * and McdSpaceEndChanges warns once per space (an extension: Karma 1.2 made
- * the extra pairs wait). */
+ * Pair storage is taken as pairs appear (a large pairCount costs nothing
+ * until its pairs exist); pairs keep their addresses. More overlapping
+ * pairs than pairCount: the space grows its limit (by as much again, at
+ * least 16), reports every pair, and McdSpaceEndChanges warns once per
+ * space (an extension: Karma 1.2 made the extra pairs wait). */
 #ifndef KARMA_MCDSPACE_H
 #define KARMA_MCDSPACE_H
 #include "MeCall.h"
@@ -85,7 +86,9 @@ MEPUBLIC int MEAPI McdSpaceIsChanging(McdSpaceID space);
 
 /* Inserting does not update: the space uses the model's AABB of its last
  * McdModelUpdate (a model never updated is updated here if it has a
- * transform). A model can be in one space only. 1 on success. */
+ * transform). Without an AABB function (McdSpaceSetAABBFn), a model that
+ * has no AABB yet (no transform, or only non-finite ones) is refused with
+ * a warning. A model can be in one space only. 1 on success. */
 MEPUBLIC MeBool MEAPI McdSpaceInsertModel(McdSpaceID space, McdModelID model);
 MEPUBLIC MeBool MEAPI McdSpaceInsertModelWithCulling(McdSpaceID space, McdModelID model, McdCullingTable *table,
                                                      int cullingIndex, int cullingID);

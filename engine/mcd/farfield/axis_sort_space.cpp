@@ -5,6 +5,7 @@
 #include "MeMemory.h"
 #include "MeMessage.h"
 
+#include <algorithm>
 #include <new>
 
 namespace karma::mcd {
@@ -25,11 +26,13 @@ AxisSortSpace *AxisSortSpace::Create(int axes, int objectCount, int pairCount) {
   void *mem = MeMemoryAPI.create(sizeof(AxisSortSpace));
   if (!mem) return nullptr;
   auto *space = new (mem) AxisSortSpace();
-  if (!space->Init(axes, objectCount, pairCount)) {
-    Destroy(space);
-    return nullptr;
+  try {
+    if (space->Init(axes, objectCount, pairCount)) return space;
+  } catch (const std::bad_alloc &) {
+    MeWarning(0, "McdSpaceAxisSortCreate: out of memory for objectCount %d; no space created", objectCount);
   }
-  return space;
+  Destroy(space);
+  return nullptr;
 }
 
 void AxisSortSpace::Destroy(AxisSortSpace *space) {
@@ -67,13 +70,15 @@ bool AxisSortSpace::Init(int axes, int objectCount, int pairCount) {
   activeNewPos_.assign(static_cast<std::size_t>(slots), -1);
   unfrozenPos_.assign(static_cast<std::size_t>(slots), -1);
   movedFlag_.assign(static_cast<std::size_t>(slots), 0);
-  overlaps_.Reserve(pairCount);
+  // Pair storage is sized for the first pairs only and grows with them.
+  const int firstPairs = std::min(pairCount, PairPool::kFirstRecords);
+  overlaps_.Reserve(firstPairs);
   overlaps_.ReserveSlots(slots);
   pairs_.Create(pairCount);
-  goodbyes_.reserve(static_cast<std::size_t>(pairCount));
-  hellos_.reserve(static_cast<std::size_t>(pairCount));
-  stayings_.reserve(static_cast<std::size_t>(pairCount));
-  previous_.reserve(static_cast<std::size_t>(pairCount));
+  goodbyes_.reserve(static_cast<std::size_t>(firstPairs));
+  hellos_.reserve(static_cast<std::size_t>(firstPairs));
+  stayings_.reserve(static_cast<std::size_t>(firstPairs));
+  previous_.reserve(static_cast<std::size_t>(firstPairs));
   changing_ = true;  // McdSpaceAxisSortCreate begins a change block
   return true;
 }

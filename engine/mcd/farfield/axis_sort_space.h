@@ -64,11 +64,13 @@
 //
 // ## Capacity
 // At most objectCount proxies at a time (a removed proxy's slot is reused
-// after the next BeginChanges). At most pairCount reported pairs: when more
-// pairs need a record, the extra hellos (the last in order) are not reported
-// and McdSpaceEndChanges warns once per block; they are retried every block
-// and say hello once records free up. Non-reported overlaps (frozen-frozen,
-// disabled, culled) are tracked in a hash that grows as needed. Insertion
+// after the next BeginChanges). pairCount is a hint, not a cap: pair
+// records are made as pairs need them (PairPool in pair_table.h), and when
+// more than pairCount pairs are reported at once the pool grows and
+// McdSpaceEndChanges warns once per space. Overlaps, reported or not
+// (frozen-frozen, disabled, culled), are tracked in a hash that grows as
+// needed. Memory running out inside EndChanges is not recovered from (the
+// std::bad_alloc propagates and leaves the space unusable). Insertion
 // serials are 32-bit: the order is defined for a space's first 2^32 - 1
 // insertions.
 //
@@ -90,10 +92,10 @@
 //    and pair filters added, changed or erased since the last EndChanges,
 //    and touchedProxies_ the proxies frozen, thawed, removed or given new
 //    culling parameters (all their entries, found through the table's
-//    per-slot lists). Unless fullWalk_ is set (a key change, a change of
-//    SetKeepFrozenPairs, or hellos dropped for want of records), no other
-//    entry can have changed whether it is reportable, and ComputeEvents
-//    settles only these.
+//    per-slot lists). Unless fullWalk_ is set (the first EndChanges), a
+//    key changed, SetKeepFrozenPairs changed or a culling table's flags
+//    changed (CullingTablesRevision), no other entry can have changed
+//    whether it is reportable, and ComputeEvents settles only these.
 //  - The stayings are last block's stayings and hellos less the goodbyes:
 //    unchanged when nothing said hello or goodbye, else the goodbyes found
 //    by their Order() and last block's hellos merged in, without reading
@@ -132,8 +134,8 @@
 //   McdSpacePairIteratorBegin         -> PairIteratorBegin(&iter)
 //   McdSpaceGetPairs(s, iter, c)      -> GetPairs(&iter, &chunk); chunk mirrors the
 //                                        McdModelPairContainer fields; the wrapper keeps
-//                                        one McdModelPair per PairRecord::index (pairCount
-//                                        of them), sets model1/model2 from userA/userB at
+//                                        one McdModelPair per PairRecord::index
+//                                        (PairCapacity() of them), sets model1/model2 from userA/userB at
 //                                        hello, and writes pairs[record->index] where the
 //                                        chunk has the record
 //   McdSpaceGetTransitions            -> GetTransitions(&iter, &chunk)
@@ -190,15 +192,16 @@ struct SpaceStats {
   int reported = 0;      // hellos + stayings of the current events
   int recordsInUse = 0;  // including goodbyes not yet retired
   long long swaps = 0;   // endpoint swaps that changed an overlap, last sync
-  int pairRecords = 0;   // pair records now (pairCount, or more once grown)
+  int pairRecords = 0;   // pair records made so far (PairCapacity)
 };
 
 class AxisSortSpace {
  public:
   // axes: a non-empty combination of kAxisX/Y/Z (anything else warns and
   // uses what is valid, or all axes). objectCount >= 1, pairCount >= 1.
-  // Returns NULL with a warning on bad counts. The space starts inside a
-  // change block.
+  // Returns NULL with a warning on bad counts or when memory runs out. The
+  // memory taken grows with objectCount, not with pairCount (pair storage
+  // grows with the pairs). The space starts inside a change block.
   static AxisSortSpace *Create(int axes, int objectCount, int pairCount);
   // Destroys the space; its records and events go with it.
   static void Destroy(AxisSortSpace *space);
@@ -246,6 +249,8 @@ class AxisSortSpace {
   void *UserData() const { return userData_; }
   int Axes() const { return axes_; }
   int ObjectCapacity() const { return objectCount_; }
+  // The pair records made so far: every PairRecord::index is below it. It
+  // starts at min(pairCount, PairPool::kFirstRecords) and grows at EndChanges.
   int PairCapacity() const { return pairs_.Capacity(); }
   SpaceStats Stats() const;
   // Checks every internal invariant (sorted axes, endpoint positions, the
@@ -394,6 +399,7 @@ class AxisSortSpace {
   std::vector<int> touchedProxies_;  // proxies whose every entry may have changed
   bool fullWalk_ = true;
   bool lastKeepFrozenPairs_ = false;
+  std::uint64_t lastCullingRevision_ = 0;     // CullingTablesRevision() at the last ComputeEvents
   std::vector<PairRecord *> activeStayings_;  // in Order()
   std::vector<int> frozenChanged_;            // proxies frozen or thawed since activeStayings_ was brought up to date
   std::uint64_t stayingsVersion_ = 1, activeStayingsVersion_ = 0;

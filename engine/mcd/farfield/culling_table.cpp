@@ -1,13 +1,21 @@
 // culling_table.cpp: the symmetric flag tables of culling_table.h.
-// Invariant: flags[a*size + b] == flags[b*size + a] for every a, b.
+// Invariants: flags[a*size + b] == flags[b*size + a] for every a, b;
+// gRevision advances whenever any table's flags change.
 #include "culling_table.h"
 
 #include "MeMemory.h"
 #include "MeMessage.h"
 
+#include <atomic>
 #include <new>
 
 namespace karma::mcd {
+
+namespace {
+std::atomic<std::uint64_t> gRevision{0};
+}  // namespace
+
+std::uint64_t CullingTablesRevision() { return gRevision.load(); }
 
 CullingTable *CullingTableCreate(int size) {
   // size*size flags must fit a size_t and stay reasonable; 65535 is ~4 GiB.
@@ -46,8 +54,10 @@ CullingTable *CullingTableSet(CullingTable *table, std::uint32_t a, std::uint32_
     return table;
   }
   const std::uint8_t v = flag ? 1 : 0;
+  if (table->flags[static_cast<std::size_t>(a) * n + b] == v) return table;
   table->flags[static_cast<std::size_t>(a) * n + b] = v;
   table->flags[static_cast<std::size_t>(b) * n + a] = v;
+  ++gRevision;
   return table;
 }
 

@@ -6,9 +6,12 @@
 // pairwise-disabled pair) when both carry culling parameters, both name the
 // same table and the same culling ID, and the table's flag at their two
 // culling indices is set. The space reads the flags each time it computes
-// pair events, so a table must stay unchanged while proxies refer to it
-// (the guide calls changing it then undefined; here it takes effect at the
-// next McdSpaceEndChanges, which is a defined result).
+// pair events. The guide calls changing a table while proxies refer to it
+// undefined; here a change takes effect at the next McdSpaceEndChanges of
+// every space (a pair that overlaps all along says goodbye when its flag is
+// set and hello when it is cleared): CullingTableSet advances a revision
+// shared by all tables, and a space that sees a new revision at EndChanges
+// settles all its pairs instead of only the touched ones.
 //
 // Public C mapping: McdCullingTableCreate(size) -> CullingTableCreate,
 // McdCullingTableSet(t, a, b, flag) -> CullingTableSet (returns t),
@@ -43,6 +46,10 @@ CullingTable *CullingTableSet(CullingTable *table, std::uint32_t a, std::uint32_
 
 // The flag at [a][b]; false for a NULL table or an index out of range.
 bool CullingTableGet(const CullingTable *table, std::uint32_t a, std::uint32_t b);
+
+// A count advanced by every CullingTableSet that changes a flag of any table
+// (thread-safe). Equal values read at two times mean no flag changed between.
+std::uint64_t CullingTablesRevision();
 
 }  // namespace karma::mcd
 

@@ -49,8 +49,8 @@ void AxisSortSpace::StartPair(PairRecord *r, int s0, int s1) {
 
 // After a key change: every reported pair of two present proxies takes its
 // proxies' current keys; one whose proxies now rank the other way round is
-// detached from its entry (it says goodbye, and hello again as a new record
-// if it is still reportable).
+// marked Goodbye and left on its entry, for SettleEntry to detach (it says
+// goodbye, and hello again as a new record if it is still reportable).
 void AxisSortSpace::RerankReported() {
   auto present = [](const Proxy &p) { return p.state == ProxyState::Live || p.state == ProxyState::Pending; };
   for (const auto *list : {&stayings_, &hellos_}) {
@@ -59,7 +59,6 @@ void AxisSortSpace::RerankReported() {
       const Proxy &b = proxies_[static_cast<std::size_t>(r->proxyB)];
       if (!present(a) || !present(b) || a.serial != r->serialA || b.serial != r->serialB) continue;
       if (Packed(a.key, a.serial) > Packed(b.key, b.serial)) {
-        if (OverlapEntry *e = overlaps_.Find(SlotPairKey(r->proxyA, r->proxyB))) e->record = -1;
         r->state = PairState::Goodbye;
         continue;
       }
@@ -70,12 +69,16 @@ void AxisSortSpace::RerankReported() {
 }
 
 // Settles one overlap entry: detaches its record if the pair is no longer
-// reportable (true then), collects it as a candidate if it is reportable
-// without a record, and marks it for erasure if it neither overlaps nor
-// owns a record.
+// reportable (true then) or its proxies swapped ranks (RerankReported marked
+// the record Goodbye: the only attached record in that state), collects it
+// as a candidate if it is reportable without a record, and marks it for
+// erasure if it neither overlaps nor owns a record. Reportable is read
+// while the record is attached, so a kept frozen pair that swapped ranks
+// stays reported (with a new record).
 bool AxisSortSpace::SettleEntry(OverlapEntry &e) {
   const bool reportable = Reportable(e);
   bool goodbye = false;
+  if (e.record >= 0 && pairs_.At(e.record).state == PairState::Goodbye) e.record = -1;
   if (e.record >= 0 && !reportable) {
     PairRecord &r = pairs_.At(e.record);
     departed_.push_back({&r, r.state == PairState::Hello});
@@ -186,7 +189,9 @@ void AxisSortSpace::ComputeEvents() {
   // Settle the overlap entries: every one, or (see "Cost" in the header)
   // only the touched ones and those of the touched proxies, the others
   // being unable to have changed.
-  const bool full = fullWalk_ || keysChanged || keepFrozenPairs_ != lastKeepFrozenPairs_;
+  const std::uint64_t cullingRevision = CullingTablesRevision();
+  const bool full =
+      fullWalk_ || keysChanged || keepFrozenPairs_ != lastKeepFrozenPairs_ || cullingRevision != lastCullingRevision_;
   bool anyGoodbye = false;
   if (full) {
     for (int i = 0; i < overlaps_.Size(); ++i) anyGoodbye = SettleEntry(overlaps_.At(i)) || anyGoodbye;
@@ -201,6 +206,7 @@ void AxisSortSpace::ComputeEvents() {
   touchedProxies_.clear();
   fullWalk_ = false;
   lastKeepFrozenPairs_ = keepFrozenPairs_;
+  lastCullingRevision_ = cullingRevision;
   for (std::uint64_t key : eraseKeys_) overlaps_.Erase(key);
 
   // Last block's pairs, in order, split into goodbyes and stayings.
@@ -226,10 +232,10 @@ void AxisSortSpace::ComputeEvents() {
   departed_.clear();
   keysChanged_ = false;
 
-  // New pairs in order; the records grow when they run out (pair_table.h),
-  // reported once per space.
+  // New pairs in order; the pool makes records as needed and raises its
+  // limit when pairCount is exceeded (pair_table.h), reported once per space.
   std::sort(candidates_.begin(), candidates_.end());
-  const int capacity = pairs_.Capacity();
+  const int limit = pairs_.Limit();
   bool grew = false;
   for (const Candidate &c : candidates_) {
     PairRecord *r = pairs_.Acquire(&grew);
@@ -242,7 +248,7 @@ void AxisSortSpace::ComputeEvents() {
     MeWarning(0,
               "McdSpaceEndChanges: more overlapping pairs than pairCount (%d); the space now keeps up to %d "
               "(reported once per space: raise pairCount in McdSpaceAxisSortCreate to avoid growing)",
-              capacity, pairs_.Capacity());
+              limit, pairs_.Limit());
     warnedGrowth_ = true;
   }
 }

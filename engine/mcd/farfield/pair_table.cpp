@@ -1,5 +1,5 @@
 // pair_table.cpp: the overlap hash (linear probing with backward-shift
-// deletion, so no tombstones) and the fixed pool of pair records.
+// deletion, so no tombstones) and the pool of pair records.
 //
 // OverlapTable invariants: a hash slot sits at its home or after it in the
 // probe sequence with no free slot in between; slots_ and dense_ hold the
@@ -7,6 +7,9 @@
 // exactly the lists of its two slots, prev/next naming its neighbours there
 // and head_ the first of each list.
 #include "pair_table.h"
+
+#include <algorithm>
+#include <limits>
 
 namespace karma::mcd {
 
@@ -143,7 +146,8 @@ void OverlapTable::Grow() {
 void PairPool::Create(int count) {
   records_.clear();
   free_.clear();
-  Grow(count);
+  limit_ = count;
+  Grow(std::min(count, kFirstRecords));
 }
 
 void PairPool::Grow(int more) {
@@ -158,8 +162,13 @@ void PairPool::Grow(int more) {
 
 PairRecord *PairPool::Acquire(bool *grew) {
   if (free_.empty()) {
-    Grow(Capacity() < 16 ? 16 : Capacity());
-    *grew = true;
+    const int made = Capacity();
+    const int step = std::max(made, 16);
+    if (made >= limit_) {
+      limit_ = made + std::min(step, std::numeric_limits<int>::max() - made);
+      *grew = true;
+    }
+    Grow(std::min(step, limit_ - made));
   }
   PairRecord &r = records_[static_cast<std::size_t>(free_.back())];
   free_.pop_back();

@@ -10,13 +10,16 @@
 // per slot it names, so a proxy's entries are found in O(its entries). It
 // grows as more pairs overlap; only the reported records below are capped.
 //
-// PairPool: the PairRecords the space reports: pairCount of them (the
-// guide's pairCount) to begin with; when every record is in use the pool
-// grows by as many again (at least 16), so no overlapping pair goes
-// unreported. A record keeps its index and address from its hello to its
-// goodbye (records are added at the back of a deque and never move); it
-// returns to the pool when the change block after its goodbye begins, and
-// is only then handed to a new pair.
+// PairPool: the PairRecords the space reports. Its limit starts at the
+// guide's pairCount; records are made as needed (the first
+// min(pairCount, kFirstRecords) at once, then doubling) up to the limit, so
+// a huge pairCount costs nothing until that many pairs overlap. When every
+// record up to the limit is in use, the limit grows by as many again (at
+// least 16) and Acquire says so, so no overlapping pair goes unreported. A
+// record keeps its index and address from its hello to its goodbye (records
+// are added at the back of a deque and never move); it returns to the pool
+// when the change block after its goodbye begins, and is only then handed
+// to a new pair.
 #ifndef KARMA_MCD_FARFIELD_PAIR_TABLE_H
 #define KARMA_MCD_FARFIELD_PAIR_TABLE_H
 
@@ -50,7 +53,7 @@ struct PairOrder {
 // are their user pointers (copied, so they remain readable in a goodbye after
 // the proxy was removed).
 struct PairRecord {
-  int index = 0;  // stable position in the pool, [0, pairCount)
+  int index = 0;  // stable position in the pool, [0, Capacity())
   int proxyA = -1, proxyB = -1;
   void *userA = nullptr, *userB = nullptr;
   std::uint32_t serialA = 0, serialB = 0;
@@ -137,11 +140,17 @@ class OverlapTable {
 
 class PairPool {
  public:
+  static constexpr int kFirstRecords = 4096;
+  // An empty pool with limit `count` (>= 1) and its first records.
   void Create(int count);
+  // The records made so far (indices [0, Capacity())); <= Limit().
   int Capacity() const { return static_cast<int>(records_.size()); }
+  // pairCount, or more once the pool outgrew it.
+  int Limit() const { return limit_; }
   int InUse() const { return Capacity() - static_cast<int>(free_.size()); }
-  // A free record, the lowest free index first; when none is free the pool
-  // first grows by its capacity (at least 16 records) and sets *grew.
+  // A free record, the lowest free index first. When none is free the pool
+  // first makes more records; when it had made Limit() of them, it first
+  // raises the limit by as many (at least 16) and sets *grew.
   PairRecord *Acquire(bool *grew);
   void Release(PairRecord *r);
   PairRecord &At(int index) { return records_[static_cast<std::size_t>(index)]; }
@@ -152,6 +161,7 @@ class PairPool {
 
   std::deque<PairRecord> records_;  // grown at the back only: records never move
   std::vector<int> free_;           // LIFO; lowest indices handed out first
+  int limit_ = 0;
 };
 
 }  // namespace karma::mcd

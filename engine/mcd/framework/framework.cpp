@@ -67,7 +67,14 @@ McdFrameworkID MEAPI McdInit(int geoTypeMaxCount, int modelCount, int instanceCo
 }
 
 void MEAPI McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID fw) {
-  ME_REQUIRE_ARG(fw != nullptr, "McdFrameworkDestroyAllModelsAndGeometries", "framework is NULL");
+  static const char *fn = "McdFrameworkDestroyAllModelsAndGeometries";
+  ME_REQUIRE_ARG(fw != nullptr, fn, "framework is NULL");
+  // A model in a space cannot go (McdModelDestroy); nor then can its
+  // geometry, so nothing goes.
+  for (void *m = MePoolGetNextUsed(&fw->models, nullptr); m; m = MePoolGetNextUsed(&fw->models, m))
+    ME_REQUIRE_ARG(static_cast<McdModel *>(m)->space == nullptr, fn,
+                   "a model is still in a space; remove the models from their spaces (or destroy the "
+                   "spaces) first: nothing destroyed");
   // Models first (they hold references), then every geometry: the
   // reference counts no longer matter since everything goes.
   // (MePool allows putting back the struct a pass has just returned.)
@@ -80,6 +87,12 @@ void MEAPI McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID fw) {
 
 void MEAPI McdTerm(McdFrameworkID fw) {
   if (!fw) return;
+  // A space's pairs and proxies name the framework's models and
+  // interactions, and McdSpaceDestroy says goodbye through them.
+  ME_REQUIRE_ARG(fw->spaceCount == 0, "McdTerm",
+                 "%d space(s) made on the framework still exist; destroy them first (McdSpaceDestroy): "
+                 "the framework is not freed",
+                 fw->spaceCount);
   if (fw->types) McdFrameworkDestroyAllModelsAndGeometries(fw);
   MePoolDestroy(&fw->models);
   MePoolDestroy(&fw->instances);

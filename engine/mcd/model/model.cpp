@@ -46,7 +46,14 @@ McdModelID MEAPI McdModelCreate(McdGeometryID g) {
 void MEAPI McdModelDestroy(McdModelID m) {
   if (!m) return;
   McdFramework *fw = m->framework;
-  if (m->space) MeArgumentWarning("McdModelDestroy", "the model is still in a space; remove it from the space first");
+  // The space holds the model (its pairs and proxy name it): destroying it
+  // there would leave them pointing at freed memory.
+  if (m->space) {
+    MeArgumentWarning("McdModelDestroy",
+                      "the model is still in a space; remove it from the space (McdSpaceRemoveModel) "
+                      "first: not destroyed");
+    return;
+  }
   --m->instance.geometry->m_refCount;
   ReleaseInstance(fw, &m->instance);
   MePoolPutStruct(&fw->models, m);

@@ -61,6 +61,7 @@ McdSpaceID MEAPI McdSpaceAxisSortCreate(McdFrameworkID fw, int axes, int objectC
   if (!mem) return nullptr;
   auto *s = new (mem) McdSpace{};
   s->framework = fw;
+  ++fw->spaceCount;
   s->pairCount = pairCount;
   s->core = AxisSortSpace::Create(axes, objectCount, pairCount);
   if (!s->core) {
@@ -86,6 +87,7 @@ void MEAPI McdSpaceDestroy(McdSpaceID s) {
   }
   for (McdModelPair &p : s->pairs)
     if (p.m_helloed) McdGoodbye(&p);
+  if (s->framework) --s->framework->spaceCount;
   s->~McdSpace();
   MeMemoryAPI.destroy(s);
 }

@@ -6,7 +6,8 @@
 //    model->spaceIndex == its ProxyId; the proxy's user pointer is the model
 //    and its key the model's EffectiveSortKey.
 //  - pairs[i] is the McdModelPair of the core's PairRecord with index i
-//    (pairCount of them at first, more when the core's records grow: they
+//    (as many as the core has records, min(pairCount, 4096) at first, more
+//    as pairs appear and the records grow: they
 //    are added at the back and never move): one McdModelPair per record, so
 //    its identity and address run from hello to goodbye. EndChanges (re)initialises the pair of every
 //    hello record: model1 = the record's proxyA (the lower sort key, or the
@@ -28,7 +29,7 @@ struct McdSpace {
   karma::mcd::AxisSortSpace *core;
   McdFramework *framework;
   std::deque<McdModelPair> pairs;  // one per core pair record, grown with them
-  int pairCount;                   // as created (the first size of `pairs`)
+  int pairCount;                   // as created (the pair limit before the space warns)
   McdSpaceAABBFnPtr aabbFn;
   std::vector<const karma::mcd::PairRecord *> chunk;
 };

@@ -63,6 +63,14 @@ MeBool Insert(McdSpaceID s, McdModelID m, McdCullingTable *table, int index, int
   ME_REQUIRE_ARG_RET(m->framework == s->framework, 0, fn, "the model belongs to another framework; not inserted");
   if (!s->core->RequireInside(fn)) return 0;
   if (!m->updated && m->instance.tm) McdModelUpdate(m);
+  // Without an AABB function the space needs the model's own bounds: a
+  // model never placed (no transform, or only non-finite ones) has none.
+  if (!s->aabbFn && !m->updated) {
+    MeArgumentWarning(fn,
+                      "the model has no bounds yet (no transform, or a non-finite one; "
+                      "see McdModelSetTransformPtr and McdModelUpdate): not inserted");
+    return 0;
+  }
   MeReal min[3], max[3];
   SpaceAabb(s, m, min, max);
   auto *t = reinterpret_cast<CullingTable *>(table);

@@ -161,4 +161,64 @@ TEST(McdModel, DestroyAllAndTerm) {
   EXPECT_NE(McdSphereCreate(fw, 1), nullptr);  // still usable; McdTerm frees the rest
 }
 
+// A model in a space is named by the space's proxy and pairs: it cannot be
+// destroyed until it leaves, nor its framework freed until the space goes.
+TEST(McdModel, AModelInASpaceIsNotDestroyedNorItsFrameworkFreed) {
+  McdFrameworkID fw = McdInit(0, 8, 8, 1);
+  McdPrimitivesRegisterTypes(fw);
+  McdPrimitivesRegisterInteractions(fw);
+  McdGeometryID ball = McdSphereCreate(fw, 1);
+  static TM t;
+  McdModelID m = McdModelCreate(ball);
+  McdModelSetTransformPtr(m, t);
+  McdSpaceID space = McdSpaceAxisSortCreate(fw, McdAllAxes, 8, 16);  // in a change block
+  ASSERT_TRUE(McdSpaceInsertModel(space, m));
+  {
+    WarningCapture w;
+    McdModelDestroy(m);
+    EXPECT_EQ(w.count(), 1u);
+    McdFrameworkDestroyAllModelsAndGeometries(fw);
+    EXPECT_EQ(w.count(), 2u);
+    McdTerm(fw);
+    EXPECT_EQ(w.count(), 3u);
+  }
+  EXPECT_EQ(McdModelGetSpace(m), space);  // all three left it alone
+  EXPECT_EQ(McdFrameworkGetModelCount(fw), 1);
+  EXPECT_EQ(McdGeometryGetReferenceCount(ball), 1);
+  McdSpaceUpdateAll(space);
+  McdSpaceEndChanges(space);
+  McdSpaceBeginChanges(space);
+  ASSERT_TRUE(McdSpaceRemoveModel(m));
+  WarningCapture w;
+  McdModelDestroy(m);
+  EXPECT_EQ(McdFrameworkGetModelCount(fw), 0);
+  McdSpaceDestroy(space);
+  McdTerm(fw);  // frees everything: no space is left
+  EXPECT_EQ(w.count(), 0u);
+}
+
+// Without an AABB function a space takes a model's own bounds, which a
+// model never placed, or placed only at non-finite transforms, lacks.
+TEST(McdModel, AModelWithoutBoundsIsNotInsertedIntoASpace) {
+  Framework fw;
+  McdGeometryID ball = McdSphereCreate(fw, 1);
+  McdModelID none = McdModelCreate(ball), bad = McdModelCreate(ball), good = McdModelCreate(ball);
+  static TM nan(std::nanf(""), 0, 0), origin;
+  McdModelSetTransformPtr(bad, nan);
+  McdModelSetTransformPtr(good, origin);
+  McdSpaceID space = McdSpaceAxisSortCreate(fw, McdAllAxes, 8, 16);
+  {
+    WarningCapture w;
+    EXPECT_FALSE(McdSpaceInsertModel(space, none));
+    EXPECT_FALSE(McdSpaceInsertModel(space, bad));  // McdModelUpdate warns too
+    EXPECT_EQ(w.count(), 3u);
+  }
+  EXPECT_EQ(McdModelGetSpace(none), nullptr);
+  EXPECT_EQ(McdModelGetSpace(bad), nullptr);
+  EXPECT_TRUE(McdSpaceInsertModel(space, good));
+  ASSERT_TRUE(McdSpaceRemoveModel(good));
+  McdSpaceDestroy(space);
+  for (McdModelID m : {none, bad, good}) McdModelDestroy(m);
+}
+
 }  // namespace
