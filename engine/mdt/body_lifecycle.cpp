@@ -99,7 +99,9 @@ void MEAPI MdtBodyDestroy(const MdtBodyID body) {
   // body that takes this slot next: the bridge detaches it first.
   if (body->collisionModel && p->bodyDestroyCB) p->bodyDestroyCB(body, body->collisionModel);
   // Constraints still attached would point at a dead body: disable them and
-  // leave them without bodies (the program may set new ones or destroy them).
+  // leave them without bodies (the program may set new ones or destroy them),
+  // their attachments where they were in the world and no force of the
+  // bodies they had.
   for (void *s = nextConstraintSlot(p, nullptr); s; s = nextConstraintSlot(p, s)) {
     auto *c = static_cast<MdtConstraint *>(s);
     if (c->linked[0] == body || c->linked[1] == body) unlinkConstraint(c);
@@ -107,7 +109,11 @@ void MEAPI MdtBodyDestroy(const MdtBodyID body) {
     unlinkConstraint(c);
     if (c->enabled) MeWarning(0, "MdtBodyDestroy: an enabled %s still used this body; it was disabled", c->type->name);
     c->enabled = FALSE;
-    c->body[0] = c->body[1] = nullptr;
+    moveToBodies(c, nullptr, nullptr);
+    for (int i = 0; i < 2; ++i) {
+      MeVector3Set(c->force[i], 0, 0, 0);
+      MeVector3Set(c->torque[i], 0, 0, 0);
+    }
   }
   if (body->enabled) {
     --p->enabledCount;

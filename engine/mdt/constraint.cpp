@@ -44,6 +44,21 @@ Row &RowSink::add(const StepContext &ctx) {
   return *r;
 }
 
+extern const ConstraintType kDestroyedConstraintType = {
+    MdtConstraintTypeCount, "destroyed constraint", 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+
+bool liveConstraint(const MdtConstraint *c, const char *fn) {
+  if (!c) {
+    MeArgumentWarning(fn, "constraint is NULL");
+    return false;
+  }
+  if (c->type == &kDestroyedConstraintType) {
+    MeArgumentWarning(fn, "constraint %p has been destroyed (a stale handle); ignored", (const void *)c);
+    return false;
+  }
+  return true;
+}
+
 void resetBase(MdtConstraint *c) {
   c->body[0] = c->body[1] = nullptr;
   for (int i = 0; i < 2; ++i) {
@@ -87,6 +102,7 @@ bool checkType(const MdtConstraint *c, const ConstraintType &type, const char *f
     return false;
   }
   if (c->type != &type) {
+    if (!liveConstraint(c, fn)) return false;
     MeWarning(0, "%s: the constraint is of type %s where %s was expected; ignored", fn, c->type->name, type.name);
     return false;
   }
@@ -112,7 +128,7 @@ bool bodyValid(unsigned i, const char *fn) {
 extern "C" {
 
 MdtConstraintType MEAPI MdtConstraintGetType(const MdtConstraintID c) {
-  ME_REQUIRE_ARG_RET(c != nullptr, MdtConstraintTypeCount, "MdtConstraintGetType", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintGetType")) return MdtConstraintTypeCount;
   return c->type->id;
 }
 
@@ -124,7 +140,7 @@ const char *MEAPI MdtConstraintTypeName(const MdtConstraintType t) {
 }
 
 void MEAPI MdtConstraintDestroy(const MdtConstraintID c) {
-  if (!c) return;
+  if (!c || !liveConstraint(c, "MdtConstraintDestroy")) return;
   unlinkConstraint(c);
   // A group frees its contacts itself; a contact enabled alone before it
   // joined the group may still be linked.
@@ -139,7 +155,7 @@ void MEAPI MdtConstraintDestroy(const MdtConstraintID c) {
 
 void MEAPI MdtConstraintEnable(const MdtConstraintID c) {
   static const char *fn = "MdtConstraintEnable";
-  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  if (!liveConstraint(c, fn)) return;
   ME_REQUIRE_ARG(c->owner == nullptr, fn, "this contact belongs to a contact group, which is enabled instead; ignored");
   if (c->type->id != MdtConstraintTypeContactGroup) {
     ME_REQUIRE_ARG(c->body[0] != nullptr, fn, "%s has no bodies; set them before enabling", c->type->name);
@@ -149,18 +165,19 @@ void MEAPI MdtConstraintEnable(const MdtConstraintID c) {
 }
 
 void MEAPI MdtConstraintDisable(const MdtConstraintID c) {
-  ME_REQUIRE_ARG(c != nullptr, "MdtConstraintDisable", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintDisable")) return;
   c->enabled = FALSE;
 }
 
 MeBool MEAPI MdtConstraintIsEnabled(const MdtConstraintID c) {
-  ME_REQUIRE_ARG_RET(c != nullptr, FALSE, "MdtConstraintIsEnabled", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintIsEnabled")) return FALSE;
   return c->enabled ? TRUE : FALSE;
 }
 
 void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0, const MdtBodyID body1) {
   static const char *fn = "MdtConstraintSetBodies";
-  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  if (!liveConstraint(c, fn)) return;
+  ME_REQUIRE_ARG(c->owner == nullptr, fn, "this contact belongs to a contact group, whose bodies it has; ignored");
   ME_REQUIRE_ARG(!c->enabled, fn, "the %s is enabled; disable it before changing its bodies", c->type->name);
   ME_REQUIRE_ARG(body0 != nullptr, fn, "body0 is NULL (only body1 may be the world)");
   if (!liveBody(body0, fn) || (body1 && !liveBody(body1, fn))) return;
@@ -173,48 +190,54 @@ void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0
   attachDefault(c);
   if (c->type->attach) c->type->attach(c);
   c->warmRows = 0;
+  for (int i = 0; i < 2; ++i) {  // last step's, on the bodies it had
+    MeVector3Set(c->force[i], 0, 0, 0);
+    MeVector3Set(c->torque[i], 0, 0, 0);
+  }
 }
 
 MdtBodyID MEAPI MdtConstraintGetBody(const MdtConstraintID c, const unsigned int i) {
-  ME_REQUIRE_ARG_RET(c != nullptr, nullptr, "MdtConstraintGetBody", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintGetBody")) return nullptr;
   if (!bodyValid(i, "MdtConstraintGetBody")) return nullptr;
   return c->body[i];
 }
 
 void MEAPI MdtConstraintGetForce(const MdtConstraintID c, const unsigned int i, MeVector3 f) {
   ME_REQUIRE_ARG(c != nullptr && f != nullptr, "MdtConstraintGetForce", "NULL argument");
+  if (!liveConstraint(c, "MdtConstraintGetForce")) return;
   if (!bodyValid(i, "MdtConstraintGetForce")) return;
   MeVector3Copy(f, c->force[i]);
 }
 
 void MEAPI MdtConstraintGetTorque(const MdtConstraintID c, const unsigned int i, MeVector3 t) {
   ME_REQUIRE_ARG(c != nullptr && t != nullptr, "MdtConstraintGetTorque", "NULL argument");
+  if (!liveConstraint(c, "MdtConstraintGetTorque")) return;
   if (!bodyValid(i, "MdtConstraintGetTorque")) return;
   MeVector3Copy(t, c->torque[i]);
 }
 
 MdtWorldID MEAPI MdtConstraintGetWorld(const MdtConstraintID c) {
-  ME_REQUIRE_ARG_RET(c != nullptr, nullptr, "MdtConstraintGetWorld", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintGetWorld")) return nullptr;
   return c->world;
 }
 
 void MEAPI MdtConstraintSetUserData(const MdtConstraintID c, void *data) {
-  ME_REQUIRE_ARG(c != nullptr, "MdtConstraintSetUserData", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintSetUserData")) return;
   c->userData = data;
 }
 
 void *MEAPI MdtConstraintGetUserData(const MdtConstraintID c) {
-  ME_REQUIRE_ARG_RET(c != nullptr, nullptr, "MdtConstraintGetUserData", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintGetUserData")) return nullptr;
   return c->userData;
 }
 
 void MEAPI MdtConstraintSetSortKey(const MdtConstraintID c, const MeI32 key) {
-  ME_REQUIRE_ARG(c != nullptr, "MdtConstraintSetSortKey", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintSetSortKey")) return;
   c->sortKey = key;
 }
 
 MeI32 MEAPI MdtConstraintGetSortKey(const MdtConstraintID c) {
-  ME_REQUIRE_ARG_RET(c != nullptr, 0, "MdtConstraintGetSortKey", "constraint is NULL");
+  if (!liveConstraint(c, "MdtConstraintGetSortKey")) return 0;
   return c->sortKey;
 }
 

@@ -192,12 +192,16 @@ unsigned largestConstraintSize();
 
 // Slots (constraint_slots.cpp). Every constraint lives in a slot of its
 // world's constraint pools; the pools grow when full (reported once per
-// world), and a slot keeps its address until it is released.
+// world), and a slot keeps its address until it is released. A released
+// slot has the type kDestroyedConstraintType until it is taken again, and
+// the last kHeldConstraintSlots released are taken again only when no other
+// slot is free, oldest first, so a stale handle is refused (liveConstraint,
+// checkType) rather than reaching the next constraint made.
 //   takeConstraintSlot: a free slot, or nullptr (with a warning) only when
 //     memory runs out;
 //   releaseConstraintSlot: gives a slot back (one not in the pools is ignored);
 //   nextConstraintSlot: the used slot after `slot` (nullptr: the first), in a
-//     fixed order, nullptr at the end;
+//     fixed order, nullptr at the end, passing over released slots;
 //   usedConstraintSlots: how many are in use;
 //   releaseConstraintPools: frees every pool (the world's end).
 void *takeConstraintSlot(MdtWorldPrivate *p);
@@ -205,6 +209,12 @@ void releaseConstraintSlot(MdtWorldPrivate *p, void *slot);
 void *nextConstraintSlot(MdtWorldPrivate *p, void *slot);
 int usedConstraintSlots(const MdtWorldPrivate *p);
 void releaseConstraintPools(MdtWorldPrivate *p);
+
+// The type of a released slot: no constraint type has it.
+extern const ConstraintType kDestroyedConstraintType;
+// True for a constraint between its Create and its Destroy; for NULL or a
+// released slot (a stale handle) it warns, naming `fn`, and is false.
+bool liveConstraint(const MdtConstraint *c, const char *fn);
 
 // Allocation: a new constraint of `type` in `world`, base and type reset;
 // NULL with a warning when the world's constraint pool is full.
@@ -218,7 +228,7 @@ void resetKeepingBodies(MdtConstraint *c);
 // The type check of MdtConstraintDCast*: c if it is of `type`, else NULL.
 MdtConstraint *castTo(MdtConstraint *c, const ConstraintType &type);
 // The type check of the typed API: false (with a warning naming `fn`) when
-// c is NULL or not of `type`.
+// c is NULL, a released slot or not of `type`.
 bool checkType(const MdtConstraint *c, const ConstraintType &type, const char *fn);
 
 // ---- attachment frames in world coordinates ---------------------------------
@@ -228,6 +238,11 @@ void attachmentOrtho(const MdtConstraint *c, int i, MeVector3 out);  // world se
 // World vector -> body i's frame (identity for the world).
 void toBodyFrame(const MdtConstraint *c, int i, const MeVector3 world, MeVector3 local);
 void pointToBodyFrame(const MdtConstraint *c, int i, const MeVector3 world, MeVector3 local);
+// Gives c the bodies b0 and b1 (either may be NULL: the world), each
+// attachment point and axis re-expressed from its old body's frame in its
+// new body's, so that it keeps its place in the world; a body that stays
+// keeps its stored attachment exactly.
+void moveToBodies(MdtConstraint *c, MdtBody *b0, MdtBody *b1);
 // The world point p as the attachment point in both bodies' frames; a
 // non-finite p is ignored with a warning naming fn.
 void setWorldPosition(MdtConstraint *c, const MeVector3 p, const char *fn);

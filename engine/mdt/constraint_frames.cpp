@@ -97,6 +97,21 @@ void pointVelocity(const MdtConstraint *c, int i, const MeVector3 p, MeVector3 o
   MeVector3Add(out, b->velocity, wr);
 }
 
+void moveToBodies(MdtConstraint *c, MdtBody *b0, MdtBody *b1) {
+  MdtBody *const to[2] = {b0, b1};
+  for (int i = 0; i < 2; ++i) {
+    if (c->body[i] == to[i]) continue;
+    MeVector3 p, axis, ortho;
+    attachmentPoint(c, i, p);
+    attachmentAxis(c, i, axis);
+    attachmentOrtho(c, i, ortho);
+    c->body[i] = to[i];
+    pointToBodyFrame(c, i, p, c->localPos[i]);
+    toBodyFrame(c, i, axis, c->localAxis[i]);
+    toBodyFrame(c, i, ortho, c->localOrtho[i]);
+  }
+}
+
 void setWorldPosition(MdtConstraint *c, const MeVector3 p, const char *fn) {
   ME_REQUIRE_ARG(realFinite3(p[0], p[1], p[2]), fn, "position is not finite; ignored");
   for (int i = 0; i < 2; ++i) pointToBodyFrame(c, i, p, c->localPos[i]);
@@ -150,20 +165,21 @@ extern "C" {
 
 void MEAPI MdtConstraintSetPosition(const MdtConstraintID c, const MeReal x, const MeReal y, const MeReal z) {
   static const char *fn = "MdtConstraintSetPosition";
-  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  if (!liveConstraint(c, fn)) return;
   const MeVector3 p = {x, y, z};
   setWorldPosition(c, p, fn);
 }
 
 void MEAPI MdtConstraintGetPosition(const MdtConstraintID c, MeVector3 position) {
   ME_REQUIRE_ARG(c != nullptr && position != nullptr, "MdtConstraintGetPosition", "NULL argument");
+  if (!liveConstraint(c, "MdtConstraintGetPosition")) return;
   attachmentPoint(c, 0, position);
 }
 
 void MEAPI MdtConstraintBodySetPosition(const MdtConstraintID c, const unsigned int i, const MeReal x, const MeReal y,
                                         const MeReal z) {
   static const char *fn = "MdtConstraintBodySetPosition";
-  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  if (!liveConstraint(c, fn)) return;
   ME_REQUIRE_ARG(realFinite3(x, y, z), fn, "position is not finite; ignored");
   if (!indexOk(i, fn)) return;
   const MeVector3 p = {x, y, z};
@@ -173,13 +189,14 @@ void MEAPI MdtConstraintBodySetPosition(const MdtConstraintID c, const unsigned 
 void MEAPI MdtConstraintBodyGetPosition(const MdtConstraintID c, const unsigned int i, MeVector3 position) {
   static const char *fn = "MdtConstraintBodyGetPosition";
   ME_REQUIRE_ARG(c != nullptr && position != nullptr, fn, "NULL argument");
+  if (!liveConstraint(c, fn)) return;
   if (!indexOk(i, fn)) return;
   attachmentPoint(c, (int)i, position);
 }
 
 void MEAPI MdtConstraintSetAxis(const MdtConstraintID c, const MeReal px, const MeReal py, const MeReal pz) {
   static const char *fn = "MdtConstraintSetAxis";
-  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  if (!liveConstraint(c, fn)) return;
   MeVector3 p = {px, py, pz}, o;
   if (!unitAxis(p, fn, "the axis")) return;
   // Keep the current secondary axis if it is still usable, else any.
@@ -195,7 +212,7 @@ void MEAPI MdtConstraintSetAxis(const MdtConstraintID c, const MeReal px, const 
 void MEAPI MdtConstraintSetAxes(const MdtConstraintID c, const MeReal px, const MeReal py, const MeReal pz,
                                 const MeReal ox, const MeReal oy, const MeReal oz) {
   static const char *fn = "MdtConstraintSetAxes";
-  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  if (!liveConstraint(c, fn)) return;
   MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
   if (!orthoAxes(p, o, fn)) return;
   setWorldAxes(c, p, o);
@@ -204,7 +221,7 @@ void MEAPI MdtConstraintSetAxes(const MdtConstraintID c, const MeReal px, const 
 void MEAPI MdtConstraintBodySetAxes(const MdtConstraintID c, const unsigned int i, const MeReal px, const MeReal py,
                                     const MeReal pz, const MeReal ox, const MeReal oy, const MeReal oz) {
   static const char *fn = "MdtConstraintBodySetAxes";
-  ME_REQUIRE_ARG(c != nullptr, fn, "constraint is NULL");
+  if (!liveConstraint(c, fn)) return;
   if (!indexOk(i, fn)) return;
   MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
   if (!orthoAxes(p, o, fn)) return;
@@ -214,11 +231,13 @@ void MEAPI MdtConstraintBodySetAxes(const MdtConstraintID c, const unsigned int 
 
 void MEAPI MdtConstraintGetAxis(const MdtConstraintID c, MeVector3 axis) {
   ME_REQUIRE_ARG(c != nullptr && axis != nullptr, "MdtConstraintGetAxis", "NULL argument");
+  if (!liveConstraint(c, "MdtConstraintGetAxis")) return;
   attachmentAxis(c, 0, axis);
 }
 
 void MEAPI MdtConstraintGetAxes(const MdtConstraintID c, MeVector3 primary, MeVector3 ortho) {
   ME_REQUIRE_ARG(c != nullptr && primary != nullptr && ortho != nullptr, "MdtConstraintGetAxes", "NULL argument");
+  if (!liveConstraint(c, "MdtConstraintGetAxes")) return;
   attachmentAxis(c, 0, primary);
   attachmentOrtho(c, 0, ortho);
 }
@@ -226,6 +245,7 @@ void MEAPI MdtConstraintGetAxes(const MdtConstraintID c, MeVector3 primary, MeVe
 void MEAPI MdtConstraintBodyGetAxes(const MdtConstraintID c, const unsigned int i, MeVector3 primary, MeVector3 ortho) {
   static const char *fn = "MdtConstraintBodyGetAxes";
   ME_REQUIRE_ARG(c != nullptr && primary != nullptr && ortho != nullptr, fn, "NULL argument");
+  if (!liveConstraint(c, fn)) return;
   if (!indexOk(i, fn)) return;
   attachmentAxis(c, (int)i, primary);
   attachmentOrtho(c, (int)i, ortho);

@@ -9,6 +9,14 @@
 // whole life; pools are only released with the world. Slots are handed out
 // from the earliest pool with a free one, and walked pool by pool, each in
 // MePool's order, so the order depends only on the calls made.
+//
+// A released slot is marked (its type becomes kDestroyedConstraintType) and
+// held back: the last kHeldConstraintSlots released stay in use in their
+// pools, in a ring, oldest first. Releasing one more gives the oldest back
+// to its pool; when no pool has a free slot, the oldest held one is taken
+// before the world grows. So a destroyed constraint's handle is refused
+// until its slot is handed out again, which is not before every other slot
+// is in use or kHeldConstraintSlots more slots have been released.
 #include <climits>
 #include <cstddef>
 
@@ -53,24 +61,20 @@ bool grow(MdtWorldPrivate *p) {
   return true;
 }
 
-}  // namespace
-
-void *takeConstraintSlot(MdtWorldPrivate *p) {
-  for (int k = -1; k < p->overflowCount; ++k)
-    if (poolAt(p, k)->freeCount > 0) return MePoolGetStruct(poolAt(p, k));
-  if (!grow(p)) {
-    MeWarning(0, "MdtWorld: out of memory for more constraints; the constraint was not made");
-    return nullptr;
-  }
-  return MePoolGetStruct(&p->overflow[p->overflowCount - 1]);
+// The oldest held slot, no longer held (heldCount > 0).
+void *takeOldestHeld(MdtWorldPrivate *p) {
+  void *slot = p->heldSlots[p->heldFirst];
+  p->heldFirst = (p->heldFirst + 1) % kHeldConstraintSlots;
+  --p->heldCount;
+  return slot;
 }
 
-void releaseConstraintSlot(MdtWorldPrivate *p, void *slot) {
-  MePool *pool = ownerPool(p, slot);
-  if (pool) MePoolPutStruct(pool, slot);
+bool released(const void *slot) {
+  return static_cast<const MdtConstraint *>(slot)->type == &kDestroyedConstraintType;
 }
 
-void *nextConstraintSlot(MdtWorldPrivate *p, void *slot) {
+// The slot in use after `slot` in the walk's order, held ones included.
+void *nextUsedSlot(MdtWorldPrivate *p, void *slot) {
   int k = -1;
   if (slot) {
     MePool *pool = ownerPool(p, slot);
@@ -83,16 +87,48 @@ void *nextConstraintSlot(MdtWorldPrivate *p, void *slot) {
   return nullptr;
 }
 
+}  // namespace
+
+void *takeConstraintSlot(MdtWorldPrivate *p) {
+  for (int k = -1; k < p->overflowCount; ++k)
+    if (poolAt(p, k)->freeCount > 0) return MePoolGetStruct(poolAt(p, k));
+  if (p->heldCount > 0) return takeOldestHeld(p);
+  if (!grow(p)) {
+    MeWarning(0, "MdtWorld: out of memory for more constraints; the constraint was not made");
+    return nullptr;
+  }
+  return MePoolGetStruct(&p->overflow[p->overflowCount - 1]);
+}
+
+void releaseConstraintSlot(MdtWorldPrivate *p, void *slot) {
+  if (!ownerPool(p, slot) || released(slot)) return;
+  static_cast<MdtConstraint *>(slot)->type = &kDestroyedConstraintType;
+  if (p->heldCount == kHeldConstraintSlots) {
+    void *oldest = takeOldestHeld(p);
+    MePoolPutStruct(ownerPool(p, oldest), oldest);
+  }
+  p->heldSlots[(p->heldFirst + p->heldCount) % kHeldConstraintSlots] = slot;
+  ++p->heldCount;
+}
+
+void *nextConstraintSlot(MdtWorldPrivate *p, void *slot) {
+  do {
+    slot = nextUsedSlot(p, slot);
+  } while (slot && released(slot));
+  return slot;
+}
+
 int usedConstraintSlots(const MdtWorldPrivate *p) {
   int used = MePoolGetUsed(&p->constraints);
   for (int k = 0; k < p->overflowCount; ++k) used += MePoolGetUsed(&p->overflow[k]);
-  return used;
+  return used - p->heldCount;
 }
 
 void releaseConstraintPools(MdtWorldPrivate *p) {
   MePoolDestroy(&p->constraints);
   for (int k = 0; k < p->overflowCount; ++k) MePoolDestroy(&p->overflow[k]);
   p->overflowCount = 0;
+  p->heldFirst = p->heldCount = 0;
 }
 
 }  // namespace karma::mdt

@@ -81,6 +81,8 @@ inline constexpr int kMaxConstraintPools = 24;
 // Constraint slots start on a cache line, so that the fields a type keeps
 // together in one line (contact_internal.h) take one line.
 inline constexpr int kConstraintSlotAlignment = 64;
+// Released constraint slots a world holds back from reuse (constraint.h, "Slots").
+inline constexpr int kHeldConstraintSlots = 64;
 struct ActiveSets;
 }  // namespace karma::mdt
 
@@ -91,6 +93,11 @@ struct MdtWorldPrivate {
   MePool overflow[karma::mdt::kMaxConstraintPools];
   int overflowCount;
   MeBool grewConstraints;  // the growth has been reported
+  // The last released constraint slots, still in use in their pools, oldest
+  // at heldSlots[heldFirst], heldCount of them in ring order.
+  void *heldSlots[karma::mdt::kHeldConstraintSlots];
+  int heldFirst;
+  int heldCount;
   unsigned constraintSlotSize;
   std::uint64_t nextConstraintSerial;
   karma::mdt::StepScratch *scratch;  // step work arrays, reused across steps

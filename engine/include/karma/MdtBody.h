@@ -31,7 +31,9 @@ ME_EXTERN_C_BEGIN
 /* Creates a disabled body in `world`; NULL (with one warning) when the
  * world's body pool is full. */
 MEPUBLIC MdtBodyID MEAPI MdtBodyCreate(const MdtWorldID world);
-/* Returns the body to its world's pool. NULL is ignored. */
+/* Returns the body to its world's pool. NULL is ignored. The constraints
+ * that used it are disabled and left without bodies, each attachment where
+ * it was in the world and the last step's force and torque zero. */
 MEPUBLIC void MEAPI MdtBodyDestroy(const MdtBodyID body);
 
 MEPUBLIC void MEAPI MdtBodyEnable(const MdtBodyID body);

@@ -59,15 +59,21 @@ MEPUBLIC MdtConstraintType MEAPI MdtConstraintGetType(const MdtConstraintID c);
 /* "BSJoint", "Hinge", ... */
 MEPUBLIC const char *MEAPI MdtConstraintTypeName(const MdtConstraintType t);
 
-/* Destroys the constraint (disabling it first). NULL is ignored. */
+/* Destroys the constraint (disabling it first). NULL is ignored. The
+ * handle of a destroyed constraint is refused with a warning by the
+ * MdtConstraint* and typed calls until its slot serves a new constraint,
+ * which is not before every other slot of the world is in use or 64 more
+ * constraints (a group's contacts included) have been destroyed. */
 MEPUBLIC void MEAPI MdtConstraintDestroy(const MdtConstraintID c);
 MEPUBLIC void MEAPI MdtConstraintEnable(const MdtConstraintID c);
 MEPUBLIC void MEAPI MdtConstraintDisable(const MdtConstraintID c);
 MEPUBLIC MeBool MEAPI MdtConstraintIsEnabled(const MdtConstraintID c);
 
 /* body0 must not be NULL; body1 NULL means the world. The constraint must be
- * disabled. The attachment frames are reset to the bodies' origins and the
- * type's default axes. */
+ * disabled, and not a contact of a contact group (the group's bodies are
+ * its contacts'). The attachment frames are reset to the bodies' origins
+ * and the type's default axes, and the force and torque of the last step
+ * to zero. */
 MEPUBLIC void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0, const MdtBodyID body1);
 MEPUBLIC MdtBodyID MEAPI MdtConstraintGetBody(const MdtConstraintID c, const unsigned int bodyindex);
 

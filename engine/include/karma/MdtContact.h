@@ -140,7 +140,9 @@ MEPUBLIC MeReal MEAPI MdtContactGetPenetration(const MdtContactID c);
 MEPUBLIC MdtContactParamsID MEAPI MdtContactGetParams(const MdtContactID c);
 /* Copies all parameters at once. */
 MEPUBLIC void MEAPI MdtContactSetParams(const MdtContactID c, const MdtContactParamsID p);
-/* The chain of contacts of one body pair (used by collision and groups). */
+/* The chain of contacts of one body pair (used by collision and groups).
+ * A group keeps its contacts' chain itself: SetNext on a contact of a group
+ * is refused with a warning (use the MdtContactGroup* calls). */
 MEPUBLIC MdtContactID MEAPI MdtContactGetNext(const MdtContactID c);
 MEPUBLIC void MEAPI MdtContactSetNext(const MdtContactID c, const MdtContactID next);
 /* Normal force of the last step (>= 0 unless adhesive). */
@@ -184,7 +186,9 @@ MDT_CONSTRAINT_COMMON_API(ContactGroup, MdtContactGroupID)
 MEPUBLIC MdtContactID MEAPI MdtContactGroupCreateContact(const MdtContactGroupID g);
 /* Removes a contact from the group and destroys it. */
 MEPUBLIC void MEAPI MdtContactGroupDestroyContact(const MdtContactGroupID g, const MdtContactID c);
-/* Adds a stand-alone (disabled) contact to the end of the group. */
+/* Adds a stand-alone (disabled) contact to the end of the group. It takes
+ * the group's bodies, its position and axes keeping their place in the
+ * world; so do the group's contacts when the group is given new bodies. */
 MEPUBLIC void MEAPI MdtContactGroupAppendContact(const MdtContactGroupID g, const MdtContactID c);
 /* Takes a contact out of the group without destroying it (it becomes a
  * disabled stand-alone contact). */

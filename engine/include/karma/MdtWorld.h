@@ -258,7 +258,20 @@ MEPUBLIC void MEAPI MdtWorldSetContactImportanceCB(const MdtWorldID world, MdtCo
  * MdtBodyEnable / MdtBodyDisable by the program, waking by a constraint in
  * a step, auto-disable, an overflowing body (not MdtBodyDestroy). The bridge
  * (MstSetWorldHandlers) uses it to unfreeze and freeze the body's collision
- * model. One callback per world; NULL removes it. */
+ * model. One callback per world; NULL removes it.
+ * Within MdtWorldStep:
+ *   - enabled TRUE comes while the step finds what it will move, before
+ *     anything moves (a body woken by its forces or by an enabled
+ *     constraint to an awake body). The callback may then disable or
+ *     destroy the body it is told about, destroy other bodies and
+ *     constraints, and create bodies and constraints; the step moves what
+ *     it leaves. (Disabling or destroying another awake body may leave a
+ *     sleeper joined to an awake body unwoken, and so held still, for this
+ *     step.)
+ *   - enabled FALSE comes while the step moves the bodies (auto-disable, an
+ *     overflowing body). The callback must then not create, destroy, enable
+ *     or disable bodies or constraints: note the body and act once
+ *     MdtWorldStep has returned. */
 typedef void(MEAPI *MdtBodyEnableCallbackPtr)(MdtBodyID body, MeBool enabled, void *data);
 MEPUBLIC void MEAPI MdtWorldSetBodyEnableCallback(const MdtWorldID world, MdtBodyEnableCallbackPtr cb, void *data);
 /* The callback set (NULL if none) and, when data is not NULL, its data. */

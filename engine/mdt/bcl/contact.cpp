@@ -329,9 +329,12 @@ MdtContactID MEAPI MdtContactGetNext(const MdtContactID c) {
 }
 
 void MEAPI MdtContactSetNext(const MdtContactID c, const MdtContactID next) {
-  if (!checkType(c, kContactType, "MdtContactSetNext")) return;
+  static const char *fn = "MdtContactSetNext";
+  if (!checkType(c, kContactType, fn)) return;
+  ME_REQUIRE_ARG(c->owner == nullptr, fn,
+                 "the contact belongs to a contact group, which keeps its list (MdtContactGroupAppendContact, "
+                 "MdtContactGroupRemoveContact); ignored");
   c->next = next;
-  if (c->owner && c->owner->type == &kContactGroupType) refreshContactHints(static_cast<MdtContactGroup *>(c->owner));
 }
 
 void MEAPI MdtContactSetFeature(const MdtContactID c, const MeU32 feature) {

@@ -1,6 +1,13 @@
 // contact_group.cpp: contact groups -- every contact between one pair of
 // bodies, stepped as one constraint. The group's rows are its contacts'
-// rows in list order (contact.cpp); its contacts follow its bodies.
+// rows in list order (contact.cpp).
+//
+// A contact of a group has the group's bodies: MdtConstraintSetBodies on the
+// group (attach) and MdtContactGroupAppendContact give them to it, keeping
+// its attachment's place in the world (moveToBodies), MdtBodyDestroy takes
+// them from both, and MdtConstraintSetBodies refuses a contact of a group.
+// The group's list and count change only here (MdtContactSetNext refuses a
+// contact of a group).
 #include <algorithm>
 
 #include "contact_internal.h"
@@ -19,6 +26,12 @@ void reset(MdtConstraint *c) {
 void syncBodies(MdtContactGroup *g, MdtContact *k) {
   k->body[0] = g->body[0];
   k->body[1] = g->body[1];
+}
+
+// The group has new bodies: its contacts move to them.
+void attach(MdtConstraint *c) {
+  auto *g = as<MdtContactGroup>(c);
+  for (MdtContact *k = g->first; k; k = k->next) moveToBodies(k, g->body[0], g->body[1]);
 }
 
 void addRows(MdtConstraint *c, RowSink &sink, const StepContext &ctx) {
@@ -98,7 +111,7 @@ extern const ConstraintType kContactGroupType = {MdtConstraintTypeContactGroup,
                                                  addRows,
                                                  afterSolve,
                                                  destroy,
-                                                 nullptr,
+                                                 attach,
                                                  prefetch};
 }  // namespace karma::mdt
 
@@ -114,7 +127,7 @@ void MEAPI MdtContactGroupAppendContact(const MdtContactGroupID g, const MdtCont
   c->enabled = FALSE;
   c->owner = g;
   c->next = nullptr;
-  syncBodies(g, c);
+  moveToBodies(c, g->body[0], g->body[1]);
   MdtContact **tail = &g->first;
   while (*tail) tail = &(*tail)->next;
   *tail = c;
@@ -143,13 +156,13 @@ void MEAPI MdtContactGroupRemoveContact(const MdtContactGroupID g, const MdtCont
   for (MdtContact **link = &g->first; *link; link = &(*link)->next) {
     if (*link == c) {
       *link = c->next;
+      --g->count;
       break;
     }
   }
   c->next = nullptr;
   c->owner = nullptr;
   c->enabled = FALSE;
-  --g->count;
   g->warmRows = 0;
   refreshContactHints(g);  // the walk above has just read the links it follows
 }

@@ -48,11 +48,10 @@ struct MdtContactGroup : MdtConstraint {
   int count;
   MeReal normalForce;
   // The first min(count, kContactHints) contacts in list order, kept by
-  // Append, Remove and MdtContactSetNext on a contact of the group
-  // (refreshContactHints), so that the memory of all of them can be asked
-  // for at once (MdtContactGroupPrefetchContacts, ConstraintType::prefetch)
-  // instead of one link at a time as a walk of the list would. Only ever
-  // prefetched, never read for a result.
+  // Append and Remove (refreshContactHints), so that the memory of all of
+  // them can be asked for at once (MdtContactGroupPrefetchContacts,
+  // ConstraintType::prefetch) instead of one link at a time as a walk of the
+  // list would. Only ever prefetched, never read for a result.
   MdtContact *hint[karma::mdt::kContactHints];
 };
 static_assert(alignof(MdtContact) <= karma::mdt::kConstraintSlotAlignment &&

@@ -34,14 +34,24 @@ bool simulated(const MdtConstraint *c) {
 // their constraints are searched in turn, so chains wake through and an
 // island wakes as a whole. The bodies woken are the same whatever the
 // order; only the order of the enable callbacks follows the list.
+// The enable callback may destroy bodies and constraints (MdtWorld.h): the
+// walk of b's list goes on from the constraint after c as it was before the
+// callback, or from the list's head again when that one has left the list;
+// and when b itself has left the awake list, the body that took its place
+// there is walked next.
 void wakeConnectedSleepers(ActiveSets &a) {
-  for (size_t i = 0; i < a.awake.size(); ++i) {
+  for (size_t i = 0; i < a.awake.size();) {
     MdtBody *b = a.awake[i];
-    for (MdtConstraint *c = b->firstConstraint; c; c = nextAtBody(c, b)) {
+    MdtConstraint *next = nullptr;
+    for (MdtConstraint *c = b->firstConstraint; c; c = next) {
+      next = nextAtBody(c, b);
       if (!c->enabled || c->owner || !c->body[0] || !c->body[1]) continue;
       MdtBody *other = c->body[0] == b ? c->body[1] : c->body[0];
-      if (!other->enabled) MdtBodyEnable(other);
+      if (other->enabled) continue;
+      MdtBodyEnable(other);
+      if (next && next->linked[0] != b && next->linked[1] != b) next = b->firstConstraint;
     }
+    if (i < a.awake.size() && a.awake[i] == b) ++i;
   }
 }
 
