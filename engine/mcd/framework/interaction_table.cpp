@@ -61,12 +61,14 @@ namespace karma::mcd {
 
 void RegisterInteractionQuietly(McdFramework *fw, int a, int b, const McdInteractions &fns) {
   if (!fw || !ValidType(fw, a) || !ValidType(fw, b)) return;
-  McdFrameworkSetInteraction(fw, a, b, &fns);
-  // The slots this call made are the engine's own.
   const int n = fw->typeMax;
-  if (InteractionSlot *ab = fw->table[a * n + b]) ab->fns.m_builtIn = 1;
-  if (a != b && !fw->explicitEntry[b * n + a])
-    if (InteractionSlot *ba = fw->table[b * n + a]) ba->fns.m_builtIn = 1;
+  const InteractionSlot *before[2] = {fw->table[a * n + b], fw->table[b * n + a]};
+  McdFrameworkSetInteraction(fw, a, b, &fns);
+  // The slots this call made are the engine's own (none when it ran out of
+  // memory: the table then still holds the slots it had, perhaps a user's).
+  InteractionSlot *ab = fw->table[a * n + b], *ba = fw->table[b * n + a];
+  if (ab && ab != before[0]) ab->fns.m_builtIn = 1;
+  if (a != b && ba && ba != before[1] && !fw->explicitEntry[b * n + a]) ba->fns.m_builtIn = 1;
 }
 
 void HoldInteraction(const McdInteractions *fns) {

@@ -51,7 +51,7 @@ void resetContact(MdtContact *c) {
   MeVector3Set(c->direction, 0, 0, 0);
   c->directionSet = FALSE;
   c->penetration = 0;
-  c->next = nullptr;
+  if (!c->owner) c->next = nullptr;  // a group's contact keeps its place in the group's list
   c->normalForce = 0;
   c->feature = 0;
   c->warmNormal = 0;

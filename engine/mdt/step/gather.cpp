@@ -90,11 +90,17 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
     s.bodies[(size_t)i]->index = i;
     s.bodies[(size_t)i]->mark = -1;
   }
+  // A constraint's body outside the step (disabled by the enable callback
+  // during the wake-up walk, say) acts as the world, as in the assembly:
+  // its index is stale, so it is never looked up.
+  auto stepped = [&s, nb](const MdtBody *b) {
+    return b && b->index >= 0 && b->index < nb && s.bodies[(size_t)b->index] == b;
+  };
   s.adjStart.assign((size_t)nb + 1, 0);
   for (MdtConstraint *c : s.constraints) {
     c->mark = -1;
     for (int k = 0; k < 2; ++k)
-      if (c->body[k]) ++s.adjStart[(size_t)c->body[k]->index + 1];
+      if (stepped(c->body[k])) ++s.adjStart[(size_t)c->body[k]->index + 1];
   }
   for (int i = 0; i < nb; ++i) s.adjStart[(size_t)i + 1] += s.adjStart[(size_t)i];
   s.adj.assign((size_t)s.adjStart[(size_t)nb], 0);
@@ -102,7 +108,7 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
   for (int ci = 0; ci < nc; ++ci) {
     MdtConstraint *c = s.constraints[(size_t)ci];
     for (int k = 0; k < 2; ++k)
-      if (c->body[k]) s.adj[(size_t)s.adjFill[(size_t)c->body[k]->index]++] = ci;
+      if (stepped(c->body[k])) s.adj[(size_t)s.adjFill[(size_t)c->body[k]->index]++] = ci;
   }
 
   // Breadth-first search from each unvisited body in sorted order. Within a
@@ -128,7 +134,7 @@ void buildPartitions(MdtWorldID world, StepScratch &s) {
         found.push_back(c);
         for (int e = 0; e < 2; ++e) {
           MdtBody *o = c->body[e];
-          if (o && o->mark < 0) {
+          if (stepped(o) && o->mark < 0) {
             o->mark = pi;
             s.partBodies.push_back(o);
           }

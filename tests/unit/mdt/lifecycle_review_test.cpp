@@ -5,6 +5,8 @@
 // refused, a constraint given new bodies keeps no force of the old ones, and
 // the enable callback may destroy the body it is told about while a step
 // wakes an island.
+#include <cmath>
+
 #include "mdt_test_support.h"
 
 using namespace mdt_test;
@@ -200,6 +202,88 @@ TEST(MdtWorldStep, AnEnableCallbackThatDestroysAWokenBodyDoesNotStopTheIslandWak
   MeVector3 p;
   MdtBodyGetPosition(c, p);
   EXPECT_GT(p[1], 0);  // c moved with its velocity
+}
+
+TEST(MdtContactGroup, ResettingAGroupOrOneOfItsContactsKeepsEveryContactInTheGroup) {
+  World w;
+  MdtBodyID a = MdtBodyCreate(w);
+  MdtContactGroupID g = MdtContactGroupCreate(w);
+  MdtContactGroupSetBodies(g, a, nullptr);
+  MdtContactGroupCreateContact(g);
+  MdtContactID second = MdtContactGroupCreateContact(g);
+  MdtContactGroupCreateContact(g);
+  auto walked = [g] {
+    int n = 0;
+    for (MdtContactID k = MdtContactGroupGetFirstContact(g); k; k = MdtContactGroupGetNextContact(g, k)) ++n;
+    return n;
+  };
+  MdtContactReset(second);
+  EXPECT_EQ(walked(), 3);
+  MdtContactGroupReset(g);
+  EXPECT_EQ(walked(), 3);
+  EXPECT_EQ(MdtContactGroupGetCount(g), 3);
+  MdtContactGroupDestroy(g);
+  EXPECT_EQ(MdtWorldGetConstraintCount(w), 0u);  // the group took all three with it
+}
+
+// A sleeper woken by the walk and disabled again by the callback leaves an
+// enabled joint between an awake body and a disabled one, whose partition
+// index is stale: the partitions treat it as the world.
+MdtBodyID gDisableOnWake = nullptr;
+void MEAPI DisableWhenWoken(MdtBodyID b, MeBool enabled, void *) {
+  if (enabled && b == gDisableOnWake) MdtBodyDisable(b);
+}
+
+TEST(MdtWorldStep, ABodyTheEnableCallbackDisablesAgainActsAsTheWorld) {
+  World w;
+  MdtWorldSetGravity(w, 0, (MeReal)-9.81, 0);
+  constexpr int kBodies = 8;
+  MdtBodyID body[kBodies];
+  for (int i = 0; i < kBodies; ++i) {
+    body[i] = MdtBodyCreate(w);
+    MdtBodySetPosition(body[i], (MeReal)i, 0, 0);
+    MdtBodyEnable(body[i]);
+  }
+  for (int i = 0; i + 1 < kBodies; ++i) {
+    MdtBSJointID j = MdtBSJointCreate(w);
+    MdtBSJointSetBodies(j, body[i], body[i + 1]);
+    MdtBSJointSetPosition(j, (MeReal)i + (MeReal)0.5, 0, 0);
+    MdtBSJointEnable(j);
+  }
+  MdtWorldStep(w, (MeReal)0.01);  // the last body's index is 7 of 8
+  WarningCapture warnings;  // destroying bodies that enabled joints still use
+  for (int i = 1; i + 1 < kBodies; ++i) MdtBodyDestroy(body[i]);
+  MdtBodyID first = body[0], last = body[kBodies - 1];
+  MdtBSJointID j = MdtBSJointCreate(w);
+  MdtBSJointSetBodies(j, first, last);
+  MdtBSJointSetPosition(j, 1, 0, 0);
+  MdtBSJointEnable(j);
+  MdtBodyDisable(first);
+  MdtBodyDisable(last);
+  gDisableOnWake = last;
+  MdtWorldSetBodyEnableCallback(w, DisableWhenWoken, nullptr);
+  MdtBodyEnable(first);
+  MeVector3 before;
+  MdtBodyGetPosition(last, before);
+  MdtWorldStep(w, (MeReal)0.01);  // wrote past the partition arrays
+  MdtWorldSetBodyEnableCallback(w, nullptr, nullptr);
+  EXPECT_TRUE(MdtBodyIsEnabled(first));
+  EXPECT_FALSE(MdtBodyIsEnabled(last));
+  MeVector3 after, v;
+  MdtBodyGetPosition(last, after);
+  EXPECT_EQ(after[1], before[1]);  // held still
+  // Pinned to a still body at (1, 0, 0), 1 m from its centre: the joint
+  // stops that point (within its softness), where gravity and the velocity
+  // it had from the first step would take it down at 0.196 m/s.
+  MeVector3 pivot;
+  MdtBodyGetPosition(first, pivot);
+  pivot[0] = 1 - pivot[0], pivot[1] = -pivot[1], pivot[2] = -pivot[2];  // from the centre
+  MeVector3 spin, pivotVelocity;
+  MdtBodyGetLinearVelocity(first, v);
+  MdtBodyGetAngularVelocity(first, spin);
+  MeVector3Cross(pivotVelocity, spin, pivot);
+  MeVector3Add(pivotVelocity, pivotVelocity, v);
+  EXPECT_LT(MeVector3Magnitude(pivotVelocity), (MeReal)0.02);
 }
 
 }  // namespace
