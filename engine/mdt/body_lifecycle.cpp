@@ -110,10 +110,7 @@ void MEAPI MdtBodyDestroy(const MdtBodyID body) {
     if (c->enabled) MeWarning(0, "MdtBodyDestroy: an enabled %s still used this body; it was disabled", c->type->name);
     c->enabled = FALSE;
     moveToBodies(c, nullptr, nullptr);
-    for (int i = 0; i < 2; ++i) {
-      MeVector3Set(c->force[i], 0, 0, 0);
-      MeVector3Set(c->torque[i], 0, 0, 0);
-    }
+    clearForces(c);
   }
   if (body->enabled) {
     --p->enabledCount;

@@ -65,10 +65,16 @@ void resetBase(MdtConstraint *c) {
     MeVector3Set(c->localPos[i], 0, 0, 0);
     MeVector3Set(c->localAxis[i], 1, 0, 0);
     MeVector3Set(c->localOrtho[i], 0, 1, 0);
+  }
+  clearForces(c);
+  c->warmRows = 0;
+}
+
+void clearForces(MdtConstraint *c) {
+  for (int i = 0; i < 2; ++i) {
     MeVector3Set(c->force[i], 0, 0, 0);
     MeVector3Set(c->torque[i], 0, 0, 0);
   }
-  c->warmRows = 0;
 }
 
 MdtConstraint *createConstraint(MdtWorldID world, const ConstraintType &type) {
@@ -190,10 +196,7 @@ void MEAPI MdtConstraintSetBodies(const MdtConstraintID c, const MdtBodyID body0
   attachDefault(c);
   if (c->type->attach) c->type->attach(c);
   c->warmRows = 0;
-  for (int i = 0; i < 2; ++i) {  // last step's, on the bodies it had
-    MeVector3Set(c->force[i], 0, 0, 0);
-    MeVector3Set(c->torque[i], 0, 0, 0);
-  }
+  clearForces(c);
 }
 
 MdtBodyID MEAPI MdtConstraintGetBody(const MdtConstraintID c, const unsigned int i) {

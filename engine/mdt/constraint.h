@@ -221,6 +221,10 @@ bool liveConstraint(const MdtConstraint *c, const char *fn);
 MdtConstraint *createConstraint(MdtWorldID world, const ConstraintType &type);
 // Base defaults: no bodies, origin, primary axis x, secondary y.
 void resetBase(MdtConstraint *c);
+// Forgets the force and torque the constraint applied in its last step
+// (MdtConstraintGetForce / GetTorque, the geometric stiffness): they were on
+// the bodies it had.
+void clearForces(MdtConstraint *c);
 // Attachment at body 0's origin with the world's x and y axes (SetBodies).
 void attachDefault(MdtConstraint *c);
 // Reset to defaults keeping the bodies (Mdt*Reset).
